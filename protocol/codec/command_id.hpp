@@ -1,0 +1,51 @@
+// Identifiers of every command the protocol knows, one per command-table row.
+#pragma once
+
+#include <cstdint>
+
+namespace robuter::protocol {
+
+// Grouped by category; the table in command_table.cpp maps (category, type) to these.
+enum class CommandId : std::uint8_t {
+  none = 0,
+  // B: information requests
+  get_posture,             // BO
+  get_ranges,              // BU
+  get_posture_ranges,      // BV
+  get_clock,               // BC
+  get_us_timeout,          // BT
+  get_pan_tilt_raw,        // BP
+  get_pan_tilt_filtered,   // BF
+  get_pan_tilt_differences,  // BD
+  // A: commands
+  move,                    // AM
+  servo,                   // AS
+  pass_through,            // AY
+  set_odometry,            // AC
+  go_to,                   // AW
+  shutdown,                // AX
+  pan_tilt_on,             // Ap
+  pan_tilt_off,            // Ag
+  gate_on,                 // AG
+  gate_off,                // AT
+  doors_on,                // Ad
+  doors_off,               // Af
+  // U: ultrasonic ring
+  set_sensor_table,        // UT
+  set_node_delay,          // UD
+  get_node_delay,          // UN
+  get_us_times,            // US (N or S)
+  set_us_timeout,          // Ut
+  set_auto_toggle,         // Uu
+  // X: extensions of this project
+  get_emergency,           // XE
+  reenable,                // XR
+  get_kernel_figures,      // XK
+  get_version,             // XV
+  set_stream,              // XS
+  set_verbose_errors,      // XB
+  set_checksums,           // XC
+  set_terminator,          // XL
+};
+
+}  // namespace robuter::protocol

@@ -1,0 +1,21 @@
+// Fixed sizes of the Robuter text protocol: line length, sensor and sector counts, buffers.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace robuter::protocol {
+
+inline constexpr std::size_t kMaxLineLength = 200;   // bytes before the terminator (seed MAX_LENGTH)
+inline constexpr std::size_t kSensorCount = 24;      // ultrasonic ring sensors
+inline constexpr std::size_t kSectorCount = 72;      // pan-tilt sectors of 5 degrees
+inline constexpr std::size_t kMaxIntParams = 3;      // most integers any message takes (AC, AW)
+inline constexpr std::size_t kReplyCapacity = 1024;  // bytes of one reply line, tail included
+inline constexpr std::size_t kMaxKernelProcesses = 16;  // processes listed by an XK reply
+inline constexpr std::size_t kMaxTokenLength = 24;   // bytes of one port-supplied word in a reply
+inline constexpr std::uint8_t kStopByte = 0x18;      // CAN: immediate stop, out of band
+inline constexpr int kProtocolVersion = 1;           // reported by XV; 1 = seed + X extensions
+inline constexpr std::uint32_t kMinStreamPeriod = 10;     // ticks (100 ms) between XS lines, at least
+inline constexpr std::uint32_t kMaxStreamPeriod = 60000;  // ticks (10 min) between XS lines, at most
+
+}  // namespace robuter::protocol

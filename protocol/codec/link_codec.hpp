@@ -1,0 +1,57 @@
+// The codec of one link: framing, session state and replies bundled for the serial module.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "protocol/codec/line_assembler.hpp"
+#include "protocol/codec/line_handler.hpp"
+#include "protocol/codec/reply_writer.hpp"
+#include "protocol/codec/robot_port.hpp"
+#include "protocol/codec/session.hpp"
+
+namespace robuter::protocol {
+
+// Owned by whoever owns the link, one per client. Not copyable (the writers point at the
+// session). Feed it the bytes read; it calls the port and hands each reply line to a sink.
+class LinkCodec {
+ public:
+  LinkCodec() noexcept = default;
+  LinkCodec(const LinkCodec&) = delete;
+  LinkCodec& operator=(const LinkCodec&) = delete;
+
+  // For every event in `bytes`: a line → its reply to `sink(std::string_view)`; a framing
+  // error → `error` to the sink; the stop byte → port.immediate_stop() and nothing written.
+  template <class Sink>
+  void feed(std::span<const std::uint8_t> bytes, RobotPort& port, Sink&& sink) {
+    assembler_.feed(bytes, [&](const FrameEvent& event) {
+      switch (event.kind) {
+        case FrameEvent::Kind::line: sink(handle_line(event.line, port, writer_)); break;
+        case FrameEvent::Kind::error: sink(reply_error(event.error, writer_)); break;
+        case FrameEvent::Kind::stop: port.immediate_stop(); break;
+        case FrameEvent::Kind::none: break;
+      }
+    });
+  }
+
+  // The status line due at `port.clock()` when streaming is on, else nothing. The first line
+  // comes at once after XS, then one every stream_period ticks.
+  std::optional<std::string_view> poll_stream(const RobotPort& port) noexcept;
+
+  SessionState& session() noexcept { return session_; }
+  const SessionState& session() const noexcept { return session_; }
+  // Drops a partial line and returns the session to seed behaviour (link reopened).
+  void reset() noexcept;
+
+ private:
+  SessionState session_{};               // options switched on by the client
+  LineAssembler assembler_{};            // bytes → lines
+  ReplyWriter writer_{session_};         // replies to lines
+  ReplyWriter stream_writer_{session_};  // stream lines (separate, never clobbers a reply)
+  std::uint32_t streamed_period_ = 0;    // stream_period when the last line was sent
+  Ticks last_stream_ = 0;                // clock of the last stream line
+};
+
+}  // namespace robuter::protocol

@@ -1,0 +1,97 @@
+// Value types exchanged between the codec and the robot port (posture, ranges, statuses).
+#pragma once
+
+#include <array>
+#include <bitset>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "protocol/codec/limits.hpp"
+
+namespace robuter::protocol {
+
+using Ticks = std::int64_t;                           // clock ticks of 10 ms since start
+using Ranges = std::array<std::int32_t, kSensorCount>;    // ultrasonic ranges, mm, 0 = none
+using Sectors = std::array<std::int32_t, kSectorCount>;   // pan-tilt values, mm (or mm difference)
+using SensorTable = std::bitset<kSensorCount>;        // bit k set = sensor k+1 active
+
+// Where the robot believes it is (odometry).
+struct Posture {
+  std::int32_t x = 0;      // 0.1 mm
+  std::int32_t y = 0;      // 0.1 mm
+  std::int32_t theta = 0;  // 0.01 degree, in (-18000, 18000]
+};
+
+// The wheel speeds in force (for the status stream).
+struct WheelSpeeds {
+  std::int32_t left = 0;   // cm/s
+  std::int32_t right = 0;  // cm/s
+};
+
+// Which of the three pan-tilt arrays a B request reads.
+enum class SectorKind : std::uint8_t {
+  raw,          // BP: ranges as measured
+  filtered,     // BF: after the spike filter
+  differences,  // BD: differences of adjacent filtered values
+};
+
+// The port's answer to a request that changes something; anything but ok becomes `error`.
+enum class PortResult : std::uint8_t {
+  ok,                 // done or accepted: `ack`
+  refused_emergency,  // an emergency holds or the emergency module refused it
+  not_permitted,      // disabled by configuration
+  out_of_range,       // a value beyond what this robot accepts
+  unavailable,        // equipment or module not fitted / not running
+  busy,               // excluded by what the robot is doing now
+};
+
+// What started the emergency in force (XE); the last cause while latched.
+enum class EmergencyCause : std::uint8_t {
+  none,        // no emergency
+  bumper,      // collision sensed by the bumper
+  obstacle,    // ultrasonic reading under the safety distance
+  comm_loss,   // no message for longer than the communication limit
+  stop_byte,   // the client sent the immediate stop byte (0x18)
+  other,       // anything else (a module fault, ...)
+};
+
+// Bits of EmergencyStatus::enabled (the seed's emerg.on).
+inline constexpr std::uint8_t kEmergencyBumper = 1;      // collision detection on
+inline constexpr std::uint8_t kEmergencyUltrasonic = 2;  // critical-approach detection on
+inline constexpr std::uint8_t kEmergencyComm = 4;        // communication-loss detection on
+
+// The emergency module's state, as XE reports it.
+struct EmergencyStatus {
+  bool held = false;                          // motion held waiting for sensor data
+  bool latched = false;                       // an emergency stopped the robot and is not cleared
+  EmergencyCause cause = EmergencyCause::none;  // why (none when not latched)
+  std::uint8_t enabled = 0;                   // detectors on: kEmergency* bits
+};
+
+// One kernel process's figures for XK.
+struct ProcessFigures {
+  std::string_view name;          // process name, one word (sanitised in the reply)
+  std::uint64_t activations = 0;  // runs since start
+  std::uint64_t overruns = 0;     // runs longer than their time budget
+  std::uint64_t slips = 0;        // periodic runs started a period or more late
+  std::int64_t mean_us = 0;       // mean execution time, microseconds
+  std::int64_t max_us = 0;        // longest execution, microseconds
+};
+
+// The kernel's figures for XK; `processes` points into port-owned storage.
+struct KernelFigures {
+  std::uint64_t ticks = 0;        // ticks run since start
+  std::int64_t max_late_us = 0;   // worst tick start lateness, microseconds
+  std::int64_t p99_late_us = 0;   // 99th percentile of tick lateness, microseconds
+  std::span<const ProcessFigures> processes;  // at most kMaxKernelProcesses are listed
+};
+
+// Optional equipment and features of this robot, for XV's capability list.
+inline constexpr std::uint32_t kFeaturePanTilt = 1;      // pan-tilt scanner fitted (Ap, BP, ...)
+inline constexpr std::uint32_t kFeatureGate = 2;         // passage finder (AG/AT)
+inline constexpr std::uint32_t kFeatureDoors = 4;        // door crossing (Ad/Af)
+inline constexpr std::uint32_t kFeaturePassThrough = 8;  // AY enabled by configuration
+inline constexpr std::uint32_t kFeatureGoTo = 16;        // AW go-to-posture
+
+}  // namespace robuter::protocol

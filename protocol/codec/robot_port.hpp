@@ -1,0 +1,62 @@
+// The robot port: everything the protocol's messages read or change, as an abstract interface.
+#pragma once
+
+#include <string_view>
+
+#include "protocol/codec/port_types.hpp"
+
+namespace robuter::protocol {
+
+// Implemented by the serial module over the blackboards (and by fakes in tests). The codec
+// calls it only while handling a line, from the thread that feeds the codec. Reads are const;
+// requests return a PortResult that becomes `ack` or `error`. Nothing here may throw.
+class RobotPort {
+ public:
+  virtual ~RobotPort() = default;
+
+  // ---- reads (B requests, U queries, status stream) ----
+  virtual Ticks clock() const noexcept = 0;                     // ticks of 10 ms since start
+  virtual Posture posture() const noexcept = 0;                 // odometry
+  virtual bool servo_on() const noexcept = 0;                   // servo (brake) status
+  virtual WheelSpeeds wheel_speeds() const noexcept = 0;        // speeds in force, cm/s
+  virtual void ranges(Ranges& out) const noexcept = 0;          // 24 ultrasonic ranges, mm
+  virtual std::int32_t us_timeout() const noexcept = 0;         // ultrasonic time-out, ms
+  // Fills one of the 72-sector pan-tilt arrays; not ok (unavailable) when no pan-tilt.
+  virtual PortResult pan_tilt(SectorKind kind, Sectors& out) const noexcept = 0;
+  virtual std::int32_t node_delay() const noexcept = 0;         // node firing delay, ticks
+  virtual std::int32_t mean_node_time() const noexcept = 0;     // mean read of one node, ticks
+  virtual std::int32_t mean_scan_time() const noexcept = 0;     // mean read of six nodes, ticks
+
+  // ---- requests (A and U commands) ----
+  // Wheel speeds, cm/s; always through the emergency module's request-to-move.
+  virtual PortResult request_motion(std::int32_t left, std::int32_t right) noexcept = 0;
+  virtual PortResult set_servo(bool on) noexcept = 0;          // ASN (on) / ASF (off)
+  // A raw line for the low-level controller; not_permitted unless configured and allowed.
+  virtual PortResult pass_through(std::string_view line) noexcept = 0;
+  virtual PortResult set_odometry(const Posture& posture) noexcept = 0;  // AC
+  virtual PortResult go_to(const Posture& target) noexcept = 0;          // AW
+  // AX: shut down cleanly once the `ack` has been written.
+  virtual PortResult request_shutdown() noexcept = 0;
+  virtual PortResult set_pan_tilt(bool on) noexcept = 0;       // Ap / Ag
+  virtual PortResult set_gate_finder(bool on) noexcept = 0;    // AG / AT
+  virtual PortResult set_door_crossing(bool on) noexcept = 0;  // Ad / Af
+  virtual PortResult set_sensor_table(const SensorTable& active) noexcept = 0;  // UT
+  virtual PortResult set_node_delay(std::int32_t ticks) noexcept = 0;          // UD
+  virtual PortResult set_us_timeout(std::int32_t ms) noexcept = 0;             // Ut
+  virtual PortResult set_auto_toggle(bool on) noexcept = 0;                    // Uu
+
+  // ---- link events ----
+  // A line decoded to a known command arrived: stamp it for the communication-loss watchdog.
+  virtual void message_received() noexcept = 0;
+  // The immediate stop byte (0x18) arrived: stop the robot now; no reply is written.
+  virtual void immediate_stop() noexcept = 0;
+
+  // ---- extensions (X) ----
+  virtual EmergencyStatus emergency() const noexcept = 0;       // XE
+  virtual PortResult reenable() noexcept = 0;                   // XR: clear a latched emergency
+  virtual KernelFigures kernel_figures() const noexcept = 0;    // XK
+  virtual std::string_view firmware_version() const noexcept = 0;  // XV, e.g. "0.1.0"
+  virtual std::uint32_t features() const noexcept = 0;          // XV, kFeature* bits
+};
+
+}  // namespace robuter::protocol

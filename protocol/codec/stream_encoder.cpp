@@ -1,0 +1,28 @@
+// Encoder of the status stream's lines: a compact snapshot that never looks like a reply.
+#include "protocol/codec/stream_encoder.hpp"
+
+namespace robuter::protocol {
+
+// Two bits so a client sees both "waiting for data" and "stopped by an emergency".
+int stream_emergency_field(const EmergencyStatus& status) noexcept {
+  return (status.held ? 1 : 0) + (status.latched ? 2 : 0);
+}
+
+// '@' starts no reply, so an opted-in client can tell stream lines from replies.
+std::string_view encode_status_line(const RobotPort& port, ReplyWriter& out) noexcept {
+  out.begin();
+  const Posture p = port.posture();
+  const WheelSpeeds w = port.wheel_speeds();
+  out.open("@");
+  out.field(p.x);
+  out.field(p.y);
+  out.field(p.theta);
+  out.field(port.servo_on() ? 1 : 0);
+  out.field(w.left);
+  out.field(w.right);
+  out.field(stream_emergency_field(port.emergency()));
+  out.field(port.clock());
+  return out.finish();
+}
+
+}  // namespace robuter::protocol

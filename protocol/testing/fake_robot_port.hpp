@@ -1,0 +1,143 @@
+// A scriptable RobotPort for tests, fuzzing and benchmarks: fixed values in, calls recorded.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "protocol/codec/robot_port.hpp"
+
+namespace robuter::protocol::testing {
+
+// Every read returns a public field; every request records its arguments and returns
+// `result` (or the per-request field). Fixed storage only, so it never allocates.
+class FakeRobotPort final : public RobotPort {
+ public:
+  // ---- what reads return ----
+  Ticks now = 1523;                          // clock, ticks
+  Posture pose{1204, -3, 12};                // odometry, 0.1 mm / 0.01 degree
+  bool servo = true;                         // servo status
+  WheelSpeeds speeds{10, 10};                // cm/s
+  Ranges us{};                               // mm
+  std::int32_t timeout_ms = 33;              // ultrasonic time-out, ms
+  bool has_pan_tilt = true;                  // pan_tilt() answers unavailable when false
+  Sectors raw{}, filtered{}, differences{};  // pan-tilt arrays, mm
+  std::int32_t delay_ticks = 3;              // node delay, ticks
+  std::int32_t node_time = 4;                // mean node read, ticks
+  std::int32_t scan_time = 29;               // mean full scan, ticks
+  EmergencyStatus emerg{false, false, EmergencyCause::none,
+                        kEmergencyBumper | kEmergencyUltrasonic | kEmergencyComm};
+  std::array<ProcessFigures, 3> processes{{{"serial", 100, 0, 0, 12, 40},
+                                           {"emergency", 50, 1, 2, 30, 95},
+                                           {"execute", 50, 0, 0, 20, 60}}};
+  std::size_t process_count = 3;             // how many of `processes` to report
+  KernelFigures kernel{1000, 180, 42, {}};   // processes filled in by kernel_figures()
+  std::string_view version = "0.1.0";        // firmware version
+  std::uint32_t feature_bits = kFeaturePanTilt | kFeatureGate | kFeatureDoors;
+
+  // ---- what requests return ----
+  PortResult result = PortResult::ok;          // default answer of every request
+  PortResult motion_result = PortResult::ok;   // answer of request_motion
+  PortResult pass_result = PortResult::not_permitted;  // answer of pass_through
+
+  // ---- what requests recorded ----
+  int calls = 0;                     // requests received
+  int messages = 0;                  // message_received() calls
+  int stops = 0;                     // immediate_stop() calls
+  int shutdowns = 0;                 // request_shutdown() calls
+  WheelSpeeds last_motion{};         // last request_motion, cm/s
+  int motion_requests = 0;           // request_motion calls
+  bool last_servo = false;           // last set_servo
+  std::array<char, 256> pass_text{};  // last pass_through text
+  std::size_t pass_length = 0;       // its length
+  Posture last_odometry{};           // last set_odometry
+  Posture last_goal{};               // last go_to
+  bool pan_tilt_on = false, gate_on = false, doors_on = false;  // last switch values
+  SensorTable last_table{};          // last set_sensor_table
+  std::int32_t last_delay = -1;      // last set_node_delay, ticks
+  std::int32_t last_timeout = -1;    // last set_us_timeout, ms
+  bool auto_toggle = false;          // last set_auto_toggle
+  int reenables = 0;                 // reenable() calls
+
+  // The last pass-through text as a view.
+  std::string_view passed() const { return {pass_text.data(), pass_length}; }
+
+  Ticks clock() const noexcept override { return now; }
+  Posture posture() const noexcept override { return pose; }
+  bool servo_on() const noexcept override { return servo; }
+  WheelSpeeds wheel_speeds() const noexcept override { return speeds; }
+  void ranges(Ranges& out) const noexcept override { out = us; }
+  std::int32_t us_timeout() const noexcept override { return timeout_ms; }
+  PortResult pan_tilt(SectorKind kind, Sectors& out) const noexcept override {
+    if (!has_pan_tilt) return PortResult::unavailable;
+    out = kind == SectorKind::raw ? raw : kind == SectorKind::filtered ? filtered : differences;
+    return PortResult::ok;
+  }
+  std::int32_t node_delay() const noexcept override { return delay_ticks; }
+  std::int32_t mean_node_time() const noexcept override { return node_time; }
+  std::int32_t mean_scan_time() const noexcept override { return scan_time; }
+
+  PortResult request_motion(std::int32_t left, std::int32_t right) noexcept override {
+    ++calls;
+    ++motion_requests;
+    last_motion = {left, right};
+    return motion_result;
+  }
+  PortResult set_servo(bool on) noexcept override { return record(last_servo, on); }
+  PortResult pass_through(std::string_view line) noexcept override {
+    ++calls;
+    pass_length = line.size() < pass_text.size() ? line.size() : pass_text.size();
+    for (std::size_t i = 0; i < pass_length; ++i) pass_text[i] = line[i];
+    return pass_result;
+  }
+  PortResult set_odometry(const Posture& p) noexcept override { return record(last_odometry, p); }
+  PortResult go_to(const Posture& p) noexcept override { return record(last_goal, p); }
+  PortResult request_shutdown() noexcept override {
+    ++calls;
+    ++shutdowns;
+    return result;
+  }
+  PortResult set_pan_tilt(bool on) noexcept override { return record(pan_tilt_on, on); }
+  PortResult set_gate_finder(bool on) noexcept override { return record(gate_on, on); }
+  PortResult set_door_crossing(bool on) noexcept override { return record(doors_on, on); }
+  PortResult set_sensor_table(const SensorTable& t) noexcept override {
+    return record(last_table, t);
+  }
+  PortResult set_node_delay(std::int32_t t) noexcept override { return record(last_delay, t); }
+  PortResult set_us_timeout(std::int32_t ms) noexcept override {
+    return record(last_timeout, ms);
+  }
+  PortResult set_auto_toggle(bool on) noexcept override { return record(auto_toggle, on); }
+
+  void message_received() noexcept override { ++messages; }
+  void immediate_stop() noexcept override { ++stops; }
+
+  EmergencyStatus emergency() const noexcept override { return emerg; }
+  PortResult reenable() noexcept override {
+    ++calls;
+    ++reenables;
+    return result;
+  }
+  KernelFigures kernel_figures() const noexcept override {
+    KernelFigures k = kernel;
+    k.processes = std::span<const ProcessFigures>(processes.data(),
+                                                  process_count < processes.size()
+                                                      ? process_count
+                                                      : processes.size());
+    return k;
+  }
+  std::string_view firmware_version() const noexcept override { return version; }
+  std::uint32_t features() const noexcept override { return feature_bits; }
+
+ private:
+  // Stores a request's argument and returns the scripted answer.
+  template <class T>
+  PortResult record(T& slot, const T& value) noexcept {
+    ++calls;
+    slot = value;
+    return result;
+  }
+};
+
+}  // namespace robuter::protocol::testing
