@@ -1,0 +1,164 @@
+// A* over (cell, heading slice) with in-place turns and a relaxation field as heuristic.
+#include "modules/planner/lib/heading_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "modules/planner/lib/footprint.hpp"
+
+namespace robuter::plan {
+
+std::uint8_t allowed_moves(int slice, int slices, MotionModel motion) {
+  if (motion == MotionModel::Holonomic) return 0xFF;
+  const double half = 0.5 * kPi / slices + 1e-9;
+  const double th = slice_heading(slice, slices);
+  std::uint8_t bits = 0;
+  for (int m = 0; m < 8; ++m) {
+    const double dir = std::atan2(static_cast<double>(kMoveDy[m]), static_cast<double>(kMoveDx[m]));
+    double d = wrap_angle(dir - th, kPi);
+    d = std::min(d, kPi - d);
+    if (d <= half) bits = static_cast<std::uint8_t>(bits | (1u << m));
+  }
+  return bits;
+}
+
+void HeadingSearch::reserve(int width, int height, int slices) {
+  const auto stored = static_cast<std::size_t>(width + 2) * static_cast<std::size_t>(height + 2);
+  const std::size_t states = stored * static_cast<std::size_t>(std::max(slices, 1));
+  if (nodes_.size() < states) {
+    nodes_.assign(states, Node{0.0, 0, kNoMove, 0});
+    gen_ = 0;
+  }
+  open_.reserve(states);
+  path_.reserve(2 * stored + static_cast<std::size_t>(std::max(slices, 1)));
+  const auto k = static_cast<std::size_t>(std::max(slices, 1));
+  if (cls_of_.size() < k) cls_of_.resize(k, nullptr);
+  if (allowed_.size() < k) allowed_.resize(k, 0);
+}
+
+PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
+                               const HeadingOptions& options, const CostModel& costs,
+                               const CostField* heuristic) {
+  PlanResult r;
+  path_.clear();
+  const int k_count = static_cast<int>(slices.size());
+  if (k_count == 0) return r;
+  const PassGrid& g0 = *slices[0];
+  const Cell sc{start.x, start.y};
+  if (!g0.contains(sc)) return r.status = PlanStatus::StartOutside, r;
+  if (!g0.contains(goal)) return r.status = PlanStatus::GoalOutside, r;
+  start.slice = ((start.slice % k_count) + k_count) % k_count;
+  if (slices[static_cast<std::size_t>(start.slice)]->at(sc) == kBlocked)
+    return r.status = PlanStatus::StartBlocked, r;
+  bool goal_free = false;
+  for (const PassGrid* g : slices) goal_free = goal_free || g->at(goal) != kBlocked;
+  if (!goal_free) return r.status = PlanStatus::GoalBlocked, r;
+
+  reserve(g0.width, g0.height, k_count);
+  if (++gen_ == 0) {
+    for (Node& n : nodes_) n.stamp = 0;
+    gen_ = 1;
+  }
+  const auto stored = static_cast<std::uint32_t>(g0.stored());
+  const auto stride = static_cast<std::uint32_t>(g0.stride);
+  const MoveTable mt(g0.stride);
+  const auto cost = costs.table();
+  std::uint8_t* allowed = allowed_.data();
+  const std::uint8_t** cls_of = cls_of_.data();
+  for (int k = 0; k < k_count; ++k) {
+    allowed[k] = allowed_moves(k, k_count, options.motion);
+    cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
+  }
+  const int tx = goal.x + 1;
+  const int ty = goal.y + 1;
+  const std::uint32_t t = g0.index(goal);
+  auto h_of = [&](std::uint32_t cell) -> double {
+    if (heuristic) return heuristic->cost_at(cell);
+    return octile(static_cast<int>(cell % stride) - tx, static_cast<int>(cell / stride) - ty);
+  };
+  const double turn = std::max(options.rotation_step_cost, 0.0);
+  Node* nodes = nodes_.data();
+
+  auto relax = [&](std::uint32_t cell, int k, double ng, std::uint8_t how) {
+    const std::uint32_t s = static_cast<std::uint32_t>(k) * stored + cell;
+    Node& n = nodes[s];
+    if (n.stamp != gen_) {
+      const double h = h_of(cell);
+      if (h == CostField::kInfinity) return;  // the relaxation cannot reach the goal from here
+      n = Node{ng, gen_, how, 0};
+      open_.push(s, ng + h, static_cast<float>(h));
+    } else if (!n.closed && ng < n.g) {
+      n.g = ng;
+      n.parent = how;
+      const double h = h_of(cell);
+      open_.decrease(s, ng + h, static_cast<float>(h));
+    }
+  };
+
+  open_.clear();
+  relax(g0.index(sc), start.slice, 0.0, kNoMove);
+  std::uint32_t reached = 0;
+  bool found = false;
+  while (!open_.empty()) {
+    const std::uint32_t s = open_.pop().node;
+    Node& ns = nodes[s];
+    ns.closed = 1;
+    ++r.expanded;
+    const std::uint32_t u = s % stored;
+    const int k = static_cast<int>(s / stored);
+    if (u == t) {
+      reached = s;
+      found = true;
+      break;
+    }
+    const double gu = ns.g;
+    const std::uint8_t* cls = cls_of[k];
+    const std::uint8_t cu = cls[u];
+    const std::uint8_t bits = allowed[k];
+    for (int m = 0; m < 8; ++m) {
+      if (!(bits & (1u << m))) continue;
+      const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
+      const std::uint8_t cv = cls[v];
+      if (cv == kBlocked) continue;
+      if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
+                     cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
+        continue;
+      relax(v, k, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
+    }
+    if (k_count > 1) {
+      const int up = (k + 1) % k_count;
+      const int down = (k + k_count - 1) % k_count;
+      if (cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8);
+      if (down != up && cls_of[down][u] != kBlocked)
+        relax(u, down, gu + turn, 9);
+    }
+  }
+  if (!found) return r;  // Unreachable
+
+  // Walk back from the goal state.
+  int orth = 0;
+  int diag = 0;
+  std::uint32_t s = reached;
+  r.cost = nodes[s].g;
+  for (;;) {
+    const std::uint32_t u = s % stored;
+    const int k = static_cast<int>(s / stored);
+    const Cell c = g0.cell(u);
+    path_.push_back({c.x, c.y, k});
+    const int p = nodes[s].parent;
+    if (p == kNoMove) break;
+    if (p < 8) {
+      (p < 4 ? orth : diag) += 1;
+      s = static_cast<std::uint32_t>(k) * stored + (u - static_cast<std::uint32_t>(mt.step[p]));
+    } else {
+      const int from = p == 8 ? (k + k_count - 1) % k_count : (k + 1) % k_count;
+      s = static_cast<std::uint32_t>(from) * stored + u;
+    }
+  }
+  std::reverse(path_.begin(), path_.end());
+  r.status = PlanStatus::Found;
+  r.length = static_cast<double>(orth) + kSqrt2 * static_cast<double>(diag);
+  return r;
+}
+
+}  // namespace robuter::plan

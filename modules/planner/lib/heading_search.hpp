@@ -1,0 +1,69 @@
+// Optimal search in (x, y, heading slice) for a non-circular robot: seed 004's slices on a grid.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "modules/planner/lib/cost_field.hpp"
+#include "modules/planner/lib/geometry.hpp"
+#include "modules/planner/lib/indexed_heap.hpp"
+#include "modules/planner/lib/pass_grid.hpp"
+#include "modules/planner/lib/plan_result.hpp"
+
+namespace robuter::plan {
+
+// Which moves a slice allows.
+enum class MotionModel : std::uint8_t {
+  Aligned,    // differential drive: translate only along the slice's heading (either way),
+              // turn in place between slices; exactly what the robot can execute (default)
+  Holonomic,  // all 8 moves in every slice (the footprint keeps the slice's heading)
+};
+
+// Options of the (x, y, heading) search.
+struct HeadingOptions {
+  MotionModel motion = MotionModel::Aligned;  // allowed moves within a slice
+  double rotation_step_cost = 0.0;            // cells: cost of turning by one slice in place
+};
+
+// A* over states (cell, slice). Moves: the allowed grid moves within a slice (both cells, and
+// for a diagonal both side cells, free in that slice: slices are swept over their heading
+// interval, so the footprint's translation along the heading is covered); rotation in place to
+// an adjacent slice when the cell is free in both (their union covers the turn). The goal is a
+// cell at any heading. Heuristic: the cost field of a relaxation (the map dilated by the
+// footprint's inscribed disc: free for the rectangle at some heading implies free for the disc),
+// which is admissible and consistent; without one, octile distance.
+class HeadingSearch {
+ public:
+  // Why: size every buffer for slices of width x height (the only allocation).
+  void reserve(int width, int height, int slices);
+
+  // Why: the entry point; `slices` are K grids of one size; the path is then in path().
+  PlanResult find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
+                  const HeadingOptions& options, const CostModel& costs = {},
+                  const CostField* heuristic = nullptr);
+
+  const std::vector<CellPose>& path() const { return path_; }
+
+ private:
+  // Per state search data.
+  struct Node {
+    double g;             // cells: best cost from the start
+    std::uint32_t stamp;  // generation that wrote it
+    std::uint8_t parent;  // 0..7 grid move, 8 turned +1 slice, 9 turned -1 slice, kNoMove start
+    std::uint8_t closed;  // 1 once expanded
+  };
+
+  std::vector<Node> nodes_;    // slice-major: slice * stored + cell index
+  IndexedHeap open_;           // open list
+  std::vector<CellPose> path_; // last path, start first
+  std::uint32_t gen_ = 0;      // generation stamp
+  std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
+  std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
+};
+
+// Why: which of the 8 moves a slice allows under a motion model (bit m set = move m allowed).
+std::uint8_t allowed_moves(int slice, int slices, MotionModel motion);
+
+}  // namespace robuter::plan

@@ -1,0 +1,118 @@
+// Planner facade: layers from the map, the right search per footprint, incremental upkeep.
+#include "modules/planner/lib/planner.hpp"
+
+#include <cmath>
+
+namespace robuter::plan {
+
+Planner::Planner(const PlannerConfig& config) : cfg_(config) {
+  if (cfg_.heading_slices < 1) cfg_.heading_slices = 1;
+  costs_.unknown_cost = cfg_.unknown_cost < 1.0 ? 1.0 : cfg_.unknown_cost;
+  set_map(OccupancyMap(MapGeometry{1, 1, 0.05, {}}));
+}
+
+void Planner::set_map(const OccupancyMap& map) {
+  map_ = map;
+  map_.clear_changes();
+  const double res = map_.resolution();
+  layers_.clear();
+  if (cfg_.footprint == FootprintKind::Disc) {
+    layers_.resize(1);
+    layers_[0].build(map_, disc_mask(cfg_.radius, res));
+  } else {
+    auto masks = rectangle_slices(cfg_.rectangle, res, cfg_.heading_slices);
+    layers_.resize(masks.size());
+    for (std::size_t k = 0; k < masks.size(); ++k) layers_[k].build(map_, std::move(masks[k]));
+    relaxation_.build(map_, disc_mask(inscribed_radius(cfg_.rectangle), res));
+  }
+  slice_grids_.clear();
+  for (const CSpaceLayer& l : layers_) slice_grids_.push_back(&l.grid());
+  const int w = map_.width(), h = map_.height();
+  field_changes_.clear();
+  field_changes_.reserve(map_.cell_count());
+  field_.reserve(w, h);
+  field_ready_ = false;
+  grid_search_.reserve(w, h);
+  if (cfg_.footprint == FootprintKind::Rectangle) heading_search_.reserve(w, h, cfg_.heading_slices);
+  cells_.reserve(map_.cell_count() + 1);
+  waypoints_.reserve(2 * map_.cell_count() + layers_.size());
+}
+
+void Planner::sync() {
+  const auto changed = map_.changes();
+  if (changed.empty()) return;
+  const bool rect = cfg_.footprint == FootprintKind::Rectangle;
+  field_changes_.clear();
+  for (std::size_t k = 0; k < layers_.size(); ++k)
+    layers_[k].update(map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
+  if (rect) relaxation_.update(map_, changed, &field_changes_);
+  if (field_ready_) field_.update(field_changes_);
+  map_.clear_changes();
+}
+
+const PassGrid& Planner::expanded(int slice) const {
+  const int k = slice < 0 || slice >= slices() ? 0 : slice;
+  return layers_[static_cast<std::size_t>(k)].grid();
+}
+
+// Why: the cost field is recomputed only when the goal moves; map changes repair it.
+void Planner::ensure_field(const PassGrid& grid, Cell goal) {
+  if (field_ready_ && field_.goal() == goal) return;
+  field_.compute(grid, goal, costs_);
+  field_ready_ = true;
+}
+
+PlanResult Planner::plan(const Pose2& start, Point2 goal) {
+  sync();
+  waypoints_.clear();
+  const Cell s = map_.cell_of({start.x, start.y});
+  const Cell g = map_.cell_of(goal);
+  PlanResult r;
+  if (cfg_.footprint == FootprintKind::Disc) {
+    const PassGrid& grid = layers_[0].grid();
+    if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && grid.contains(g)) {
+      const bool fresh = !(field_ready_ && field_.goal() == g);
+      ensure_field(grid, g);
+      r = field_.path_from(s, cells_);
+      r.expanded = fresh ? field_.last_settled() : 0;
+    } else {
+      r = grid_search_.find(grid, s, g, cfg_.mode, costs_);
+      cells_.assign(grid_search_.path().begin(), grid_search_.path().end());
+    }
+    if (r.found()) fill_waypoints_2d(cells_);
+    return r;
+  }
+  const int k = slice_of_heading(start.heading, cfg_.heading_slices);
+  const PassGrid& relax = relaxation_.grid();
+  const CostField* h = nullptr;
+  if (relax.contains(g)) {
+    ensure_field(relax, g);
+    h = &field_;
+  }
+  HeadingOptions opt;
+  opt.motion = cfg_.motion;
+  opt.rotation_step_cost = cfg_.rotation_cost * (kPi / cfg_.heading_slices) / map_.resolution();
+  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h);
+  if (r.found()) fill_waypoints_3d(heading_search_.path());
+  return r;
+}
+
+void Planner::fill_waypoints_2d(const std::vector<Cell>& cells) {
+  double heading = 0.0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i + 1 < cells.size())
+      heading = std::atan2(static_cast<double>(cells[i + 1].y - cells[i].y),
+                           static_cast<double>(cells[i + 1].x - cells[i].x));
+    const Point2 p = map_.center(cells[i]);
+    waypoints_.push_back({CellPose{cells[i].x, cells[i].y, 0}, Pose2{p.x, p.y, heading}});
+  }
+}
+
+void Planner::fill_waypoints_3d(const std::vector<CellPose>& cells) {
+  for (const CellPose& c : cells) {
+    const Point2 p = map_.center({c.x, c.y});
+    waypoints_.push_back({c, Pose2{p.x, p.y, slice_heading(c.slice, cfg_.heading_slices)}});
+  }
+}
+
+}  // namespace robuter::plan

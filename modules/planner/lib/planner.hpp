@@ -1,0 +1,91 @@
+// The planner facade: owns a map, its footprint C-space layers and the searches; plans poses.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "modules/planner/lib/cost_field.hpp"
+#include "modules/planner/lib/cspace.hpp"
+#include "modules/planner/lib/footprint.hpp"
+#include "modules/planner/lib/geometry.hpp"
+#include "modules/planner/lib/grid_search.hpp"
+#include "modules/planner/lib/heading_search.hpp"
+#include "modules/planner/lib/occupancy_map.hpp"
+#include "modules/planner/lib/pass_grid.hpp"
+#include "modules/planner/lib/plan_result.hpp"
+
+namespace robuter::plan {
+
+// The robot's shape as the planner sees it.
+enum class FootprintKind : std::uint8_t {
+  Disc,       // the thesis: obstacles expanded by a radius, orientation ignored
+  Rectangle,  // the Robuter: a rectangle with heading, (x, y, heading slice) search
+};
+
+// Everything that shapes a plan.
+struct PlannerConfig {
+  FootprintKind footprint = FootprintKind::Disc;  // robot model
+  double radius = 0.30;                           // m, disc radius (Disc)
+  RectangleFootprint rectangle{};                 // m, body (Rectangle)
+  int heading_slices = 16;                        // slices over a half turn (Rectangle)
+  MotionModel motion = MotionModel::Aligned;      // moves within a slice (Rectangle)
+  double rotation_cost = 0.30;                    // m of path per rad turned in place (Rectangle)
+  SearchMode mode = SearchMode::Optimal;          // Disc: Optimal or the thesis' Bfs
+  double unknown_cost = 1.0;                      // multiplier (>= 1) on unknown cells; 1 = free
+  bool incremental = true;                        // Disc+Optimal: keep a cost field to the goal
+};
+
+// One point of a plan, in the world.
+struct Waypoint {
+  CellPose cell;  // cells and heading slice (slice 0 for a disc)
+  Pose2 pose;     // m and rad: cell centre; heading = slice heading (Rectangle) or direction
+                  // of travel (Disc)
+};
+
+// Owns the map and everything derived from it. All buffers are sized by set_map(); plan() and
+// map updates do not allocate afterwards. Map changes (integrate_beam, mark_*) made through
+// map() are folded into the layers and the cost field at the next plan() (or sync()).
+class Planner {
+ public:
+  explicit Planner(const PlannerConfig& config = {});
+
+  // Why: adopt a map and build the C-space layers (the allocation point).
+  void set_map(const OccupancyMap& map);
+  OccupancyMap& map() { return map_; }
+  const OccupancyMap& map() const { return map_; }
+  const PlannerConfig& config() const { return cfg_; }
+
+  // Why: fold the map's logged changes into the layers and the cost field.
+  void sync();
+
+  // Why: plan from a pose to a point (world frame); the path is then in waypoints().
+  // PlanResult lengths and costs are in cells (multiply by resolution for metres).
+  PlanResult plan(const Pose2& start, Point2 goal);
+
+  const std::vector<Waypoint>& waypoints() const { return waypoints_; }
+  // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
+  const PassGrid& expanded(int slice = 0) const;
+  int slices() const { return static_cast<int>(layers_.size()); }
+  const CostField& field() const { return field_; }
+
+ private:
+  void ensure_field(const PassGrid& grid, Cell goal);
+  void fill_waypoints_2d(const std::vector<Cell>& cells);
+  void fill_waypoints_3d(const std::vector<CellPose>& cells);
+
+  PlannerConfig cfg_;
+  CostModel costs_;                     // from cfg_.unknown_cost
+  OccupancyMap map_;                    // the world model
+  std::vector<CSpaceLayer> layers_;     // Disc: 1 layer; Rectangle: one per heading slice
+  CSpaceLayer relaxation_;              // Rectangle: inscribed-disc layer (heuristic field)
+  std::vector<const PassGrid*> slice_grids_;  // pointers to layers_' grids
+  std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
+  CostField field_;                     // cost to the goal on the field grid
+  bool field_ready_ = false;            // field_ matches the current goal and grid
+  GridSearch grid_search_;              // one-shot 2D searches
+  HeadingSearch heading_search_;        // (x, y, slice) search
+  std::vector<Cell> cells_;             // 2D path buffer
+  std::vector<Waypoint> waypoints_;     // last plan
+};
+
+}  // namespace robuter::plan

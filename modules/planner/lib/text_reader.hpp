@@ -1,0 +1,52 @@
+// Reading text files for the loaders: whole-file read, line splitting, tokens with line numbers.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "modules/planner/lib/result.hpp"
+
+namespace robuter::plan {
+
+// Why: the loaders parse from memory; this is their only file access.
+Result<std::string> read_text_file(const std::string& path);
+
+// Why: lines without their terminator; a trailing '\r' (CRLF files) is dropped.
+std::vector<std::string_view> split_lines(std::string_view text);
+
+// Why: strict number parsing (the whole token must be a number; no locale).
+std::optional<long long> parse_integer(std::string_view s);
+std::optional<double> parse_real(std::string_view s);
+
+// Whitespace-separated tokens with the line each starts on, like the thesis' fscanf reading,
+// producing errors that name the file and line.
+class TokenReader {
+ public:
+  // One token and where it is.
+  struct Token {
+    std::string_view text;  // the token's characters
+    int line;               // 1-based line number
+  };
+
+  TokenReader(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+
+  std::optional<Token> next();
+  // Why: the usual "expect a number of this kind here" steps, with clear errors.
+  Result<long long> integer(std::string_view what);
+  Result<double> real(std::string_view what);
+  // Why: a file must end after its last expected item.
+  Status expect_end();
+
+  Error error(int line, std::string message) const { return Error{file_, line, std::move(message)}; }
+  int line() const { return line_; }
+
+ private:
+  std::string_view text_;  // whole file
+  std::string file_;       // file name for errors
+  std::size_t pos_ = 0;    // next character to read
+  int line_ = 1;           // line of pos_
+};
+
+}  // namespace robuter::plan
