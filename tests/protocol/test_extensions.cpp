@@ -158,7 +158,8 @@ TEST(Extensions, Crc16KnownValue) {
 
 TEST(Extensions, StripChecksum) {
   std::string_view body;
-  EXPECT_TRUE(strip_checksum(with_crc("BC"), body));
+  const std::string line = with_crc("BC");
+  EXPECT_TRUE(strip_checksum(line, body));
   EXPECT_EQ(body, "BC");
   std::string lower = with_crc("BC");
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

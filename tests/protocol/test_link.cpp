@@ -26,7 +26,8 @@ TEST(Link, TenKilobyteLineWithoutTerminatorYetGivesNothing) {
 
 TEST(Link, NulAndFfLinesAreOneErrorEach) {
   Harness h;
-  const auto r = h.feed(std::string("AM 1\0 1\rA\xFFM 1 1\rBC\r", 21));
+  static constexpr char kBytes[] = "AM 1\0 1\rA\xFFM 1 1\rBC\r";
+  const auto r = h.feed(std::string(kBytes, sizeof kBytes - 1));
   ASSERT_EQ(r.size(), 3u);
   EXPECT_EQ(r[0], "error\r");
   EXPECT_EQ(r[1], "error\r");
