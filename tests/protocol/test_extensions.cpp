@@ -197,6 +197,18 @@ TEST(Extensions, XCChecksums) {
   EXPECT_EQ(h.ask("BC"), "C 1523");
 }
 
+TEST(Extensions, ChecksumExampleOfTheDocs) {
+  Harness h;
+  EXPECT_EQ(h.ask("XC1"), "ack");
+  EXPECT_EQ(h.ask("BC*0E06"), "C 1523*B39B");
+  EXPECT_EQ(h.ask("AM 10 10*8EB4"), "ack*E373");
+  EXPECT_EQ(h.ask("AM 90 10*8EB4"), "error*7733");
+  EXPECT_EQ(h.ask("BC"), "error*7733");
+  EXPECT_EQ(h.ask("XC0*553F"), "ack*E373");
+  EXPECT_EQ(h.ask("BC"), "C 1523");
+  EXPECT_EQ(h.port.motion_requests, 1);
+}
+
 TEST(Extensions, StreamLinesCarryChecksums) {
   Harness h;
   h.codec.session().checksums = true;
