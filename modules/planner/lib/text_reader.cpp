@@ -59,6 +59,7 @@ std::optional<TokenReader::Token> TokenReader::next() {
     ++pos_;
   }
   if (pos_ >= text_.size()) return std::nullopt;
+  last_line_ = line_;
   const std::size_t start = pos_;
   while (pos_ < text_.size() && !space(text_[pos_])) ++pos_;
   return Token{text_.substr(start, pos_ - start), line_};
@@ -66,7 +67,7 @@ std::optional<TokenReader::Token> TokenReader::next() {
 
 Result<long long> TokenReader::integer(std::string_view what) {
   const auto t = next();
-  if (!t) return error(line_, "unexpected end of file: expected " + std::string(what));
+  if (!t) return error(last_line_, "unexpected end of file: expected " + std::string(what));
   const auto v = parse_integer(t->text);
   if (!v)
     return error(t->line, "expected " + std::string(what) + " (an integer), got '" +
@@ -76,7 +77,7 @@ Result<long long> TokenReader::integer(std::string_view what) {
 
 Result<double> TokenReader::real(std::string_view what) {
   const auto t = next();
-  if (!t) return error(line_, "unexpected end of file: expected " + std::string(what));
+  if (!t) return error(last_line_, "unexpected end of file: expected " + std::string(what));
   const auto v = parse_real(t->text);
   if (!v)
     return error(t->line, "expected " + std::string(what) + " (a number), got '" +

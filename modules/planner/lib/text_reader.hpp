@@ -47,6 +47,7 @@ class TokenReader {
   std::string file_;       // file name for errors
   std::size_t pos_ = 0;    // next character to read
   int line_ = 1;           // line of pos_
+  int last_line_ = 1;      // line of the last token returned (end-of-file errors point here)
 };
 
 }  // namespace robuter::plan

@@ -15,12 +15,11 @@ Result<ThesisParameters> parse_parameters(std::string_view text, const std::stri
   const char* what[7] = {"robot radius (m)", "robot speed (m/s)", "initial heading (degrees)",
                          "start x (m)", "start y (m)", "goal x (m)", "goal y (m)"};
   for (int i = 0; i < 7; ++i) {
-    const int line = in.line();
     auto v = in.real(what[i]);
     if (!v) return v.error();
     *fields[i] = *v;
-    if (i == 0 && *v < 0.0) return in.error(line, "robot radius must not be negative");
-    if (i == 1 && *v < 0.0) return in.error(line, "robot speed must not be negative");
+    if (i == 0 && *v < 0.0) return in.error(in.line(), "robot radius must not be negative");
+    if (i == 1 && *v < 0.0) return in.error(in.line(), "robot speed must not be negative");
   }
   if (auto end = in.expect_end(); !end) return end.error();
   return p;

@@ -1,0 +1,133 @@
+// Tests of the incremental cost field: equal to a full recomputation after random map changes.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "modules/planner/lib/cost_field.hpp"
+#include "modules/planner/lib/grid_search.hpp"
+#include "modules/planner/lib/planner.hpp"
+#include "tests/planner/test_util.hpp"
+
+namespace robuter::plan {
+namespace {
+
+// Why: the field must agree with A* from any start.
+TEST(CostField, AgreesWithAStar) {
+  std::mt19937 rng(3);
+  const int w = 40, h = 30;
+  PassGrid g(w, h);
+  std::bernoulli_distribution blocked(0.25);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) g.set({x, y}, blocked(rng) ? kBlocked : kFree);
+  const Cell goal{20, 15};
+  g.set(goal, kFree);
+  CostField f;
+  ASSERT_TRUE(f.compute(g, goal));
+  GridSearch s(w, h);
+  std::vector<Cell> path;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (g.at({x, y}) == kBlocked) continue;
+      const PlanResult a = s.find(g, {x, y}, goal, SearchMode::Optimal);
+      const PlanResult b = f.path_from({x, y}, path);
+      ASSERT_EQ(a.status, b.status) << x << "," << y;
+      if (a.found()) {
+        EXPECT_NEAR(a.length, b.length, 1e-9);
+        EXPECT_NEAR(f.cost({x, y}), a.cost, 1e-9);
+        EXPECT_EQ(path.front(), (Cell{x, y}));
+        EXPECT_EQ(path.back(), goal);
+      }
+    }
+}
+
+// Why: the incremental repair is the risky part; compare it with a fresh field after each of
+// many random batches of changes (blocking, freeing, unknown with a cost, the goal itself).
+TEST(CostField, IncrementalRepairEqualsRecomputation) {
+  for (double unknown_cost : {1.0, 2.5}) {
+    std::mt19937 rng(11);
+    const int w = 36, h = 28;
+    PassGrid g(w, h);
+    std::uniform_int_distribution<int> cls(0, 9);
+    auto random_class = [&] {
+      const int c = cls(rng);
+      return c < 3 ? kBlocked : c < 5 ? kUnknown : kFree;
+    };
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) g.set({x, y}, random_class());
+    const Cell goal{17, 13};
+    g.set(goal, kFree);
+    const CostModel costs{unknown_cost};
+    CostField inc;
+    inc.compute(g, goal, costs);
+    std::uniform_int_distribution<int> cx(0, w - 1), cy(0, h - 1), batch(1, 12);
+    for (int round = 0; round < 150; ++round) {
+      std::vector<ClassChange> changes;
+      const int n = batch(rng);
+      for (int i = 0; i < n; ++i) {
+        Cell c{cx(rng), cy(rng)};
+        if (round % 37 == 5 && i == 0) c = goal;  // sometimes the goal itself
+        const std::uint8_t before = g.at(c);
+        const std::uint8_t after = random_class();
+        if (before == after) continue;
+        bool dup = false;
+        for (const ClassChange& ch : changes) dup = dup || ch.index == g.index(c);
+        if (dup) continue;
+        g.set(c, after);
+        changes.push_back({g.index(c), before});
+      }
+      inc.update(changes);
+      CostField full;
+      full.compute(g, goal, costs);
+      std::vector<Cell> path;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const double a = inc.cost({x, y}), b = full.cost({x, y});
+          if (b == CostField::kInfinity) {
+            ASSERT_EQ(a, CostField::kInfinity) << "round " << round << " at " << x << "," << y;
+          } else {
+            ASSERT_NEAR(a, b, 1e-9) << "round " << round << " at " << x << "," << y;
+            const PlanResult r = inc.path_from({x, y}, path);
+            ASSERT_TRUE(r.found());
+            ASSERT_NEAR(r.cost, b, 1e-9);
+          }
+        }
+    }
+  }
+}
+
+// Why: the planner facade replans toward the same goal after beams without a full search, and
+// its answer equals a planner built from scratch on the updated map.
+TEST(Planner, IncrementalReplanAfterBeams) {
+  OccupancyMap map(MapGeometry{120, 80, 0.05, {}});
+  PlannerConfig cfg;
+  cfg.radius = 0.15;
+  Planner inc(cfg);
+  inc.set_map(map);
+  const Pose2 start{0.5, 2.0, 0.0};
+  const Point2 goal{5.5, 2.0};
+  const PlanResult first = inc.plan(start, goal);
+  ASSERT_TRUE(first.found());
+  EXPECT_NEAR(first.length * 0.05, 5.0, 1e-9);
+  const std::uint32_t full_effort = inc.field().last_settled();
+  // A wall appears across the straight line: 10 readings of each beam make it an obstacle.
+  for (int rep = 0; rep < 10; ++rep)
+    for (int i = -20; i <= 20; ++i)
+      inc.map().integrate_beam({1.0, 2.0 + i * 0.02}, 0.0, 2.0, 3.0);
+  const PlanResult second = inc.plan(start, goal);
+  ASSERT_TRUE(second.found());
+  EXPECT_GT(second.length, first.length);
+  EXPECT_LT(inc.field().last_settled(), full_effort);  // repaired, not recomputed
+  cfg.incremental = false;
+  Planner fresh(cfg);
+  fresh.set_map(inc.map());
+  const PlanResult ref = fresh.plan(start, goal);
+  ASSERT_TRUE(ref.found());
+  EXPECT_NEAR(second.cost, ref.cost, 1e-9);
+  // Waypoints are cell centres in metres, start first.
+  ASSERT_FALSE(inc.waypoints().empty());
+  EXPECT_NEAR(inc.waypoints().front().pose.x, 0.525, 1e-9);
+  EXPECT_NEAR(inc.waypoints().back().pose.x, 5.525, 1e-9);
+}
+
+}  // namespace
+}  // namespace robuter::plan

@@ -1,0 +1,137 @@
+// Tests of footprints and the (x, y, heading) search: the Robuter passes a 90 cm door, a disc does not.
+#include <gtest/gtest.h>
+
+#include "modules/planner/lib/footprint.hpp"
+#include "modules/planner/lib/heading_search.hpp"
+#include "modules/planner/lib/planner.hpp"
+#include "modules/planner/lib/thesis_files.hpp"
+
+namespace robuter::plan {
+namespace {
+
+TEST(Footprint, DiscMask) {
+  const FootprintMask m = disc_mask(0.30, 0.05);  // 6 cells
+  EXPECT_TRUE(m.contains(0, 0));
+  EXPECT_TRUE(m.contains(6, 0));    // square starts 5.5 cells away
+  EXPECT_FALSE(m.contains(7, 0));   // 6.5 away
+  EXPECT_TRUE(m.contains(4, 4));    // corner 3.5, 3.5: 4.95 away
+  EXPECT_FALSE(m.contains(5, 5));   // corner 4.5, 4.5: 6.36 away
+  const FootprintMask point = disc_mask(0.0, 0.05);
+  EXPECT_EQ(point.cells(), 1);
+}
+
+TEST(Footprint, RectangleMaskFollowsHeading) {
+  const RectangleFootprint robuter;
+  // At heading 0 (exactly): half length 10.25 cells, half width 7 cells.
+  const FootprintMask m0 = rectangle_mask(robuter, 0.05, 0.0, 0.0);
+  EXPECT_TRUE(m0.contains(10, 0));
+  EXPECT_FALSE(m0.contains(11, 0));
+  EXPECT_TRUE(m0.contains(0, 7));
+  EXPECT_FALSE(m0.contains(0, 8));
+  const FootprintMask m90 = rectangle_mask(robuter, 0.05, kPi / 2, kPi / 2);
+  EXPECT_TRUE(m90.contains(0, 10));
+  EXPECT_FALSE(m90.contains(0, 11));
+  EXPECT_FALSE(m90.contains(8, 0));
+  // A swept slice holds both ends of its interval.
+  const FootprintMask swept = rectangle_mask(robuter, 0.05, -0.2, 0.2);
+  const FootprintMask lo = rectangle_mask(robuter, 0.05, -0.2, -0.2);
+  for (const MaskRun& r : lo.runs)
+    for (int dx = r.lo; dx <= r.hi; ++dx) EXPECT_TRUE(swept.contains(dx, r.dy));
+  EXPECT_NEAR(circumscribed_radius(robuter), 0.6206, 1e-3);
+  EXPECT_NEAR(inscribed_radius(robuter), 0.35, 1e-12);
+}
+
+TEST(Footprint, SlicesCoverHalfTurn) {
+  EXPECT_EQ(slice_of_heading(0.0, 16), 0);
+  EXPECT_EQ(slice_of_heading(kPi, 16), 0);          // symmetric body: pi is slice 0
+  EXPECT_EQ(slice_of_heading(kPi / 2, 16), 8);
+  EXPECT_EQ(slice_of_heading(-kPi / 2, 16), 8);
+  EXPECT_EQ(slice_of_heading(kPi - 0.01, 16), 0);
+  EXPECT_EQ(allowed_moves(0, 16, MotionModel::Aligned), (1u << 1) | (1u << 3));  // +-x
+  EXPECT_EQ(allowed_moves(4, 16, MotionModel::Aligned), (1u << 4) | (1u << 6));  // diagonal
+  EXPECT_EQ(allowed_moves(8, 16, MotionModel::Aligned), (1u << 0) | (1u << 2));  // +-y
+  EXPECT_EQ(allowed_moves(3, 16, MotionModel::Aligned), 0u);
+  EXPECT_EQ(allowed_moves(3, 16, MotionModel::Holonomic), 0xFFu);
+}
+
+// A 6 m x 4 m room split at y = 2 m by a wall with a 90 cm door (x from 2.5 to 3.4 m).
+OccupancyMap door_map() {
+  OccupancyMap m(MapGeometry{120, 80, 0.05, {}});
+  for (int y = 0; y < 80; ++y)
+    for (int x = 0; x < 120; ++x) m.mark_free({x, y});
+  rasterise_polygons(m, {Polygon{{{0.0, 2.0}, {2.5, 2.0}, {2.5, 2.1}, {0.0, 2.1}}},
+                         Polygon{{{3.45, 2.0}, {6.0, 2.0}, {6.0, 2.1}, {3.45, 2.1}}}});
+  m.clear_changes();
+  return m;
+}
+
+TEST(DoorCrossing, RectanglePassesDiscDoesNot) {
+  const OccupancyMap map = door_map();
+  const Pose2 start{1.0, 0.8, 0.0};
+  const Point2 goal{5.0, 3.2};
+
+  PlannerConfig disc;
+  disc.radius = circumscribed_radius(RectangleFootprint{});
+  Planner disc_planner(disc);
+  disc_planner.set_map(map);
+  EXPECT_EQ(disc_planner.plan(start, goal).status, PlanStatus::Unreachable);
+
+  for (MotionModel motion : {MotionModel::Aligned, MotionModel::Holonomic}) {
+    PlannerConfig rect;
+    rect.footprint = FootprintKind::Rectangle;
+    rect.motion = motion;
+    Planner planner(rect);
+    planner.set_map(map);
+    const PlanResult r = planner.plan(start, goal);
+    ASSERT_TRUE(r.found()) << to_string(r.status);
+    const auto& wps = planner.waypoints();
+    // Through the door: the path crosses y = 2.05 m between x = 2.5 and 3.45 m, heading
+    // across the wall (slice 8 = 90 degrees).
+    bool crossed = false;
+    for (const Waypoint& w : wps)
+      if (std::abs(w.pose.y - 2.075) < 0.03) {
+        crossed = true;
+        EXPECT_GT(w.pose.x, 2.5);
+        EXPECT_LT(w.pose.x, 3.45);
+        if (motion == MotionModel::Aligned) {
+          EXPECT_EQ(w.cell.slice, 8);
+        }
+      }
+    EXPECT_TRUE(crossed);
+    // Aligned: every translation is along the current slice's heading.
+    if (motion == MotionModel::Aligned)
+      for (std::size_t i = 0; i + 1 < wps.size(); ++i) {
+        const CellPose a = wps[i].cell, b = wps[i + 1].cell;
+        if (a.x == b.x && a.y == b.y) continue;  // a turn
+        ASSERT_EQ(a.slice, b.slice);
+        int m = 0;
+        while (kMoveDx[m] != b.x - a.x || kMoveDy[m] != b.y - a.y) ++m;
+        EXPECT_TRUE(allowed_moves(a.slice, 16, MotionModel::Aligned) & (1u << m));
+      }
+  }
+}
+
+TEST(DoorCrossing, NarrowerDoorBlocksTheRectangleToo) {
+  OccupancyMap m(MapGeometry{120, 80, 0.05, {}});
+  rasterise_polygons(m, {Polygon{{{0.0, 2.0}, {2.5, 2.0}, {2.5, 2.1}, {0.0, 2.1}}},
+                         Polygon{{{3.2, 2.0}, {6.0, 2.0}, {6.0, 2.1}, {3.2, 2.1}}}});
+  PlannerConfig rect;
+  rect.footprint = FootprintKind::Rectangle;
+  Planner planner(rect);
+  planner.set_map(m);
+  EXPECT_EQ(planner.plan({1.0, 0.8, 0.0}, {5.0, 3.2}).status, PlanStatus::Unreachable);
+}
+
+TEST(HeadingSearch, GoalOutsideAndBlockedStart) {
+  OccupancyMap m(MapGeometry{60, 60, 0.05, {}});
+  m.mark_occupied({30, 30});
+  PlannerConfig rect;
+  rect.footprint = FootprintKind::Rectangle;
+  Planner planner(rect);
+  planner.set_map(m);
+  EXPECT_EQ(planner.plan({1.5, 1.5, 0.0}, {10.0, 1.0}).status, PlanStatus::GoalOutside);
+  EXPECT_EQ(planner.plan({1.52, 1.52, 0.0}, {0.6, 0.6}).status, PlanStatus::StartBlocked);
+}
+
+}  // namespace
+}  // namespace robuter::plan

@@ -1,0 +1,37 @@
+// Helpers shared by the planner tests: grids from ASCII art, temporary files.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "modules/planner/lib/occupancy_map.hpp"
+#include "modules/planner/lib/pass_grid.hpp"
+
+namespace robuter::plan::test {
+
+// Why: small hand-made grids read best as pictures; rows are given top (largest y) first.
+// '#' blocked, '?' unknown, anything else free.
+inline PassGrid grid_from_art(const std::vector<std::string>& rows) {
+  const int h = static_cast<int>(rows.size());
+  const int w = static_cast<int>(rows[0].size());
+  PassGrid g(w, h);
+  for (int r = 0; r < h; ++r)
+    for (int x = 0; x < w; ++x) {
+      const char c = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)];
+      g.set({x, h - 1 - r}, c == '#' ? kBlocked : c == '?' ? kUnknown : kFree);
+    }
+  return g;
+}
+
+// Why: loaders are tested through real files too; this writes one under /tmp.
+inline std::string temp_file(const std::string& name, const std::string& text) {
+  const std::string path = "/tmp/robuter-planner-test-" + std::to_string(::getpid()) + "-" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+}  // namespace robuter::plan::test
