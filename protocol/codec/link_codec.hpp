@@ -24,6 +24,7 @@ class LinkCodec {
 
   // For every event in `bytes`: a line → its reply to `sink(std::string_view)`; a framing
   // error → `error` to the sink; the stop byte → port.immediate_stop() and nothing written.
+  // Each reply view is valid until the sink returns; write it out (or copy it) there.
   template <class Sink>
   void feed(std::span<const std::uint8_t> bytes, RobotPort& port, Sink&& sink) {
     assembler_.feed(bytes, [&](const FrameEvent& event) {

@@ -10,6 +10,7 @@ namespace robuter::protocol {
 
 // The session's format is frozen here so a mode change applies from the next reply on.
 void ReplyWriter::begin() noexcept {
+  finished_ = false;
   reset();
   started_ = false;
   verbose_ = session_->verbose_errors;
@@ -17,8 +18,9 @@ void ReplyWriter::begin() noexcept {
   terminator_ = session_->terminator;
 }
 
-// Forgets the line in progress.
+// Forgets the line in progress; a finished line stays until the next begin().
 void ReplyWriter::reset() noexcept {
+  if (finished_) return;
   length_ = 0;
   overflow_ = false;
 }
@@ -85,7 +87,7 @@ void ReplyWriter::raw(std::string_view text) noexcept { append(text); }
 
 // All appends go through here so the bound is checked in one place.
 void ReplyWriter::append(std::string_view text) noexcept {
-  if (overflow_ || text.size() > kBodyCapacity - length_) {
+  if (finished_ || overflow_ || text.size() > kBodyCapacity - length_) {
     overflow_ = true;
     return;
   }
@@ -95,7 +97,9 @@ void ReplyWriter::append(std::string_view text) noexcept {
 
 // A missing or overflowed reply becomes an internal error, so every line gets one reply.
 std::string_view ReplyWriter::finish() noexcept {
+  if (finished_) return {buf_.data(), length_};
   if (!started_ || overflow_) error(ErrorCode::internal);
+  finished_ = true;
   if (checksums_) {
     char hex[kChecksumDigits];
     format_checksum(crc16(body()), hex);

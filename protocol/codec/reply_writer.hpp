@@ -46,6 +46,7 @@ class ReplyWriter {
   // The reply so far, without checksum or terminator (for tests and the stream encoder).
   std::string_view body() const noexcept { return {buf_.data(), length_}; }
   // Ends the line (checksum if on, terminator) and returns it; valid until the next begin().
+  // A second call returns the same line.
   std::string_view finish() noexcept;
 
  private:
@@ -60,6 +61,7 @@ class ReplyWriter {
   std::size_t length_ = 0;                  // bytes used in buf_
   bool started_ = false;                    // a reply has been chosen
   bool overflow_ = false;                   // a field did not fit
+  bool finished_ = false;                   // finish() has ended the line
   bool verbose_ = false;                    // session.verbose_errors at begin()
   bool checksums_ = false;                  // session.checksums at begin()
   Terminator terminator_ = Terminator::cr;  // session.terminator at begin()

@@ -49,6 +49,18 @@ TEST(ReplyWriter, WordsAreCutAndCleaned) {
   EXPECT_EQ(w.finish(), "K " + std::string(kMaxTokenLength, 'n') + " x_y\r");
 }
 
+TEST(ReplyWriter, FinishTwiceGivesTheSameLine) {
+  SessionState s;
+  s.checksums = true;
+  ReplyWriter w(s);
+  w.begin();
+  w.ack();
+  const std::string first(w.finish());
+  w.field(5);
+  EXPECT_EQ(w.finish(), first);
+  EXPECT_EQ(first, "ack*E373\r");
+}
+
 TEST(ReplyWriter, ModeIsFrozenAtBegin) {
   SessionState s;
   ReplyWriter w(s);
