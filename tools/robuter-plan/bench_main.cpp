@@ -1,1 +1,254 @@
-int main() { return 0; }
+// robuter-plan-bench: our optimal search vs Boost Graph Library astar_search, big grids, replans.
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/astar_search.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "modules/planner/lib/cost_field.hpp"
+#include "modules/planner/lib/cspace.hpp"
+#include "modules/planner/lib/grid_search.hpp"
+#include "modules/planner/lib/movingai.hpp"
+
+namespace {
+
+using namespace robuter::plan;
+using Clock = std::chrono::steady_clock;
+
+// Why: milliseconds between two instants.
+double ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+                                    boost::property<boost::edge_weight_t, double>>;
+using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+
+// The explicit 8-connected graph of a grid (same octile costs, no corner cutting).
+struct ExplicitGraph {
+  Graph graph;                      // one vertex per traversable cell
+  std::vector<int> vertex_of;       // per PassGrid index: vertex, or -1
+  std::vector<int> x, y;            // per vertex: cell coordinates
+};
+
+// Why: the peer we measure against, built once per map (not timed).
+void build_graph(const PassGrid& g, ExplicitGraph& e) {
+  e.vertex_of.assign(g.stored(), -1);
+  int n = 0;
+  for (int yy = 0; yy < g.height; ++yy)
+    for (int xx = 0; xx < g.width; ++xx)
+      if (g.at({xx, yy}) != kBlocked) {
+        e.vertex_of[g.index({xx, yy})] = n++;
+        e.x.push_back(xx);
+        e.y.push_back(yy);
+      }
+  for (int v = 0; v < n; ++v) boost::add_vertex(e.graph);
+  const MoveTable mt(g.stride);
+  for (int v = 0; v < n; ++v) {
+    const std::uint32_t u = g.index({e.x[static_cast<std::size_t>(v)], e.y[static_cast<std::size_t>(v)]});
+    for (int m = 0; m < 8; ++m) {
+      const std::uint32_t w = u + static_cast<std::uint32_t>(mt.step[m]);
+      if (g.cls[w] == kBlocked) continue;
+      if (m >= 4 && (g.cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
+                     g.cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
+        continue;
+      boost::add_edge(static_cast<Vertex>(v), static_cast<Vertex>(e.vertex_of[w]), m < 4 ? 1.0 : kSqrt2, e.graph);
+    }
+  }
+}
+
+// Octile distance to the goal, for BGL.
+class OctileHeuristic : public boost::astar_heuristic<Graph, double> {
+ public:
+  OctileHeuristic(const ExplicitGraph& e, Vertex goal) : e_(&e), goal_(goal) {}
+  double operator()(Vertex v) const {
+    return octile(e_->x[v] - e_->x[goal_], e_->y[v] - e_->y[goal_]);
+  }
+
+ private:
+  const ExplicitGraph* e_;  // coordinates
+  Vertex goal_;             // target vertex
+};
+
+struct FoundGoal {};  // thrown by the visitor to stop BGL's search (BGL's documented idiom)
+
+// Stops the search when the goal is examined.
+class GoalVisitor : public boost::default_astar_visitor {
+ public:
+  explicit GoalVisitor(Vertex goal) : goal_(goal) {}
+  void examine_vertex(Vertex u, const Graph&) const {
+    if (u == goal_) throw FoundGoal{};
+  }
+
+ private:
+  Vertex goal_;  // target vertex
+};
+
+// Why: BGL's answer for one problem (-1 when unreachable).
+double bgl_length(const ExplicitGraph& e, std::vector<Vertex>& pred, std::vector<double>& dist,
+                  Cell s, Cell t, const PassGrid& g) {
+  const int sv = e.vertex_of[g.index(s)], tv = e.vertex_of[g.index(t)];
+  if (sv < 0 || tv < 0) return -1.0;
+  const auto goal = static_cast<Vertex>(tv);
+  try {
+    boost::astar_search(e.graph, static_cast<Vertex>(sv), OctileHeuristic(e, goal),
+                        boost::predecessor_map(pred.data()).distance_map(dist.data()).visitor(GoalVisitor(goal)));
+  } catch (const FoundGoal&) {
+    return dist[goal];
+  }
+  return -1.0;
+}
+
+// Why: per map, all scenarios with both searches, lengths checked against the published ones.
+bool bench_movingai(const std::string& dir, const char* name) {
+  const auto map = load_movingai_map(dir + "/" + name + ".map");
+  const auto scen = load_movingai_scen(dir + "/" + name + ".map.scen");
+  if (!map || !scen) {
+    std::printf("%-14s cannot load: %s\n", name, (!map ? map.error() : scen.error()).text().c_str());
+    return false;
+  }
+  PassGrid g;
+  pass_grid_from_map(*map, g);
+  GridSearch ours(g.width, g.height);
+  int ok_ours = 0, ok_bgl = 0;
+  double best_ours = 1e300;
+  for (int rep = 0; rep < 5; ++rep) {
+    ok_ours = 0;
+    const auto t0 = Clock::now();
+    for (const Scenario& s : *scen) {
+      const PlanResult r = ours.find(g, s.start, s.goal, SearchMode::Optimal);
+      ok_ours += r.found() && std::fabs(r.length - s.optimal) <= 1e-3 ? 1 : 0;
+    }
+    best_ours = std::min(best_ours, ms(t0, Clock::now()));
+  }
+  ExplicitGraph e;
+  build_graph(g, e);
+  std::vector<Vertex> pred(boost::num_vertices(e.graph));
+  std::vector<double> dist(boost::num_vertices(e.graph));
+  double best_bgl = 1e300;
+  for (int rep = 0; rep < 2; ++rep) {
+    ok_bgl = 0;
+    const auto t0 = Clock::now();
+    for (const Scenario& s : *scen) {
+      const double len = bgl_length(e, pred, dist, s.start, s.goal, g);
+      ok_bgl += len >= 0.0 && std::fabs(len - s.optimal) <= 1e-3 ? 1 : 0;
+    }
+    best_bgl = std::min(best_bgl, ms(t0, Clock::now()));
+  }
+  const int n = static_cast<int>(scen->size());
+  std::printf("%-14s %4dx%-4d %5d   %9.2f   %9.2f   %6.1fx   %d/%d   %d/%d\n", name, g.width, g.height, n,
+              best_ours, best_bgl, best_bgl / best_ours, ok_ours, n, ok_bgl, n);
+  return ok_ours == n && best_ours < best_bgl;
+}
+
+// Why: a 1000 x 1000 grid, corner to corner; density of random blocked cells, seeded.
+PassGrid big_grid(double density, unsigned seed) {
+  PassGrid g(1000, 1000);
+  std::mt19937 rng(seed);
+  std::bernoulli_distribution blocked(density);
+  for (int y = 0; y < 1000; ++y)
+    for (int x = 0; x < 1000; ++x) g.set({x, y}, blocked(rng) ? kBlocked : kFree);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x) g.set({x, y}, kFree), g.set({999 - x, 999 - y}, kFree);
+  return g;
+}
+
+// Why: the full-plan target (< 20 ms) on open and random 1000 x 1000 grids.
+bool bench_big() {
+  bool ok = true;
+  GridSearch s(1000, 1000);
+  for (double density : {0.0, 0.10, 0.20, 0.30}) {
+    const PassGrid g = big_grid(density, 2024);
+    double best = 1e300;
+    PlanResult r;
+    for (int rep = 0; rep < 5; ++rep) {
+      const auto t0 = Clock::now();
+      r = s.find(g, {0, 0}, {999, 999}, SearchMode::Optimal);
+      best = std::min(best, ms(t0, Clock::now()));
+    }
+    std::printf("1000x1000 %3.0f%% blocked: %-11s length %8.2f  expanded %8u  %8.2f ms%s\n", density * 100,
+                std::string(to_string(r.status)).c_str(), r.length, r.expanded, best,
+                best < 20.0 ? "" : "  (over 20 ms)");
+    ok = ok && best < 20.0 && r.found();
+  }
+  return ok;
+}
+
+// Why: what a replan after a few new obstacle cells costs with the cost field, vs a full plan.
+void bench_incremental() {
+  const int w = 300, h = 300;  // the thesis' 15 m x 15 m at 5 cm
+  PassGrid g = big_grid(0.0, 1);
+  g.resize(w, h);
+  std::mt19937 rng(5);
+  std::bernoulli_distribution blocked(0.15);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) g.set({x, y}, blocked(rng) ? kBlocked : kFree);
+  const Cell goal{280, 280};
+  Cell start{20, 20};
+  g.set(goal, kFree);
+  g.set(start, kFree);
+  CostField field;
+  GridSearch astar(w, h);
+  std::vector<Cell> path;
+  auto t0 = Clock::now();
+  field.compute(g, goal);
+  const double full = ms(t0, Clock::now());
+  const std::uint32_t full_settled = field.last_settled();
+  double repair = 0, extract = 0, replan = 0;
+  std::uint64_t settled = 0;
+  const int rounds = 200;
+  std::vector<ClassChange> changes;
+  changes.reserve(16);
+  for (int i = 0; i < rounds; ++i) {
+    // A few new obstacle cells on the current path near the robot (what a scan finds).
+    field.path_from(start, path);
+    if (path.size() < 12) break;
+    changes.clear();
+    for (int k = 0; k < 5; ++k) {
+      const Cell c = path[static_cast<std::size_t>(6 + k % 3)];
+      const Cell d{c.x + (k - 2), c.y};
+      if (!g.contains(d) || g.at(d) == kBlocked || d == goal || d == start) continue;
+      changes.push_back({g.index(d), g.at(d)});
+      g.set(d, kBlocked);
+    }
+    t0 = Clock::now();
+    field.update(changes);
+    repair += ms(t0, Clock::now());
+    settled += field.last_settled();
+    t0 = Clock::now();
+    field.path_from(start, path);
+    extract += ms(t0, Clock::now());
+    t0 = Clock::now();
+    astar.find(g, start, goal, SearchMode::Optimal);
+    replan += ms(t0, Clock::now());
+    start = path[3];  // the robot moves on
+  }
+  std::printf("replan 300x300 (15%% blocked), %d scans of 5 new cells near the robot:\n", rounds);
+  std::printf("  full cost field %.3f ms (%u nodes); per replan: repair %.3f ms (%.0f nodes) + path %.4f ms;"
+              " A* from scratch %.3f ms\n",
+              full, full_settled, repair / rounds, static_cast<double>(settled) / rounds, extract / rounds,
+              replan / rounds);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string dir = argc > 1 ? argv[1] : ROBUTER_MOVINGAI_DIR;
+  bool ok = true;
+  std::printf("MovingAI, all scenarios, optimal search vs Boost Graph Library astar_search (same costs):\n");
+  std::printf("%-14s %-9s %5s   %9s   %9s   %7s   %s   %s\n", "map", "size", "scen", "ours ms", "BGL ms",
+              "ratio", "ours ok", "BGL ok");
+  for (const char* name : {"arena", "den101d", "den312d", "lak303d", "Berlin_0_256"})
+    ok = bench_movingai(dir, name) && ok;
+  std::printf("\n");
+  ok = bench_big() && ok;
+  std::printf("\n");
+  bench_incremental();
+  std::printf("\n%s\n", ok ? "planner bench: all targets met" : "planner bench: TARGET MISSED");
+  return ok ? 0 : 1;
+}
