@@ -1,26 +1,32 @@
-// A* with an octile heuristic and the thesis' breadth-first search, on preallocated arrays.
+// A* (bucket open list, heap fallback) and the thesis' breadth-first search, on preallocated arrays.
 #include "modules/planner/lib/grid_search.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 namespace robuter::plan {
 
 void GridSearch::reserve(int width, int height) {
   const auto stored = static_cast<std::size_t>(width + 2) * static_cast<std::size_t>(height + 2);
-  if (nodes_.size() < stored) {
-    nodes_.assign(stored, Node{0.0, 0, kNoMove, 0});
+  if (mark_.size() < stored) {
+    mark_.assign(stored, 0);
+    g_.resize(stored);
+    parent_.resize(stored);
+    next_.resize(stored);
+    prev_.resize(stored);
+    queue_.resize(stored);
     gen_ = 0;
   }
-  if (queue_.size() < stored) queue_.resize(stored);
   open_.reserve(stored);
+  head_.reserve(4096);
   path_.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) + 1);
 }
 
-// Why: a new stamp invalidates every node at once; on wrap-around the stamps are reset.
+// Why: a new generation invalidates every mark at once; on wrap-around the marks are reset.
 void GridSearch::next_generation() {
-  if (++gen_ == 0) {
-    for (Node& n : nodes_) n.stamp = 0;
+  if (++gen_ >= (1u << 31)) {
+    std::fill(mark_.begin(), mark_.end(), 0u);
     gen_ = 1;
   }
 }
@@ -37,32 +43,39 @@ PlanResult GridSearch::find(const PassGrid& grid, Cell start, Cell goal, SearchM
   next_generation();
   const std::uint32_t s = grid.index(start);
   const std::uint32_t t = grid.index(goal);
-  return mode == SearchMode::Bfs ? bfs(grid, s, t, costs) : astar(grid, s, t, costs);
+  if (mode == SearchMode::Bfs) return bfs(grid, s, t, costs);
+  const double widest = 2.0 * kSqrt2 * std::max(1.0, costs.unknown_cost);
+  if (widest / kBucketWidth + 4.0 <= 4096.0) return astar_buckets(grid, s, t, costs);
+  return astar(grid, s, t, costs);
 }
 
-// Why: the default mode. Octile h is consistent, so a node is final when popped; ties on f go
-// to the smaller h (deeper node), which keeps open-field searches close to the straight line.
+// Why: the fallback for very uneven costs. Octile h is consistent, so a node is final when
+// popped; ties on f go to the smaller h (deeper node).
 PlanResult GridSearch::astar(const PassGrid& grid, std::uint32_t s, std::uint32_t t,
                              const CostModel& costs) {
   const MoveTable mt(grid.stride);
   const auto cost = costs.table();
   const std::uint8_t* cls = grid.cls.data();
-  Node* nodes = nodes_.data();
+  std::uint32_t* mark = mark_.data();
+  double* g = g_.data();
+  std::uint8_t* parent = parent_.data();
+  const std::uint32_t seen = gen_ << 1, closed = seen | 1u;
   const auto stride = static_cast<std::uint32_t>(grid.stride);
   const int tx = static_cast<int>(t % stride);
   const int ty = static_cast<int>(t / stride);
   PlanResult r;
 
   open_.clear();
-  nodes[s] = Node{0.0, gen_, kNoMove, 0};
+  mark[s] = seen;
+  g[s] = 0.0;
+  parent[s] = kNoMove;
   {
     const double h = octile(static_cast<int>(s % stride) - tx, static_cast<int>(s / stride) - ty);
     open_.push(s, h, static_cast<float>(h));
   }
   while (!open_.empty()) {
     const std::uint32_t u = open_.pop().node;
-    Node& nu = nodes[u];
-    nu.closed = 1;
+    mark[u] = closed;
     ++r.expanded;
     if (u == t) {
       r.status = PlanStatus::Found;
@@ -71,7 +84,7 @@ PlanResult GridSearch::astar(const PassGrid& grid, std::uint32_t s, std::uint32_
     }
     const int ux = static_cast<int>(u % stride);
     const int uy = static_cast<int>(u / stride);
-    const double gu = nu.g;
+    const double gu = g[u];
     const std::uint8_t cu = cls[u];
     for (int m = 0; m < 8; ++m) {
       const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
@@ -81,14 +94,15 @@ PlanResult GridSearch::astar(const PassGrid& grid, std::uint32_t s, std::uint32_
                      cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
         continue;
       const double ng = gu + cost[m][cu][cv];
-      Node& nv = nodes[v];
-      if (nv.stamp != gen_) {
-        nv = Node{ng, gen_, static_cast<std::uint8_t>(m), 0};
+      if (mark[v] != seen && mark[v] != closed) {
+        mark[v] = seen;
+        g[v] = ng;
+        parent[v] = static_cast<std::uint8_t>(m);
         const double h = octile(ux + kMoveDx[m] - tx, uy + kMoveDy[m] - ty);
         open_.push(v, ng + h, static_cast<float>(h));
-      } else if (!nv.closed && ng < nv.g) {
-        nv.g = ng;
-        nv.parent = static_cast<std::uint8_t>(m);
+      } else if (mark[v] == seen && ng < g[v]) {
+        g[v] = ng;
+        parent[v] = static_cast<std::uint8_t>(m);
         const double h = octile(ux + kMoveDx[m] - tx, uy + kMoveDy[m] - ty);
         open_.decrease(v, ng + h, static_cast<float>(h));
       }
@@ -97,18 +111,122 @@ PlanResult GridSearch::astar(const PassGrid& grid, std::uint32_t s, std::uint32_
   return r;  // Unreachable
 }
 
+// Why: the default optimal search (see the header): O(1) open-list operations.
+PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std::uint32_t t,
+                                     const CostModel& costs) {
+  const MoveTable mt(grid.stride);
+  const auto cost = costs.table();
+  const std::uint8_t* cls = grid.cls.data();
+  std::uint32_t* mark = mark_.data();
+  double* g = g_.data();
+  std::uint8_t* parent = parent_.data();
+  std::uint32_t* next = next_.data();
+  std::uint32_t* prev = prev_.data();
+  const std::uint32_t seen = gen_ << 1, closed = seen | 1u;
+  const auto stride = static_cast<std::uint32_t>(grid.stride);
+  const int tx = static_cast<int>(t % stride);
+  const int ty = static_cast<int>(t / stride);
+  // Ring size: open nodes span at most 2 * (largest edge cost) of f above the lowest one.
+  const double widest = 2.0 * kSqrt2 * std::max(1.0, costs.unknown_cost);
+  std::uint32_t ring = 8;
+  while (ring < static_cast<std::uint32_t>(widest / kBucketWidth) + 4) ring <<= 1;
+  const std::uint64_t mask = ring - 1;
+  head_.assign(ring, kNil);
+  std::uint32_t* head = head_.data();
+  constexpr double inv_width = 1.0 / kBucketWidth;
+  auto bucket_of = [&](double f) { return static_cast<std::uint64_t>(f * inv_width); };
+  auto link = [&](std::uint32_t v, std::uint64_t b) {
+    const auto slot = static_cast<std::uint32_t>(b & mask);
+    const std::uint32_t first = head[slot];
+    next[v] = first;
+    prev[v] = kNil;
+    if (first != kNil) prev[first] = v;
+    head[slot] = v;
+  };
+  auto unlink = [&](std::uint32_t v, std::uint64_t b) {
+    const std::uint32_t p = prev[v], n = next[v];
+    if (p != kNil) next[p] = n;
+    else head[static_cast<std::uint32_t>(b & mask)] = n;
+    if (n != kNil) prev[n] = p;
+  };
+
+  PlanResult r;
+  double best = std::numeric_limits<double>::infinity();
+  const double hs = octile(static_cast<int>(s % stride) - tx, static_cast<int>(s / stride) - ty);
+  mark[s] = seen;
+  g[s] = 0.0;
+  parent[s] = kNoMove;
+  std::uint64_t cur = bucket_of(hs);
+  link(s, cur);
+  std::size_t open = 1;
+  if (s == t) best = 0.0;
+  const std::uint32_t sn = stride;
+  while (open > 0) {
+    while (head[cur & mask] == kNil) ++cur;
+    if (static_cast<double>(cur) * kBucketWidth >= best) break;
+    const std::uint32_t u = head[cur & mask];
+    unlink(u, cur);
+    --open;
+    mark[u] = closed;
+    const std::uint32_t row = u / stride;
+    const int ux = static_cast<int>(u - row * stride);
+    const int uy = static_cast<int>(row);
+    const double gu = g[u];
+    if (u == t || gu + octile(ux - tx, uy - ty) >= best) continue;
+    ++r.expanded;
+    const std::uint8_t cu = cls[u];
+    // Legal moves as a bit mask, computed without branches: orthogonal moves need the cell,
+    // diagonal moves the cell and both side cells (move m's side cells are orthogonal moves).
+    const std::uint32_t n0 = cls[u + sn] != kBlocked, n1 = cls[u + 1] != kBlocked;
+    const std::uint32_t n2 = cls[u - sn] != kBlocked, n3 = cls[u - 1] != kBlocked;
+    const std::uint32_t d4 = cls[u + sn + 1] != kBlocked, d5 = cls[u - sn + 1] != kBlocked;
+    const std::uint32_t d6 = cls[u - sn - 1] != kBlocked, d7 = cls[u + sn - 1] != kBlocked;
+    std::uint32_t legal = n0 | n1 << 1 | n2 << 2 | n3 << 3 | (d4 & n1 & n0) << 4 |
+                          (d5 & n1 & n2) << 5 | (d6 & n3 & n2) << 6 | (d7 & n3 & n0) << 7;
+    while (legal) {
+      const int m = std::countr_zero(legal);
+      legal &= legal - 1;
+      const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
+      const double ng = gu + cost[m][cu][cls[v]];
+      const std::uint32_t mv = mark[v];
+      const bool known = (mv | 1u) == closed;
+      if (known && !(ng < g[v] - 1e-9)) continue;
+      const double hv = octile(ux + kMoveDx[m] - tx, uy + kMoveDy[m] - ty);
+      if (!known) {
+        ++open;
+      } else if (mv == closed) {
+        ++open;  // reopened: its first expansion came a little early
+      } else {
+        unlink(v, bucket_of(g[v] + hv));
+      }
+      mark[v] = seen;
+      g[v] = ng;
+      parent[v] = static_cast<std::uint8_t>(m);
+      link(v, std::max(bucket_of(ng + hv), cur));
+      if (v == t) best = std::min(best, ng);
+    }
+  }
+  if (best == std::numeric_limits<double>::infinity()) return r;  // Unreachable
+  r.status = PlanStatus::Found;
+  build_path(grid, mt, s, t, r, costs);
+  return r;
+}
+
 // Why: the thesis' algorithm (gera_trajetoria) kept as a mode, with its neighbour order and
 // the corner-cutting rule fixed: fewest moves, not shortest length.
 PlanResult GridSearch::bfs(const PassGrid& grid, std::uint32_t s, std::uint32_t t,
                            const CostModel& costs) {
   const MoveTable mt(grid.stride);
   const std::uint8_t* cls = grid.cls.data();
-  Node* nodes = nodes_.data();
+  std::uint32_t* mark = mark_.data();
+  std::uint8_t* parent = parent_.data();
   std::uint32_t* queue = queue_.data();
+  const std::uint32_t seen = gen_ << 1;
   PlanResult r;
   std::size_t head = 0;
   std::size_t tail = 0;
-  nodes[s] = Node{0.0, gen_, kNoMove, 0};
+  mark[s] = seen;
+  parent[s] = kNoMove;
   queue[tail++] = s;
   while (head < tail) {
     const std::uint32_t u = queue[head++];
@@ -120,11 +238,12 @@ PlanResult GridSearch::bfs(const PassGrid& grid, std::uint32_t s, std::uint32_t 
     }
     for (int m = 0; m < 8; ++m) {
       const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
-      if (cls[v] == kBlocked || nodes[v].stamp == gen_) continue;
+      if (cls[v] == kBlocked || mark[v] == seen) continue;
       if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
                      cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
         continue;
-      nodes[v] = Node{0.0, gen_, static_cast<std::uint8_t>(m), 0};
+      mark[v] = seen;
+      parent[v] = static_cast<std::uint8_t>(m);
       queue[tail++] = v;
     }
   }
@@ -132,7 +251,7 @@ PlanResult GridSearch::bfs(const PassGrid& grid, std::uint32_t s, std::uint32_t 
 }
 
 // Why: walk the parent moves back from the goal, then reverse; cost and length are summed
-// from the moves so both modes report them the same way.
+// from the moves so every mode reports them the same way.
 void GridSearch::build_path(const PassGrid& grid, const MoveTable& mt, std::uint32_t s,
                             std::uint32_t t, PlanResult& r, const CostModel& costs) {
   const auto cost = costs.table();
@@ -143,7 +262,7 @@ void GridSearch::build_path(const PassGrid& grid, const MoveTable& mt, std::uint
   path_.clear();
   path_.push_back(grid.cell(v));
   while (v != s) {
-    const int m = nodes_[v].parent;
+    const int m = parent_[v];
     const std::uint32_t u = v - static_cast<std::uint32_t>(mt.step[m]);
     (m < 4 ? orth : diag) += 1;
     c += cost[m][grid.cls[u]][grid.cls[v]];

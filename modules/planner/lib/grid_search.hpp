@@ -17,12 +17,23 @@ enum class SearchMode : std::uint8_t {
   Bfs,      // the thesis: breadth-first, fewest moves, orthogonal neighbours tried first
 };
 
+// Optimal mode: A* whose open list is a ring of f-buckets (doubly linked through per-node
+// arrays, so push, move and pop are O(1) and nothing is allocated). Nodes within one bucket
+// (f within kBucketWidth) are taken last-in first-out; since that order is only approximate, a
+// closed node whose cost still improves is reopened, and the search stops only when the lowest
+// non-empty bucket starts at or above the best goal cost: the result is exact. If the cost
+// model makes edges too expensive for a small ring (large unknown_cost) it falls back to a
+// 4-ary heap.
+//
 // 8-connected search without corner cutting (a diagonal move needs both side cells
 // traversable). All per-node state lives in arrays sized by reserve(); a generation stamp
 // marks which entries belong to the current search, so nothing is cleared between searches
 // and a search never allocates once the grid size is known.
 class GridSearch {
  public:
+  static constexpr double kBucketWidth = 0.5;   // cells of f per bucket
+  static constexpr std::uint32_t kNil = 0xFFFFFFFFu;
+
   GridSearch() = default;
   GridSearch(int width, int height) { reserve(width, height); }
 
@@ -36,25 +47,25 @@ class GridSearch {
   const std::vector<Cell>& path() const { return path_; }
 
  private:
-  // Per stored cell search state.
-  struct Node {
-    double g;             // cells: best cost from the start so far
-    std::uint32_t stamp;  // generation that last wrote this node
-    std::uint8_t parent;  // move that reached this node, kNoMove for the start
-    std::uint8_t closed;  // 1 once expanded in this generation
-  };
-
   void next_generation();
   PlanResult astar(const PassGrid& grid, std::uint32_t s, std::uint32_t t, const CostModel& c);
+  PlanResult astar_buckets(const PassGrid& grid, std::uint32_t s, std::uint32_t t,
+                           const CostModel& c);
   PlanResult bfs(const PassGrid& grid, std::uint32_t s, std::uint32_t t, const CostModel& c);
   void build_path(const PassGrid& grid, const MoveTable& mt, std::uint32_t s, std::uint32_t t,
                   PlanResult& r, const CostModel& c);
 
-  std::vector<Node> nodes_;            // per stored cell
+  // Per stored cell search state, as separate arrays (the hot check reads only mark_).
+  std::vector<std::uint32_t> mark_;    // generation << 1 | closed; other generations = unseen
+  std::vector<double> g_;              // cells: best cost from the start (valid when seen)
+  std::vector<std::uint8_t> parent_;   // move that reached the cell, kNoMove for the start
+  std::vector<std::uint32_t> next_;    // optimal mode: next node in its bucket list, or kNil
+  std::vector<std::uint32_t> prev_;    // optimal mode: previous node in its list, or kNil
   std::vector<std::uint32_t> queue_;   // BFS FIFO
-  IndexedHeap open_;                   // A* open list
+  std::vector<std::uint32_t> head_;    // per ring bucket: first node, or kNil
+  IndexedHeap open_;                   // heap fallback's open list
   std::vector<Cell> path_;             // last path, start first
-  std::uint32_t gen_ = 0;              // current generation stamp
+  std::uint32_t gen_ = 0;              // current generation (marks are gen_ << 1 | closed)
 };
 
 }  // namespace robuter::plan
