@@ -1,0 +1,232 @@
+// Reads the configuration with toml++ and checks every key against the schema.
+#include "kernel/config.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "kernel/log.hpp"
+
+namespace robuter {
+
+std::string ConfigError::message() const {
+  std::string s = file;
+  if (line > 0) s += fmt::format(":{}", line);
+  s += ": ";
+  if (!key.empty()) s += fmt::format("key '{}': ", key);
+  return s + what;
+}
+
+namespace {
+
+// Binds TOML keys to config fields, remembering which keys were known so the rest can be
+// reported as unknown. Stops at the first error.
+class Binder {
+ public:
+  Binder(const std::string& file, const toml::table& root) : file_(file), root_(root) {}
+
+  const std::optional<ConfigError>& error() const { return error_; }
+
+  // An integer key within [lo, hi].
+  template <typename T>
+  void integer(const std::string& key, T& out, long long lo, long long hi) {
+    const toml::node* n = lookup(key);
+    if (!n || error_) return;
+    const auto* v = n->as_integer();
+    if (!v) return fail(*n, key, fmt::format("expected an integer, got {}", type_name(*n)));
+    const long long x = v->get();
+    if (x < lo || x > hi) return fail(*n, key, fmt::format("{} is out of range {}..{}", x, lo, hi));
+    out = static_cast<T>(x);
+  }
+  template <typename T>
+  void integer(const std::string& key, std::optional<T>& out, long long lo, long long hi) {
+    if (!lookup(key)) return;
+    T v{};
+    integer(key, v, lo, hi);
+    if (!error_) out = v;
+  }
+  void boolean(const std::string& key, bool& out) {
+    const toml::node* n = lookup(key);
+    if (!n || error_) return;
+    const auto* v = n->as_boolean();
+    if (!v) return fail(*n, key, fmt::format("expected true or false, got {}", type_name(*n)));
+    out = v->get();
+  }
+  // A string key, optionally one of `choices`.
+  void string(const std::string& key, std::string& out, std::initializer_list<const char*> choices = {}) {
+    const toml::node* n = lookup(key);
+    if (!n || error_) return;
+    const auto* v = n->as_string();
+    if (!v) return fail(*n, key, fmt::format("expected a string, got {}", type_name(*n)));
+    if (choices.size()) {
+      bool ok = false;
+      std::string list;
+      for (const char* c : choices) {
+        ok = ok || v->get() == c;
+        list += list.empty() ? c : fmt::format(", {}", c);
+      }
+      if (!ok) return fail(*n, key, fmt::format("'{}' is not one of: {}", v->get(), list));
+    }
+    out = v->get();
+  }
+  void strings(const std::string& key, std::vector<std::string>& out) {
+    const toml::node* n = lookup(key);
+    if (!n || error_) return;
+    const auto* a = n->as_array();
+    if (!a) return fail(*n, key, fmt::format("expected an array of strings, got {}", type_name(*n)));
+    out.clear();
+    for (const auto& e : *a) {
+      if (!e.is_string()) return fail(e, key, fmt::format("expected strings only, found {}", type_name(e)));
+      out.push_back(e.as_string()->get());
+    }
+  }
+  // Marks a table as known (its own keys are bound separately).
+  void table(const std::string& key) {
+    known_.insert(key);
+    tables_.insert(key);
+  }
+
+  // Reports the first key in the file that no binding claimed.
+  void reject_unknown() { walk(root_, ""); }
+
+  // Records a validation failure tied to `key`.
+  void fail_key(const std::string& key, const std::string& what) {
+    const toml::node* n = root_.at_path(key).node();
+    if (n) fail(*n, key, what);
+    else if (!error_) error_ = ConfigError{file_, 0, key, what};
+  }
+
+ private:
+  const toml::node* lookup(const std::string& key) {
+    known_.insert(key);
+    return root_.at_path(key).node();
+  }
+  static std::string type_name(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string: return "a string";
+      case toml::node_type::integer: return "an integer";
+      case toml::node_type::floating_point: return "a number with a fraction";
+      case toml::node_type::boolean: return "a boolean";
+      case toml::node_type::array: return "an array";
+      case toml::node_type::table: return "a table";
+      default: return "a date or time";
+    }
+  }
+  void fail(const toml::node& n, const std::string& key, const std::string& what) {
+    if (!error_) error_ = ConfigError{file_, static_cast<int>(n.source().begin.line), key, what};
+  }
+  void walk(const toml::table& t, const std::string& prefix) {
+    for (const auto& [k, v] : t) {
+      if (error_) return;
+      const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+      if (!known_.count(key)) {
+        error_ = ConfigError{file_, static_cast<int>(k.source().begin.line), key, "unknown key"};
+        return;
+      }
+      if (const auto* sub = v.as_table()) {
+        walk(*sub, key);
+      } else if (tables_.count(key)) {
+        error_ = ConfigError{file_, static_cast<int>(k.source().begin.line), key,
+                             fmt::format("expected a table, got {}", type_name(v))};
+        return;
+      }
+    }
+  }
+
+  const std::string& file_;
+  const toml::table& root_;
+  std::set<std::string> known_;   // keys the schema bound
+  std::set<std::string> tables_;  // keys that must be tables
+  std::optional<ConfigError> error_;
+};
+
+// Binds every section of the schema.
+void bind(Binder& b, const toml::table& root, Config& c) {
+  constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
+  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "process", "modules"}) b.table(t);
+
+  b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
+  b.boolean("kernel.realtime", c.kernel.realtime);
+  b.integer("kernel.rt_priority", c.kernel.rt_priority, 1, 99);
+  b.boolean("kernel.lock_memory", c.kernel.lock_memory);
+  b.string("kernel.log_level", c.kernel.log_level, {"debug", "info", "warn", "error", "off"});
+
+  b.integer("robot.length_mm", c.robot.length_mm, 100, 10'000);
+  b.integer("robot.width_mm", c.robot.width_mm, 100, 10'000);
+  b.integer("robot.wheel_base_mm", c.robot.wheel_base_mm, 100, 10'000);
+  b.integer("robot.max_speed_cm_s", c.robot.max_speed_cm_s, 1, 500);
+  b.integer("robot.max_accel_cm_s2", c.robot.max_accel_cm_s2, 1, 10'000);
+
+  b.integer("sonar.node_delay_ticks", c.sonar.node_delay_ticks, 0, 1000);
+  b.integer("sonar.timeout_ms", c.sonar.timeout_ms, 1, 1000);
+  b.integer("sonar.sound_speed_m_s", c.sonar.sound_speed_m_s, 200, 400);
+
+  b.integer("emergency.mask", c.emergency.mask, 0, 7);
+  b.integer("emergency.comm_limit_ticks", c.emergency.comm_limit_ticks, 1, kU32);
+  b.integer("emergency.min_safety_mm", c.emergency.min_safety_mm, 0, 10'000);
+  b.integer("emergency.safety_mm_per_cm_s", c.emergency.safety_mm_per_cm_s, 0, 1000);
+  b.integer("emergency.motion_timeout_ms", c.emergency.motion_timeout_ms, 0, 3'600'000);
+  b.boolean("emergency.auto_toggle", c.emergency.auto_toggle);
+  b.boolean("emergency.latch", c.emergency.latch);
+
+  b.boolean("permissions.pass_through", c.permissions.pass_through);
+  b.strings("permissions.pass_through_allow", c.permissions.pass_through_allow);
+  b.boolean("permissions.shutdown", c.permissions.shutdown);
+
+  if (root.at_path("modules.enabled").node()) {
+    std::vector<std::string> names;
+    b.strings("modules.enabled", names);
+    c.enabled_modules = names;
+  }
+
+  if (const toml::node* p = root.at_path("process").node()) {
+    const auto* procs = p->as_table();
+    if (!procs) return b.fail_key("process", "expected a table of [process.NAME] tables");
+    for (const auto& [name, node] : *procs) {
+      const std::string key = "process." + std::string(name.str());
+      if (!node.is_table()) return b.fail_key(key, "expected a table (period, offset, priority, budget_us)");
+      b.table(key);
+      ProcessOverride o;
+      o.name = std::string(name.str());
+      o.line = static_cast<int>(node.source().begin.line);
+      b.integer(key + ".period", o.period, 1, 100'000);
+      b.integer(key + ".offset", o.offset, 0, 100'000);
+      b.integer(key + ".priority", o.priority, 0, 99);
+      b.integer(key + ".budget_us", o.budget_us, 1, 100'000'000);
+      c.processes.push_back(o);
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<ConfigError> parse_config(std::string_view text, const std::string& file, Config& out) {
+  Config c;
+  c.source = file;
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    return ConfigError{file, static_cast<int>(e.source().begin.line), "", std::string(e.description())};
+  }
+  Binder b(file, root);
+  bind(b, root, c);
+  if (!b.error()) b.reject_unknown();
+  if (b.error()) return b.error();
+  out = std::move(c);
+  return std::nullopt;
+}
+
+std::optional<ConfigError> load_config(const std::string& path, Config& out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return ConfigError{path, 0, "", fmt::format("cannot open: {}", std::strerror(errno))};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_config(ss.str(), path, out);
+}
+
+}  // namespace robuter

@@ -1,0 +1,53 @@
+// Levelled log stamped with the kernel tick; the periodic path only formats into a fixed ring.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <string_view>
+
+namespace robuter::log {
+
+enum class Level : std::uint8_t { debug = 0, info = 1, warn = 2, error = 3, off = 4 };
+
+// Parses "debug", "info", "warn", "error", "off"; false for anything else.
+bool parse_level(std::string_view text, Level& out);
+const char* level_name(Level l);
+
+// Minimum level that is recorded (others cost one comparison).
+void set_level(Level l);
+Level level();
+// The tick written on every record (the kernel sets it each tick).
+void set_tick(std::uint64_t tick);
+// Starts the drain thread that writes records to `sink` (stderr by default).
+void start(std::FILE* sink = stderr);
+// Stops the drain thread after writing every record left.
+void stop();
+// Writes every pending record now, from the calling thread (tests, start-up errors).
+void flush();
+// Records that could not be queued because the ring was full.
+std::uint64_t dropped();
+
+namespace detail {
+constexpr std::size_t kMessageBytes = 160;  // longest message kept, bytes (longer is cut)
+// Reserves a ring slot, formats into it and publishes it; never allocates or blocks.
+void push(Level l, const char* text, std::size_t len);
+}  // namespace detail
+
+// Formats a record; the arguments are formatted into a stack buffer, never the heap.
+template <typename... Args>
+void write(Level l, fmt::format_string<Args...> f, Args&&... args) {
+  if (l < level()) return;
+  char buf[detail::kMessageBytes];
+  const auto r = fmt::format_to_n(buf, sizeof buf, f, std::forward<Args>(args)...);
+  detail::push(l, buf, r.size < sizeof buf ? r.size : sizeof buf);
+}
+
+template <typename... Args> void debug(fmt::format_string<Args...> f, Args&&... a) { write(Level::debug, f, std::forward<Args>(a)...); }
+template <typename... Args> void info(fmt::format_string<Args...> f, Args&&... a) { write(Level::info, f, std::forward<Args>(a)...); }
+template <typename... Args> void warn(fmt::format_string<Args...> f, Args&&... a) { write(Level::warn, f, std::forward<Args>(a)...); }
+template <typename... Args> void error(fmt::format_string<Args...> f, Args&&... a) { write(Level::error, f, std::forward<Args>(a)...); }
+
+}  // namespace robuter::log

@@ -1,0 +1,61 @@
+// Default process table and how configuration changes it.
+#include "modules/firmware/process_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace robuter {
+
+namespace {
+// name, period, offset, priority, budget_us. Seed: read_sensors 4/6 prio 2, serial_spy 2/0
+// prio 3, execute 10/2 prio 4, emergency 10/4 prio 5 (higher runs first in a shared tick).
+constexpr DefaultRow kDefaults[] = {
+    {"heartbeat", 100, 0, 1, 1000},
+};
+}  // namespace
+
+std::span<const DefaultRow> default_table() { return kDefaults; }
+
+std::optional<std::string> build_table(const Config& cfg, std::span<const NamedProcess> modules,
+                                       std::vector<ProcessRow>& out) {
+  out.clear();
+  auto known = [&](const std::string& n) {
+    return std::any_of(std::begin(kDefaults), std::end(kDefaults), [&](const DefaultRow& r) { return n == r.name; });
+  };
+  auto known_list = [&] {
+    std::string s;
+    for (const auto& r : kDefaults) s += (s.empty() ? "" : ", ") + std::string(r.name);
+    return s;
+  };
+  if (cfg.enabled_modules) {
+    for (const auto& n : *cfg.enabled_modules)
+      if (!known(n))
+        return fmt::format("{}: key 'modules.enabled': no module named '{}' (known: {})", cfg.source, n, known_list());
+  }
+  for (const auto& o : cfg.processes)
+    if (!known(o.name))
+      return fmt::format("{}:{}: key 'process.{}': no process of that name (known: {})", cfg.source, o.line, o.name,
+                         known_list());
+
+  for (const DefaultRow& d : kDefaults) {
+    if (cfg.enabled_modules &&
+        std::find(cfg.enabled_modules->begin(), cfg.enabled_modules->end(), d.name) == cfg.enabled_modules->end())
+      continue;
+    ProcessRow r{d.name, nullptr, d.period, d.offset, d.priority, d.budget_us};
+    for (const auto& m : modules)
+      if (std::strcmp(m.name, d.name) == 0) r.process = m.process;
+    for (const auto& o : cfg.processes) {
+      if (o.name != d.name) continue;
+      if (o.period) r.period = *o.period;
+      if (o.offset) r.offset = *o.offset;
+      if (o.priority) r.priority = *o.priority;
+      if (o.budget_us) r.budget_us = *o.budget_us;
+    }
+    out.push_back(r);
+  }
+  return std::nullopt;
+}
+
+}  // namespace robuter

@@ -1,0 +1,111 @@
+// Configuration parsing: defaults equal the seed's constants; each bad file gives one clear error.
+#include <gtest/gtest.h>
+
+#include "kernel/config.hpp"
+
+namespace robuter {
+namespace {
+
+// Parses `text` and returns the error message, or "" when it is accepted.
+std::string error_of(const std::string& text, Config* out = nullptr) {
+  Config c;
+  const auto err = parse_config(text, "robot.toml", c);
+  if (out) *out = c;
+  return err ? err->message() : "";
+}
+
+TEST(Config, DefaultsAreTheSeedConstants) {
+  Config c;
+  EXPECT_EQ(c.kernel.tick_us, 10'000u);
+  EXPECT_EQ(c.robot.length_mm, 1025u);
+  EXPECT_EQ(c.robot.width_mm, 700u);
+  EXPECT_EQ(c.robot.wheel_base_mm, 600u);
+  EXPECT_EQ(c.sonar.node_delay_ticks, 3u);
+  EXPECT_EQ(c.sonar.timeout_ms, 33u);
+  EXPECT_EQ(c.sonar.sound_speed_m_s, 300u);
+  EXPECT_EQ(c.emergency.mask, 7u);
+  EXPECT_EQ(c.emergency.comm_limit_ticks, 18'000u);
+  EXPECT_EQ(c.emergency.min_safety_mm, 220u);
+  EXPECT_FALSE(c.permissions.pass_through);
+}
+
+TEST(Config, AcceptsAFullFile) {
+  Config c;
+  const auto err = error_of(R"(
+[kernel]
+tick_us = 5000
+realtime = true
+rt_priority = 80
+log_level = "debug"
+[robot]
+wheel_base_mm = 610
+[emergency]
+mask = 3
+[permissions]
+pass_through = true
+pass_through_allow = ["TSYS"]
+[modules]
+enabled = ["heartbeat"]
+[process.heartbeat]
+period = 50
+budget_us = 200
+)", &c);
+  ASSERT_EQ(err, "");
+  EXPECT_EQ(c.kernel.tick_us, 5000u);
+  EXPECT_TRUE(c.kernel.realtime);
+  EXPECT_EQ(c.kernel.rt_priority, 80);
+  EXPECT_EQ(c.robot.wheel_base_mm, 610u);
+  EXPECT_EQ(c.emergency.mask, 3u);
+  ASSERT_EQ(c.permissions.pass_through_allow.size(), 1u);
+  ASSERT_TRUE(c.enabled_modules);
+  ASSERT_EQ(c.processes.size(), 1u);
+  EXPECT_EQ(c.processes[0].name, "heartbeat");
+  EXPECT_EQ(c.processes[0].period, 50u);
+  EXPECT_FALSE(c.processes[0].offset);
+  EXPECT_EQ(c.processes[0].line, 16);
+}
+
+TEST(Config, UnknownKeyNamesFileLineAndKey) {
+  EXPECT_EQ(error_of("[kernel]\ntick_us = 10000\ntik_us = 5\n"), "robot.toml:3: key 'kernel.tik_us': unknown key");
+  EXPECT_EQ(error_of("[kernal]\n"), "robot.toml:1: key 'kernal': unknown key");
+}
+
+TEST(Config, WrongTypeIsNamed) {
+  EXPECT_EQ(error_of("[kernel]\ntick_us = \"10\"\n"),
+            "robot.toml:2: key 'kernel.tick_us': expected an integer, got a string");
+  EXPECT_EQ(error_of("[emergency]\nlatch = 1\n"), "robot.toml:2: key 'emergency.latch': expected true or false, got an integer");
+  EXPECT_EQ(error_of("kernel = 3\n"), "robot.toml:1: key 'kernel': expected a table, got an integer");
+}
+
+TEST(Config, OutOfRangeValueIsNamed) {
+  EXPECT_EQ(error_of("[kernel]\ntick_us = 0\n"), "robot.toml:2: key 'kernel.tick_us': 0 is out of range 100..1000000");
+  EXPECT_EQ(error_of("[emergency]\nmask = 9\n"), "robot.toml:2: key 'emergency.mask': 9 is out of range 0..7");
+  EXPECT_EQ(error_of("[kernel]\nlog_level = \"loud\"\n"),
+            "robot.toml:2: key 'kernel.log_level': 'loud' is not one of: debug, info, warn, error, off");
+}
+
+TEST(Config, SyntaxErrorGivesTheLine) {
+  const auto e = error_of("[kernel]\ntick_us = = 3\n");
+  EXPECT_EQ(e.rfind("robot.toml:2: ", 0), 0u) << e;
+}
+
+TEST(Config, MissingFileIsClear) {
+  Config c;
+  const auto err = load_config("/nonexistent/robot.toml", c);
+  ASSERT_TRUE(err);
+  EXPECT_EQ(err->message(), "/nonexistent/robot.toml: cannot open: No such file or directory");
+}
+
+TEST(Config, ShippedDefaultFileParsesToTheDefaults) {
+  Config c;
+  const auto err = load_config(ROBUTER_SOURCE_DIR "/config/robuterd.toml", c);
+  ASSERT_FALSE(err) << err->message();
+  Config d;
+  EXPECT_EQ(c.kernel.tick_us, d.kernel.tick_us);
+  EXPECT_EQ(c.emergency.comm_limit_ticks, d.emergency.comm_limit_ticks);
+  EXPECT_EQ(c.sonar.timeout_ms, d.sonar.timeout_ms);
+  EXPECT_EQ(c.robot.length_mm, d.robot.length_mm);
+}
+
+}  // namespace
+}  // namespace robuter

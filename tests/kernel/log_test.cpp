@@ -1,0 +1,54 @@
+// The log ring: levels filter, records carry the tick, a full ring drops and counts.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "kernel/log.hpp"
+
+namespace robuter {
+namespace {
+
+// Captures what flush() writes by pointing the sink at a temporary file.
+std::string drain_to_string() {
+  std::FILE* f = std::tmpfile();
+  log::start(f);
+  log::stop();
+  std::rewind(f);
+  std::string out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, f)) out += buf;
+  std::fclose(f);
+  return out;
+}
+
+TEST(Log, LevelsTicksAndDrops) {
+  log::set_level(log::Level::info);
+  log::set_tick(42);
+  log::debug("hidden {}", 1);
+  log::warn("range {} mm", 220);
+  const auto out = drain_to_string();
+  EXPECT_EQ(out, "[      42] warn  range 220 mm\n");
+  for (int i = 0; i < 1000; ++i) log::info("flood {}", i);
+  EXPECT_GT(log::dropped(), 0u);
+  const auto flood = drain_to_string();
+  EXPECT_NE(flood.find("records dropped"), std::string::npos);
+  EXPECT_NE(flood.find("flood 0"), std::string::npos);
+}
+
+TEST(Log, LongMessagesAreCutNotOverflowed) {
+  log::set_level(log::Level::info);
+  log::info("{}", std::string(1000, 'x'));
+  const auto out = drain_to_string();
+  EXPECT_LT(out.size(), 200u);
+}
+
+TEST(Log, LevelNamesParse) {
+  log::Level l{};
+  EXPECT_TRUE(log::parse_level("warn", l));
+  EXPECT_EQ(l, log::Level::warn);
+  EXPECT_FALSE(log::parse_level("loud", l));
+}
+
+}  // namespace
+}  // namespace robuter
