@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Kernel figures: real-clock tick lateness of robuterd beside cyclictest at the same period,
+# robuterd's resident memory after a minute, and the kernel's own per-tick cost.
+set -euo pipefail
+bin=${ROBUTER_BIN:-build/bin}
+seconds=${ROBUTER_BENCH_KERNEL_SECONDS:-60}
+ticks=$((seconds * 100))
+
+stats=$(mktemp); trap 'rm -f "$stats"' EXIT
+"$bin/robuterd" --ticks "$ticks" --stats --log-level warn >"$stats" 2>&1 &
+pid=$!
+sleep $((seconds - 2))
+rss_kb=$(awk '/VmRSS/ {print $2}' /proc/$pid/status)
+hwm_kb=$(awk '/VmHWM/ {print $2}' /proc/$pid/status)
+wait $pid
+line=$(grep '^tick ' "$stats")
+echo "robuterd, 10 ms tick, ${seconds} s, SCHED_OTHER: $line"
+echo "robuterd resident memory after $((seconds - 2)) s: $((rss_kb / 1024)).$(( (rss_kb % 1024) * 10 / 1024 )) MB (peak $((hwm_kb / 1024)).$(( (hwm_kb % 1024) * 10 / 1024 )) MB; target < 20 MB)"
+
+if command -v cyclictest >/dev/null; then
+  hist=$(mktemp)
+  cyclictest -t1 -i 10000 -l $((10 * 100)) -q -h 10000 >"$hist" 2>/dev/null || true
+  awk '
+    /^[0-9]+/ { us=$1+0; n=$2+0; cnt[us]=n; total+=n; if (n>0) last=us }
+    /# Max Latencies/ { mx=$4+0 }
+    END {
+      if (total == 0) { print "cyclictest: no samples"; exit }
+      s=0; p50=-1; p99=-1
+      for (u=0; u<=last; u++) { s+=cnt[u]; if (p50<0 && s>=0.5*total) p50=u; if (p99<0 && s>=0.99*total) p99=u }
+      printf "cyclictest, 10 ms interval, 10 s, SCHED_OTHER: %d samples, lateness p50 %d us, p99 %d us, max %d us\n", total, p50, p99, mx
+    }' "$hist"
+  rm -f "$hist"
+else
+  echo "cyclictest: not installed (apt-get install rt-tests) — no peer figure"
+fi
+
+if [[ -x "$bin/bench_kernel" ]]; then
+  "$bin/bench_kernel" --benchmark_min_time=0.2 2>/dev/null | grep -E '^(BM_|-|Benchmark)'
+fi
