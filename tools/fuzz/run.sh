@@ -20,7 +20,7 @@ for target in fuzz_decoder fuzz_line_handler; do
   work="$out/corpus/$target"
   mkdir -p "$work" "$out/artifacts/$target"
   log="$out/$target.log"
-  if ! "$out/$target" "${limit[@]}" -max_len=4096 -dict="$here/protocol.dict" -print_final_stats=1 \
+  if ! "$out/$target" "${limit[@]}" -max_len=1024 -dict="$here/protocol.dict" -print_final_stats=1 \
       -artifact_prefix="$out/artifacts/$target/" "$work" "$here/corpus/$target" >"$log" 2>&1; then
     echo "$target FAILED; see $log and $out/artifacts/$target/" >&2
     tail -30 "$log" >&2
