@@ -102,6 +102,30 @@ void Kernel::unwatch_fd(int fd) {
     if (w.fd == fd) w = Watch{};
 }
 
+void Kernel::trigger(Process* p) {
+  for (std::size_t i = 0; i < count_; ++i) {
+    if (rows_[i].process == p && triggered_[i] < kMaxTriggersPerTick) {
+      pending_[i] = 1;
+      any_pending_ = true;
+    }
+  }
+}
+
+void Kernel::run_triggered() {
+  while (any_pending_ && !stop_requested()) {
+    any_pending_ = false;
+    for (std::size_t k = 0; k < count_; ++k) {
+      const std::size_t i = order_[k];
+      if (!pending_[i]) continue;
+      pending_[i] = 0;
+      ++triggered_[i];
+      activate(i, true);
+      break;  // re-scan from the highest priority: the run may have triggered others
+    }
+    for (std::size_t i = 0; i < count_; ++i) any_pending_ = any_pending_ || pending_[i];
+  }
+}
+
 std::optional<std::size_t> Kernel::find(const char* name) const {
   for (std::size_t i = 0; i < count_; ++i)
     if (std::strcmp(rows_[i].name, name) == 0) return i;
@@ -138,6 +162,7 @@ void Kernel::serve_events_until(Nanos deadline) {
       for (std::size_t i = 0; i < count_; ++i) {
         if (rows_[i].process == w.process) { activate(i, true); break; }
       }
+      run_triggered();
       if (stop_requested()) return;
     }
   }
@@ -162,7 +187,9 @@ void Kernel::step() {
     skipped_ticks_ += static_cast<std::uint64_t>(behind);
   }
   log::set_tick(tick_);
+  triggered_.fill(0);
   for (std::size_t k = 0; k < count_; ++k) {
+    run_triggered();
     const std::size_t i = order_[k];
     if (tick_ < next_due_[i]) continue;
     const Nanos due_at = t0_ + static_cast<Nanos>(next_due_[i]) * tick_ns_;
@@ -172,6 +199,7 @@ void Kernel::step() {
     next_due_[i] = next_due_after(i, tick_);
     if (stop_requested()) break;
   }
+  run_triggered();
   ++tick_;
 }
 

@@ -19,6 +19,7 @@ class Kernel {
   static constexpr std::size_t kMaxProcesses = 32;      // rows in the process table
   static constexpr std::size_t kMaxWatches = 16;        // descriptors that can wake a process
   static constexpr int kMaxEventRunsPerTick = 8;        // bound on descriptor activations per tick
+  static constexpr int kMaxTriggersPerTick = 2;         // bound on triggered activations per tick
   static constexpr int kMinPriority = 0;                // priority range accepted in a row
   static constexpr int kMaxPriority = 99;
 
@@ -51,6 +52,10 @@ class Kernel {
   bool watch_fd(int fd, Process* p);
   // Stops watching `fd` (a link that closed).
   void unwatch_fd(int fd);
+  // Asks for one more activation of `p` before the current tick ends (after the process now
+  // running): a consumer reacts to new data in the same tick instead of at its next period.
+  // At most kMaxTriggersPerTick triggered runs per process per tick.
+  void trigger(Process* p);
 
   std::uint64_t tick() const { return tick_; }          // the tick being run (or next)
   Nanos tick_ns() const { return tick_ns_; }            // tick length, ns
@@ -69,6 +74,8 @@ class Kernel {
  private:
   // Runs process i now and records its execution time.
   void activate(std::size_t i, bool from_event);
+  // Runs the triggered processes, by priority, until none is pending.
+  void run_triggered();
   // Serves descriptor events until `deadline` (or a stop request).
   void serve_events_until(Nanos deadline);
   // The first tick strictly after `t` at which row i is due.
@@ -86,6 +93,9 @@ class Kernel {
   std::array<ProcessStats, kMaxProcesses> stats_{};   // statistics per row
   std::array<std::uint64_t, kMaxProcesses> next_due_{};  // next tick each row is due
   std::array<std::uint8_t, kMaxProcesses> order_{};   // row indices by descending priority
+  std::array<std::uint8_t, kMaxProcesses> pending_{}; // triggered activations wanted this tick
+  std::array<std::uint8_t, kMaxProcesses> triggered_{};  // triggered activations run this tick
+  bool any_pending_ = false;
   std::size_t count_ = 0;                             // rows in the table
   std::size_t started_ = 0;                           // rows whose init succeeded
   std::array<Watch, kMaxWatches> watches_{};

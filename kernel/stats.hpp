@@ -12,7 +12,7 @@ namespace robuter {
 // What the kernel measured of one process since start-up.
 struct ProcessStats {
   std::uint64_t activations = 0;        // all runs (periodic and descriptor-driven)
-  std::uint64_t event_activations = 0;  // runs caused by a readable descriptor
+  std::uint64_t event_activations = 0;  // runs caused by a readable descriptor or a trigger
   Nanos total_ns = 0;                   // summed execution time, ns
   Nanos max_ns = 0;                     // longest execution, ns
   std::uint64_t overruns = 0;           // runs longer than the time budget

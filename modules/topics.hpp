@@ -1,5 +1,5 @@
 // Every blackboard topic of the firmware: one small struct each, with its owner module.
-// The table in docs/ARCHITECTURE.md lists writer and readers; keep the two in step.
+// docs/ARCHITECTURE.md has the table of writers and readers; keep the two in step.
 #pragma once
 
 #include <array>
@@ -9,19 +9,152 @@
 
 namespace robuter {
 
-// Owner modules (each defined in modules/<name>/); being named here makes them the writers.
+// Owner modules (each defined in modules/<name>/); naming one in a Topic makes it the writer.
 class HeartbeatModule;
+class SerialModule;
+class UltrasonicModule;
+class EmergencyModule;
+class ExecutorModule;
 
-// Proof of life of the kernel: a count per second (until the simulator and link land, the
-// only thing `make run` shows).
+inline constexpr int kSensors = 24;  // ultrasonic ring sensors, numbered 1..24
+
+// Proof of life of the kernel.
 struct Heartbeat {
-  std::uint64_t beats = 0;   // heartbeats since start
-  std::uint64_t tick = 0;    // tick of the last beat
+  std::uint64_t beats = 0;  // heartbeats since start
+  std::uint64_t tick = 0;   // tick of the last beat
+};
+
+// Where the robot is and what reaches its motors (executor).
+struct Posture {
+  std::int32_t x = 0;           // 0.1 mm, odometry frame
+  std::int32_t y = 0;           // 0.1 mm
+  std::int32_t theta = 0;       // 0.01 degree, in (-18000, 18000]
+  bool servo = false;           // servo (brake released, motors powered)
+  std::int32_t left = 0;        // wheel speed set-point that reached the drive, cm/s
+  std::int32_t right = 0;       // cm/s
+  std::uint64_t tick = 0;       // tick of the odometry read
+};
+
+// Who asked for a motion (the emergency module arbitrates, newest request wins).
+enum class MotionSource : std::uint8_t { link, go_to, gate, doors, planner, demo };
+
+// A request to move: wheel speeds wanted by one source. Never reaches the motors directly.
+struct MotionRequest {
+  std::int32_t left = 0;        // cm/s
+  std::int32_t right = 0;       // cm/s
+  std::uint32_t seq = 0;        // bumped on every request (a repeat of the same speeds counts)
+  std::uint64_t tick = 0;       // tick of the request
+};
+
+// Servo on/off asked by the operator (ASN / ASF).
+struct ServoRequest {
+  bool on = false;              // wanted servo state
+  std::uint32_t seq = 0;        // bumped on every request
+};
+
+// Odometry posture to set (AC).
+struct OdometrySet {
+  std::int32_t x = 0;           // 0.1 mm
+  std::int32_t y = 0;           // 0.1 mm
+  std::int32_t theta = 0;       // 0.01 degree
+  std::uint32_t seq = 0;        // bumped on every request
+};
+
+// Go-to-posture target (AW); the executor drives there through the emergency gate.
+struct GoToRequest {
+  std::int32_t x = 0;           // 0.1 mm
+  std::int32_t y = 0;           // 0.1 mm
+  std::int32_t theta = 0;       // 0.01 degree
+  bool active = false;          // false cancels
+  std::uint32_t seq = 0;        // bumped on every request
+};
+
+// How the operator set the ultrasonic ring (UT, UD, Ut, Uu; defaults from the configuration).
+struct UltrasonicSettings {
+  std::uint32_t user_table = 0xFFFFFF;  // bit s-1 = sensor s active (UT)
+  std::uint32_t node_delay_ticks = 3;   // delay between two nodes, ticks (UD)
+  std::uint32_t timeout_ms = 33;        // echo time-out, ms (Ut)
+  bool auto_toggle = false;             // only the watch-dog sensors fire (Uu)
+};
+
+// The ring's latest ranges (us).
+struct UltrasonicRanges {
+  std::array<std::uint16_t, kSensors> mm{};      // range of sensor s at [s-1], mm; 0 = inactive / none
+  std::array<std::uint64_t, kSensors> read_tick{};  // tick each range was read
+  std::uint32_t scans = 0;                       // full passes over the active nodes
+  std::uint64_t tick = 0;                        // tick of the latest read
+};
+
+// Timing of the ring (USN, USS).
+struct UltrasonicTiming {
+  std::uint32_t mean_node_ticks = 0;   // mean time to read one node, ticks
+  std::uint32_t mean_scan_ticks = 0;   // mean time to read all six nodes, ticks (0: not measured)
+};
+
+// Which sensors the ring fires, decided by the emergency module (watch-dog set, auto-toggle).
+struct SonarSelection {
+  std::uint32_t active = 0xFFFFFF;     // bit s-1 = sensor s fires
+};
+
+// Why an emergency holds.
+enum class EmergencyCause : std::uint8_t { none, bumper, obstacle, comm_loss, stop_byte, motion_timeout, drive_fault, other };
+
+// The emergency module's verdict.
+struct EmergencyState {
+  bool held = false;            // motion held until a watch-dog sensor has data
+  bool latched = false;         // stopped by an emergency, waiting for a re-enable
+  EmergencyCause cause = EmergencyCause::none;  // the cause (kept while latched)
+  std::uint8_t enabled = 7;     // detections on: bumper 1, ultrasonic 2, communication 4
+  std::int32_t main_sensor = 0; // sensor in the direction of motion (0 when stopped)
+  std::uint32_t watch = 0;      // watch-dog sensor set, bit s-1 = sensor s
+  std::uint64_t tick = 0;       // tick of the verdict
+};
+
+// What the executor is allowed to send to the motors: the only path to a non-zero speed.
+struct MotionCommand {
+  std::int32_t left = 0;        // cm/s
+  std::int32_t right = 0;       // cm/s
+  bool stop = true;             // true: zero speeds and servo off (emergency)
+  std::uint32_t seq = 0;        // bumped on every decision
+};
+
+// Life of the command links (serial).
+struct LinkStatus {
+  std::uint64_t last_message_tick = 0;  // tick of the last well-formed command
+  std::uint32_t stop_seq = 0;           // immediate stop bytes received
+  std::uint32_t reenable_seq = 0;       // re-enable requests (XR)
+  std::uint32_t links_open = 0;         // links with a client attached
+};
+
+// Modes switched from the link (Ap/Ag, AG/AT, Ad/Af).
+struct ModeRequest {
+  bool pan_tilt = false;        // pan-tilt scanning on
+  bool gate = false;            // passage finder on
+  bool doors = false;           // door crossing on
+  std::uint32_t seq = 0;        // bumped on every change
 };
 
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
 struct Blackboard {
   Topic<Heartbeat, HeartbeatModule> heartbeat;
+  // serial (command links)
+  Topic<MotionRequest, SerialModule> link_motion;
+  Topic<ServoRequest, SerialModule> servo_request;
+  Topic<OdometrySet, SerialModule> odometry_set;
+  Topic<GoToRequest, SerialModule> go_to;
+  Topic<UltrasonicSettings, SerialModule> us_settings;
+  Topic<LinkStatus, SerialModule> link_status;
+  Topic<ModeRequest, SerialModule> modes;
+  // us (ultrasonic ring)
+  Topic<UltrasonicRanges, UltrasonicModule> ranges;
+  Topic<UltrasonicTiming, UltrasonicModule> us_timing;
+  // emergency
+  Topic<EmergencyState, EmergencyModule> emergency;
+  Topic<MotionCommand, EmergencyModule> motion_command;
+  Topic<SonarSelection, EmergencyModule> sonar_selection;
+  // executor
+  Topic<Posture, ExecutorModule> posture;
+  Topic<MotionRequest, ExecutorModule> go_to_motion;
 };
 
 }  // namespace robuter

@@ -183,6 +183,51 @@ TEST(Scheduler, ADescriptorThatStaysReadableCannotStarveTheTick) {
   close(p[1]);
 }
 
+TEST(Scheduler, TriggeredProcessRunsInTheSameTickAfterItsProducer) {
+  VirtualClock clock;
+  Kernel k(clock, kTick);
+  std::vector<std::string> j;
+  Recorder exec("execute", &j), emerg("emergency", &j);
+  struct Sensors : Process {
+    Process* consumer = nullptr;
+    std::vector<std::string>* journal = nullptr;
+    void run(Kernel& kk) override {
+      journal->push_back("sensors");
+      kk.trigger(consumer);
+    }
+  } sensors;
+  sensors.consumer = &emerg;
+  sensors.journal = &j;
+  // The seed's table: emergency and execute are not due at tick 6 when sensors read.
+  const ProcessRow rows[] = {{"read_sensors", &sensors, 4, 2, 2, 1000}, {"execute", &exec, 10, 2, 4, 1000},
+                             {"emergency", &emerg, 10, 4, 5, 1000}};
+  ASSERT_FALSE(k.set_table(rows));
+  ASSERT_TRUE(k.start());
+  for (int i = 0; i < 6; ++i) k.step();
+  j.clear();
+  k.step();  // tick 6
+  EXPECT_EQ(j, (std::vector<std::string>{"sensors", "emergency"}));
+  EXPECT_EQ(emerg.ticks.back(), 6u);
+  EXPECT_EQ(k.stats(2).event_activations, 2u);  // ticks 2 and 6
+}
+
+TEST(Scheduler, TriggersAreBoundedPerTick) {
+  VirtualClock clock;
+  Kernel k(clock, kTick);
+  struct Loop : Process {
+    int runs = 0;
+    void run(Kernel& kk) override {
+      ++runs;
+      kk.trigger(this);  // would run forever without the bound
+    }
+  } loop;
+  const ProcessRow rows[] = {{"loop", &loop, 1, 0, 1, 1000}};
+  ASSERT_FALSE(k.set_table(rows));
+  ASSERT_TRUE(k.start());
+  k.step();
+  EXPECT_EQ(loop.runs, 1 + Kernel::kMaxTriggersPerTick);
+}
+
 // Each bad row is refused with a message that says what is wrong.
 TEST(Scheduler, TableValidationRefusesBadRows) {
   VirtualClock clock;

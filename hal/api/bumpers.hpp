@@ -1,0 +1,15 @@
+// HAL: contact bumpers.
+#pragma once
+
+#include <cstdint>
+
+namespace robuter::hal {
+
+class Bumpers {
+ public:
+  virtual ~Bumpers() = default;
+  // Bit i set = bumper i pressed; 0 = no contact.
+  virtual std::uint32_t pressed() const = 0;
+};
+
+}  // namespace robuter::hal

@@ -1,0 +1,34 @@
+// HAL: a byte stream (command link or pan-tilt port): non-blocking, with a descriptor to wait on.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace robuter::hal {
+
+// Result of a read or write: bytes moved, or what stopped it.
+struct IoResult {
+  std::size_t bytes = 0;   // bytes read or written
+  bool closed = false;     // the peer went away (EOF, hang-up, device removed)
+};
+
+class ByteStream {
+ public:
+  virtual ~ByteStream() = default;
+  // A short name for logs ("pty /tmp/robuter.pty", "serial /dev/ttyUSB0").
+  virtual const char* name() const = 0;
+  // Descriptor that becomes readable when bytes arrive, or -1 when none (closed).
+  virtual int fd() const = 0;
+  // Reads what is available now, never blocks.
+  virtual IoResult read(std::span<std::uint8_t> out) = 0;
+  // Writes what fits now, never blocks.
+  virtual IoResult write(std::span<const std::uint8_t> in) = 0;
+  // Called periodically while closed: tries to become usable again (client reattached,
+  // device back). True when usable.
+  virtual bool reopen() = 0;
+  // True while a peer is attached and the stream is usable.
+  virtual bool connected() const = 0;
+};
+
+}  // namespace robuter::hal

@@ -1,0 +1,34 @@
+// HAL: the ultrasonic ring — nodes of four sensors fired single-shot, ranges read back.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace robuter::hal {
+
+inline constexpr int kSonarNodes = 6;          // nodes on the ring
+inline constexpr int kSensorsPerNode = 4;      // sensors per node
+inline constexpr int kRingSensors = 24;        // sensors on the ring
+inline constexpr int kPanTiltChannel = 7;      // channel of the pan-tilt's two sonars (seed)
+
+// Ranges of one node's four sensors, mm; 0 = inactive or no echo within the time-out.
+using NodeRanges = std::array<std::uint16_t, kSensorsPerNode>;
+
+// Sensor number 1..24 ↔ (node 0..5, index 0..3). Sensor 1 looks forward; numbers run clockwise.
+constexpr int sensor_node(int sensor) { return (sensor - 1) / kSensorsPerNode; }
+constexpr int sensor_index(int sensor) { return (sensor - 1) % kSensorsPerNode; }
+constexpr int sensor_number(int node, int index) { return node * kSensorsPerNode + index + 1; }
+
+class SonarRing {
+ public:
+  virtual ~SonarRing() = default;
+  // Echo time-out (ms) and speed of sound (m/s) used to turn echo times into ranges.
+  virtual void configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) = 0;
+  // Fires the sensors of `mask` (bit i = index i) on `node` (0..5, or kPanTiltChannel with
+  // mask bits 0 and 1 for the pan-tilt's two sonars). False if the node is busy or absent.
+  virtual bool fire(int node, std::uint8_t mask) = 0;
+  // The ranges of the last firing of `node` once its time-out has passed; false until then.
+  virtual bool read(int node, NodeRanges& out) = 0;
+};
+
+}  // namespace robuter::hal
