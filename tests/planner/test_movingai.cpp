@@ -71,7 +71,7 @@ TEST(MovingAiFiles, ScenarioParsing) {
 }
 
 // Why: answers every `stride`-th scenario of every map; returns how many were checked.
-int check_maps(int stride, SearchMode mode) {
+int check_maps(int stride, SearchMode mode, GridSearch::Engine engine = GridSearch::Engine::Auto) {
   int checked = 0;
   for (const char* name : kMaps) {
     const std::string dir = ROBUTER_MOVINGAI_DIR;
@@ -82,6 +82,7 @@ int check_maps(int stride, SearchMode mode) {
     PassGrid grid;
     pass_grid_from_map(*map, grid);
     GridSearch search(grid.width, grid.height);
+    search.set_engine(engine);
     for (std::size_t i = 0; i < scen->size(); i += static_cast<std::size_t>(stride)) {
       const Scenario& s = (*scen)[i];
       const PlanResult r = search.find(grid, s.start, s.goal, mode);
@@ -97,7 +98,9 @@ int check_maps(int stride, SearchMode mode) {
 }
 
 TEST(MovingAi, OptimalLengthsOnASubsetOfEveryMap) {
-  EXPECT_GT(check_maps(23, SearchMode::Optimal), 100);
+  EXPECT_GT(check_maps(23, SearchMode::Optimal), 100);  // jump points on these maps
+  EXPECT_GT(check_maps(31, SearchMode::Optimal, GridSearch::Engine::Buckets), 80);
+  EXPECT_GT(check_maps(61, SearchMode::Optimal, GridSearch::Engine::Heap), 40);
 }
 
 TEST(MovingAi, BfsPathsAreValidAndNeverShorter) {
@@ -109,6 +112,7 @@ TEST(MovingAi, OptimalLengthsOnEveryScenario) {
   const char* full = std::getenv("ROBUTER_PLANNER_FULL");
   if (!full || std::string(full) != "1") GTEST_SKIP() << "set ROBUTER_PLANNER_FULL=1 to run all 2,690";
   EXPECT_EQ(check_maps(1, SearchMode::Optimal), 2690);
+  EXPECT_EQ(check_maps(1, SearchMode::Optimal, GridSearch::Engine::Buckets), 2690);
 }
 
 TEST(MovingAi, GoalOutsideTheMap) {

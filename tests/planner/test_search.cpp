@@ -128,6 +128,51 @@ TEST(GridSearch, UnknownCellsFreeByDefaultCostlyOnRequest) {
   EXPECT_LT(detour.cost, 3.0 * 6.0);
 }
 
+TEST(GridSearch, EnginesAgreeWithUnknownCosts) {
+  // Buckets (moderate unknown cost) and the heap (huge unknown cost) against each other and
+  // against a field computed by Dijkstra from the goal.
+  std::mt19937 rng(9);
+  const int w = 40, h = 25;
+  PassGrid g(w, h);
+  std::uniform_int_distribution<int> pick(0, 9);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int c = pick(rng);
+      g.set({x, y}, c < 2 ? kBlocked : c < 5 ? kUnknown : kFree);
+    }
+  g.set({0, 0}, kFree);
+  GridSearch s(w, h);
+  for (double u : {1.0, 1.7, 3.0, 1e4}) {
+    const CostModel costs{u};
+    for (int y = 0; y < h; y += 3)
+      for (int x = 0; x < w; x += 3) {
+        if (g.at({x, y}) == kBlocked) continue;
+        s.set_engine(GridSearch::Engine::Heap);
+        const PlanResult a = s.find(g, {0, 0}, {x, y}, SearchMode::Optimal, costs);
+        s.set_engine(GridSearch::Engine::Auto);
+        const PlanResult b = s.find(g, {0, 0}, {x, y}, SearchMode::Optimal, costs);
+        ASSERT_EQ(a.status, b.status);
+        if (a.found()) {
+          EXPECT_NEAR(a.cost, b.cost, 1e-9 * a.cost) << u << " " << x << "," << y;
+        }
+      }
+  }
+}
+
+TEST(GridSearch, AutoPicksJumpPointsForWallsBucketsForScatteredCells) {
+  PassGrid rooms(64, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) rooms.set({x, y}, (x % 16 == 0 && y % 8 != 4) ? kBlocked : kFree);
+  PassGrid random(64, 64);
+  std::mt19937 rng(1);
+  std::bernoulli_distribution b(0.2);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) random.set({x, y}, b(rng) ? kBlocked : kFree);
+  GridSearch s(64, 64);
+  EXPECT_LT(s.scattered_fraction(rooms), GridSearch::kScatteredLimit);
+  EXPECT_GT(s.scattered_fraction(random), GridSearch::kScatteredLimit);
+}
+
 TEST(GridSearch, AStarMatchesDijkstraOnRandomGrids) {
   // Reference: plain Dijkstra (A* with h = 0 is not exposed; use BFS-free brute force).
   std::mt19937 rng(7);
@@ -158,19 +203,23 @@ TEST(GridSearch, AStarMatchesDijkstraOnRandomGrids) {
       }
     }
     GridSearch s(w, h);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        if (g.at({x, y}) == kBlocked) continue;
-        const PlanResult r = s.find(g, {0, 0}, {x, y}, SearchMode::Optimal);
-        const double ref = d[g.index({x, y})];
-        if (ref >= 1e17) {
-          EXPECT_EQ(r.status, PlanStatus::Unreachable);
-        } else {
-          ASSERT_TRUE(r.found());
-          EXPECT_NEAR(r.length, ref, 1e-9);
-          expect_legal(g, s.path());
+    for (auto engine : {GridSearch::Engine::Auto, GridSearch::Engine::JumpPoints,
+                        GridSearch::Engine::Buckets, GridSearch::Engine::Heap}) {
+      s.set_engine(engine);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          if (g.at({x, y}) == kBlocked) continue;
+          const PlanResult r = s.find(g, {0, 0}, {x, y}, SearchMode::Optimal);
+          const double ref = d[g.index({x, y})];
+          if (ref >= 1e17) {
+            EXPECT_EQ(r.status, PlanStatus::Unreachable);
+          } else {
+            ASSERT_TRUE(r.found());
+            EXPECT_NEAR(r.length, ref, 1e-9) << static_cast<int>(engine);
+            expect_legal(g, s.path());
+          }
         }
-      }
+    }
   }
 }
 

@@ -16,10 +16,12 @@ void GridSearch::reserve(int width, int height) {
     next_.resize(stored);
     prev_.resize(stored);
     queue_.resize(stored);
+    from_.resize(stored);
     gen_ = 0;
   }
   open_.reserve(stored);
   head_.reserve(4096);
+  samples_.reserve(kSamples);
   path_.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) + 1);
 }
 
@@ -44,9 +46,56 @@ PlanResult GridSearch::find(const PassGrid& grid, Cell start, Cell goal, SearchM
   const std::uint32_t s = grid.index(start);
   const std::uint32_t t = grid.index(goal);
   if (mode == SearchMode::Bfs) return bfs(grid, s, t, costs);
+  const bool uniform = costs.unknown_cost <= 1.0;
   const double widest = 2.0 * kSqrt2 * std::max(1.0, costs.unknown_cost);
-  if (widest / kBucketWidth + 4.0 <= 4096.0) return astar_buckets(grid, s, t, costs);
+  const bool ring_ok = widest / kBucketWidth + 4.0 <= 4096.0;
+  switch (engine_) {
+    case Engine::JumpPoints:
+      if (uniform) return astar_jps(grid, s, t, costs);
+      break;
+    case Engine::Buckets:
+      if (ring_ok) return astar_buckets(grid, s, t, costs);
+      break;
+    case Engine::Heap:
+      return astar(grid, s, t, costs);
+    case Engine::Auto:
+      if (uniform && scattered_fraction(grid) < kScatteredLimit) return astar_jps(grid, s, t, costs);
+      break;
+  }
+  if (ring_ok) return astar_buckets(grid, s, t, costs);
   return astar(grid, s, t, costs);
+}
+
+// Why: the sample positions depend only on the grid size: computed once per size.
+void GridSearch::sample_cells(const PassGrid& grid) {
+  if (sample_width_ == grid.width && sample_height_ == grid.height) return;
+  sample_width_ = grid.width;
+  sample_height_ = grid.height;
+  const auto cells = static_cast<std::uint64_t>(grid.width) * static_cast<std::uint64_t>(grid.height);
+  const std::uint64_t n = std::min<std::uint64_t>(cells, kSamples);
+  samples_.clear();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    // Evenly spread, deterministic positions (golden-ratio stride through the cells).
+    const std::uint64_t c = n == cells ? k : (k * 0x9E3779B97F4A7C15ull >> 11) % cells;
+    samples_.push_back(grid.index({static_cast<int>(c % static_cast<std::uint64_t>(grid.width)),
+                                   static_cast<int>(c / static_cast<std::uint64_t>(grid.width))}));
+  }
+}
+
+double GridSearch::scattered_fraction(const PassGrid& grid) {
+  sample_cells(grid);
+  const std::uint8_t* cls = grid.cls.data();
+  const auto sn = static_cast<std::uint32_t>(grid.stride);
+  int blocked = 0;
+  int scattered = 0;
+  for (const std::uint32_t i : samples_) {
+    if (cls[i] != kBlocked) continue;
+    ++blocked;
+    const int walls = (cls[i + 1] == kBlocked) + (cls[i - 1] == kBlocked) +
+                      (cls[i + sn] == kBlocked) + (cls[i - sn] == kBlocked);
+    scattered += walls <= 1 ? 1 : 0;
+  }
+  return blocked == 0 ? 0.0 : static_cast<double>(scattered) / blocked;
 }
 
 // Why: the fallback for very uneven costs. Octile h is consistent, so a node is final when
