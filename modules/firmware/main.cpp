@@ -1,49 +1,39 @@
-// robuterd: parses the command line and configuration, composes the modules and runs the kernel.
+// robuterd: parses the command line and configuration, composes the firmware and runs it.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <memory>
 
-#include "kernel/clock.hpp"
 #include "kernel/config.hpp"
-#include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 #include "kernel/realtime.hpp"
-#include "modules/firmware/process_table.hpp"
-#include "modules/heartbeat/heartbeat.hpp"
-#include "modules/topics.hpp"
+#include "modules/firmware/firmware.hpp"
 
 namespace {
-
 constexpr int kExitOk = 0;       // clean stop
 constexpr int kExitRuntime = 1;  // a module could not start
-constexpr int kExitUsage = 2;    // bad command line or configuration
-
-// Stops the kernel after a fixed number of ticks (--ticks), for scripts and measurements.
-class TickLimit final : public robuter::Process {
- public:
-  explicit TickLimit(std::uint64_t ticks) : ticks_(ticks) {}
-  void run(robuter::Kernel& k) override {
-    if (k.tick() + 1 >= ticks_) k.request_stop();
-  }
-
- private:
-  std::uint64_t ticks_;  // ticks to run, then stop
-};
-
+constexpr int kExitUsage = 2;    // bad command line, configuration or world
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace robuter;
   CLI::App app{"robuterd — command server firmware for a Robuter differential-drive robot"};
-  std::string config_path;
+  std::string config_path, log_level, speed = "1";
   bool stats = false, check_only = false, version = false;
-  std::uint64_t ticks = 0;
-  std::string log_level;
+  FirmwareOptions opt;
   app.add_option("-c,--config", config_path, "robot configuration file (TOML); defaults are the seed's constants");
+  app.add_flag("--sim", opt.sim, "run on the simulated robot (SITL)");
+  app.add_option("--world", opt.sim_options.world_file, "simulated world (.toml project format or seed-000 .env); default: the lab");
+  app.add_option("--speed", speed, "simulation speed: N simulated seconds per second, or 'max'");
+  app.add_option("--seed", opt.sim_options.seed, "seed of every random source of the simulator");
+  app.add_flag("--odometry-noise", opt.sim_options.odometry_noise, "simulate encoder noise and wheel slip");
+  app.add_flag("--sonar-noise", opt.sim_options.sonar_noise, "simulate sonar noise, drop-outs and spurious echoes");
+  app.add_option("--pty", opt.ptys, "serve a link on a new pty; PATH becomes a symbolic link to it (repeatable)");
+  app.add_option("--serial", opt.serial_device, "serve a link on a serial device (8N1)");
+  app.add_option("--baud", opt.baud, "serial link rate, bit/s");
+  app.add_flag("--stdio", opt.stdio, "serve a link on standard input/output");
   app.add_flag("--stats", stats, "print per-process statistics and tick lateness at exit");
-  app.add_option("--ticks", ticks, "stop after this many ticks (0: run until stopped)");
+  app.add_option("--ticks", opt.ticks, "stop after this many ticks (0: run until stopped)");
   app.add_option("--log-level", log_level, "debug, info, warn, error or off (overrides the configuration)");
   app.add_flag("--check-config", check_only, "validate the configuration and exit");
   app.add_flag("--version", version, "print the version and exit");
@@ -55,6 +45,16 @@ int main(int argc, char** argv) {
   if (version) {
     fmt::print("robuterd {}\n", ROBUTER_VERSION);
     return kExitOk;
+  }
+  if (speed == "max") {
+    opt.speed = 0.0;
+  } else {
+    char* end = nullptr;
+    opt.speed = std::strtod(speed.c_str(), &end);
+    if (end == speed.c_str() || *end != '\0' || !(opt.speed > 0.0) || opt.speed > 1e6) {
+      fmt::print(stderr, "robuterd: --speed '{}': expected a positive number or 'max'\n", speed);
+      return kExitUsage;
+    }
   }
 
   Config cfg;
@@ -71,37 +71,31 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   log::set_level(level);
+  if (check_only) opt.sim = true;  // validate the table as the simulator would compose it
 
   // Start-up: everything is allocated here, before the periodic path runs.
-  static Blackboard bb;
-  static HeartbeatModule heartbeat(bb);
-  const NamedProcess modules[] = {{"heartbeat", &heartbeat}};
-  std::vector<ProcessRow> table;
-  if (auto err = build_table(cfg, modules, table)) {
-    fmt::print(stderr, "robuterd: configuration error: {}\n", *err);
-    return kExitUsage;
-  }
-  static TickLimit limit(ticks);
-  if (ticks > 0) table.push_back(ProcessRow{"ticklimit", &limit, 1, 0, 0, 1000});
-
-  RealClock clock;
-  Kernel kernel(clock, static_cast<Nanos>(cfg.kernel.tick_us) * kNanosPerMicro);
-  if (auto err = kernel.set_table(table)) {
-    fmt::print(stderr, "robuterd: process table error: {}\n", *err);
+  Firmware fw(cfg, opt);
+  if (auto err = fw.setup()) {
+    fmt::print(stderr, "robuterd: {}\n", *err);
     return kExitUsage;
   }
   if (check_only) {
-    fmt::print("robuterd: configuration {} is valid ({} processes)\n", cfg.source, table.size());
+    fmt::print("robuterd: configuration {} is valid ({} processes)\n", cfg.source, fw.kernel().process_count());
     return kExitOk;
   }
+  for (std::size_t i = 0; i < opt.ptys.size(); ++i) {
+    fmt::print("robuterd: link on {} -> {}\n", opt.ptys[i], fw.pty_slaves()[i]);
+  }
+  std::fflush(stdout);
 
   log::start(stderr);
   apply_realtime(cfg.kernel);
   Kernel::install_signal_handlers();
-  log::info("robuterd {} starting: tick {} µs, {} processes", ROBUTER_VERSION, cfg.kernel.tick_us, table.size());
-  const int status = kernel.run();
-  log::info("robuterd stopped after {} ticks", kernel.tick());
+  log::info("robuterd {} starting: tick {} µs, {} processes{}", ROBUTER_VERSION, cfg.kernel.tick_us,
+            fw.kernel().process_count(), opt.sim ? ", simulated robot" : "");
+  const int status = fw.run();
+  log::info("robuterd stopped after {} ticks", fw.kernel().tick());
   log::stop();
-  if (stats) kernel.print_stats(stdout);
+  if (stats) fw.kernel().print_stats(stdout);
   return status == 0 ? kExitOk : kExitRuntime;
 }

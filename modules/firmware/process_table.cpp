@@ -12,7 +12,9 @@ namespace {
 // name, period, offset, priority, budget_us. Seed: read_sensors 4/6 prio 2, serial_spy 2/0
 // prio 3, execute 10/2 prio 4, emergency 10/4 prio 5 (higher runs first in a shared tick).
 constexpr DefaultRow kDefaults[] = {
-    {"heartbeat", 100, 0, 1, 1000},
+    {"sim", 1, 0, 99, 5000},        // simulated world (SITL only): first in every tick
+    {"serial", 2, 0, 3, 2000},      // command links (seed serial_spy 2, 3, 0)
+    {"heartbeat", 100, 0, 1, 1000}, // proof of life, once a second
 };
 }  // namespace
 
@@ -46,6 +48,7 @@ std::optional<std::string> build_table(const Config& cfg, std::span<const NamedP
     ProcessRow r{d.name, nullptr, d.period, d.offset, d.priority, d.budget_us};
     for (const auto& m : modules)
       if (std::strcmp(m.name, d.name) == 0) r.process = m.process;
+    if (r.process == nullptr) continue;  // not composed in this run (e.g. "sim" on hardware)
     for (const auto& o : cfg.processes) {
       if (o.name != d.name) continue;
       if (o.period) r.period = *o.period;

@@ -29,7 +29,7 @@ struct NamedProcess {
   Process* process;
 };
 
-// Builds the table: the default rows whose module is enabled, with the configuration's
+// Builds the table: the default rows whose module is enabled and composed, with the configuration's
 // overrides applied. Returns a message naming file, line and key on a bad override.
 std::optional<std::string> build_table(const Config& cfg, std::span<const NamedProcess> modules,
                                        std::vector<ProcessRow>& out);

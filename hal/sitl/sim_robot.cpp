@@ -1,0 +1,120 @@
+// The simulated robot behind the HAL: world loading, physics stepping, firing timing of the ring.
+#include "hal/sitl/sim_robot.hpp"
+
+#include <cmath>
+
+#include "hal/sim/world_io.hpp"
+
+namespace robuter::hal {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+SimRobot::SimRobot(const Config& cfg, const SimOptions& opt) : rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
+  sim::RobotGeometry geom;
+  geom.length = cfg.robot.length_mm / 1000.0;
+  geom.width = cfg.robot.width_mm / 1000.0;
+  geom.wheel_base = cfg.robot.wheel_base_mm / 1000.0;
+  const std::string file = opt.world_file.empty() ? std::string(ROBUTER_DEFAULT_WORLD) : opt.world_file;
+  auto loaded = sim::load_world(file, geom);
+  if (!loaded) {
+    error_ = "world: " + loaded.error().describe();
+    return;
+  }
+  world_ = std::make_unique<sim::World>(std::move(loaded).value());
+  sim::RobotParams params;
+  params.geometry = geom;
+  params.limits.max_wheel_speed = cfg.robot.max_speed_cm_s / 100.0;
+  params.limits.max_accel = cfg.robot.max_accel_cm_s2 / 100.0;
+  params.limits.max_decel = 2.0 * params.limits.max_accel;
+  if (opt.odometry_noise) {
+    params.odometry.noise = 0.002;
+    params.odometry.scale_left = 0.002;
+    params.odometry.scale_right = -0.002;
+    params.odometry.slip_sigma = 0.002;
+  }
+  params.odometry.seed = opt.seed;
+  robot_ = std::make_unique<sim::Robot>(*world_, params, world_->start.value_or(sim::Pose{}));
+  robot_->set_odometry(sim::Pose{});  // odometry starts at 0,0,0 like the real robot's
+  sim::SonarParams sp = sim::default_ring_params();
+  sp.timeout = cfg.sonar.timeout_ms / 1000.0;
+  sp.sound_speed = cfg.sonar.sound_speed_m_s;
+  if (opt.sonar_noise) {
+    sp.noise_sigma = 0.01;
+    sp.dropout_probability = 0.01;
+    sp.spurious_probability = 0.002;
+  }
+  sonar_ = std::make_unique<sim::SonarModel>(*world_, sp);
+  layout_ = sim::default_ring_layout();
+}
+
+void SimRobot::advance_to(double t_s) {
+  if (!robot_ || t_s <= time_) return;
+  robot_->step(t_s - time_);
+  time_ = t_s;
+}
+
+void SimDrive::set_servo(bool on) {
+  r_.servo_ = on;
+  if (!on) {
+    r_.left_ = r_.right_ = 0;
+    r_.robot_->command_cm_s(0, 0);
+  }
+}
+
+bool SimDrive::servo() const { return r_.servo_; }
+
+void SimDrive::command_wheels(std::int32_t left_cm_s, std::int32_t right_cm_s) {
+  if (!r_.servo_) return;
+  r_.left_ = left_cm_s;
+  r_.right_ = right_cm_s;
+  r_.robot_->command_cm_s(left_cm_s, right_cm_s);
+}
+
+void SimDrive::commanded(std::int32_t& left_cm_s, std::int32_t& right_cm_s) const {
+  left_cm_s = r_.left_;
+  right_cm_s = r_.right_;
+}
+
+Odometry SimDrive::odometry() const {
+  const sim::Pose& p = r_.robot_->odometry();
+  return {p.x, p.y, sim::wrap_angle(p.theta)};
+}
+
+void SimDrive::set_odometry(const Odometry& o) { r_.robot_->set_odometry(sim::Pose{o.x_m, o.y_m, o.theta_rad}); }
+
+void SimSonarRing::configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) {
+  sim::SonarParams p = r_.sonar_->params();
+  p.timeout = timeout_ms / 1000.0;
+  p.sound_speed = sound_speed_m_s;
+  r_.sonar_->set_params(p);
+}
+
+bool SimSonarRing::fire(int node, std::uint8_t mask) {
+  if (node < 0 || node >= kSonarNodes) return false;  // the pan-tilt channel is the PTU emulator's
+  auto& f = r_.firings_[static_cast<std::size_t>(node)];
+  f.pending = true;
+  f.mask = mask;
+  f.ready_s = r_.time_ + r_.sonar_->params().timeout;
+  return true;
+}
+
+bool SimSonarRing::read(int node, NodeRanges& out) {
+  if (node < 0 || node >= kSonarNodes) return false;
+  auto& f = r_.firings_[static_cast<std::size_t>(node)];
+  if (!f.pending || r_.time_ + 1e-9 < f.ready_s) return false;
+  f.pending = false;
+  for (int i = 0; i < kSensorsPerNode; ++i) {
+    out[static_cast<std::size_t>(i)] = 0;
+    if (!(f.mask & (1u << i))) continue;
+    const auto& mount = r_.layout_[static_cast<std::size_t>(sensor_number(node, i) - 1)];
+    const double m = r_.sonar_->measure(r_.robot_->pose(), mount, r_.sonar_noise_ ? &r_.rng_ : nullptr);
+    out[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(std::lround(std::max(0.0, m) * 1000.0));
+  }
+  return true;
+}
+
+std::uint32_t SimBumpers::pressed() const { return r_.robot_->bumper() ? 1u : 0u; }
+
+}  // namespace robuter::hal

@@ -1,0 +1,113 @@
+// SITL backend: the HAL's drive, ultrasonic ring and bumpers implemented on the simulated Robuter.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "hal/api/bumpers.hpp"
+#include "hal/api/drive.hpp"
+#include "hal/api/sonar_ring.hpp"
+#include "hal/sim/robot.hpp"
+#include "hal/sim/sonar.hpp"
+#include "hal/sim/sonar_layout.hpp"
+#include "hal/sim/world.hpp"
+#include "kernel/config.hpp"
+
+namespace robuter::hal {
+
+// Everything the simulated robot needs, chosen on the command line or in tests.
+struct SimOptions {
+  std::string world_file;        // world to load; empty = the default lab
+  std::uint64_t seed = 1;        // seed of every random source
+  bool odometry_noise = false;   // encoder noise and slip on
+  bool sonar_noise = false;      // range noise, drop-outs and spurious echoes on
+};
+
+class SimRobot;
+
+// The drive: servo, wheel set-points, odometry (the simulated encoders).
+class SimDrive final : public Drive {
+ public:
+  explicit SimDrive(SimRobot& r) : r_(r) {}
+  void set_servo(bool on) override;
+  bool servo() const override;
+  void command_wheels(std::int32_t left_cm_s, std::int32_t right_cm_s) override;
+  void commanded(std::int32_t& left_cm_s, std::int32_t& right_cm_s) const override;
+  Odometry odometry() const override;
+  void set_odometry(const Odometry& o) override;
+  DriveHealth health() const override { return DriveHealth::ok; }
+
+ private:
+  SimRobot& r_;
+};
+
+// The ring: nodes fire single-shot; results are ready a time-out after firing.
+class SimSonarRing final : public SonarRing {
+ public:
+  explicit SimSonarRing(SimRobot& r) : r_(r) {}
+  void configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) override;
+  bool fire(int node, std::uint8_t mask) override;
+  bool read(int node, NodeRanges& out) override;
+
+ private:
+  SimRobot& r_;
+};
+
+class SimBumpers final : public Bumpers {
+ public:
+  explicit SimBumpers(SimRobot& r) : r_(r) {}
+  std::uint32_t pressed() const override;
+
+ private:
+  SimRobot& r_;
+};
+
+// The simulated robot in its world; stepped by the kernel's clock through SimStepper.
+class SimRobot {
+ public:
+  // Loads the world and builds the robot at the world's start pose; error() says why not.
+  SimRobot(const Config& cfg, const SimOptions& opt);
+
+  const std::optional<std::string>& error() const { return error_; }
+  // Advances the simulation to time `t_s` (seconds of the kernel clock).
+  void advance_to(double t_s);
+
+  SimDrive& drive() { return drive_; }
+  SimSonarRing& ring() { return ring_; }
+  SimBumpers& bumpers() { return bumpers_; }
+  const sim::World& world() const { return *world_; }
+  sim::Robot& robot() { return *robot_; }
+  const sim::RingLayout& layout() const { return layout_; }
+  double time() const { return time_; }
+
+ private:
+  friend class SimDrive;
+  friend class SimSonarRing;
+  friend class SimBumpers;
+
+  // A node's firing in progress.
+  struct Firing {
+    bool pending = false;      // fired, results not yet taken
+    double ready_s = 0.0;      // simulated time the results are ready, s
+    std::uint8_t mask = 0;     // sensors fired, bit i = index i
+  };
+
+  std::optional<std::string> error_;       // why the robot could not be built
+  std::unique_ptr<sim::World> world_;      // obstacles
+  std::unique_ptr<sim::Robot> robot_;      // body, drive, odometry
+  std::unique_ptr<sim::SonarModel> sonar_; // ring sonar model
+  sim::RingLayout layout_{};               // mounts of sensors 1..24
+  sim::Rng rng_{1};                        // sonar noise source
+  bool sonar_noise_ = false;               // apply noise to ring readings
+  bool servo_ = false;                     // servo on
+  std::int32_t left_ = 0, right_ = 0;      // set-points accepted, cm/s
+  std::array<Firing, kSonarNodes + 2> firings_{};  // per node (and the pan-tilt channel)
+  double time_ = 0.0;                      // simulated time, s
+  SimDrive drive_{*this};
+  SimSonarRing ring_{*this};
+  SimBumpers bumpers_{*this};
+};
+
+}  // namespace robuter::hal

@@ -1,0 +1,85 @@
+// Composition of the firmware from options and configuration; everything allocated here, once.
+#include "modules/firmware/firmware.hpp"
+
+#include <fmt/format.h>
+
+#include "hal/link/pty_link.hpp"
+#include "hal/link/serial_link.hpp"
+#include "hal/link/stdio_link.hpp"
+#include "hal/sitl/sim_stepper.hpp"
+#include "modules/firmware/process_table.hpp"
+#include "modules/heartbeat/heartbeat.hpp"
+#include "modules/serial/serial_module.hpp"
+
+namespace robuter {
+
+namespace {
+// Stops the kernel after a fixed number of ticks (--ticks), for scripts and measurements.
+class TickLimit final : public Process {
+ public:
+  explicit TickLimit(std::uint64_t ticks) : ticks_(ticks) {}
+  void run(Kernel& k) override {
+    if (k.tick() + 1 >= ticks_) k.request_stop();
+  }
+
+ private:
+  std::uint64_t ticks_;  // ticks to run, then stop
+};
+}  // namespace
+
+Firmware::Firmware(const Config& cfg, const FirmwareOptions& opt) : cfg_(cfg), opt_(opt) {}
+
+Firmware::~Firmware() = default;
+
+std::vector<std::string> Firmware::pty_slaves() const {
+  std::vector<std::string> out;
+  for (const auto& l : links_)
+    if (auto* p = dynamic_cast<const hal::PtyLink*>(l.get())) out.push_back(p->slave_name());
+  return out;
+}
+
+std::optional<std::string> Firmware::setup() {
+  if (!opt_.sim) return std::string("no hardware backend in this build yet: run with --sim");
+  if (opt_.speed == 0.0) clock_ = std::make_unique<VirtualClock>();
+  else if (opt_.speed == 1.0) clock_ = std::make_unique<RealClock>();
+  else clock_ = std::make_unique<ScaledClock>(opt_.speed);
+
+  sim_ = std::make_unique<hal::SimRobot>(cfg_, opt_.sim_options);
+  if (sim_->error()) return *sim_->error();
+
+  for (const auto& path : opt_.ptys) {
+    auto pty = std::make_unique<hal::PtyLink>(path);
+    if (pty->error()) return *pty->error();
+    links_.push_back(std::move(pty));
+  }
+  if (!opt_.serial_device.empty()) {
+    if (!hal::SerialLink::valid_baud(opt_.baud)) return fmt::format("--baud {}: not a supported rate", opt_.baud);
+    auto s = std::make_unique<hal::SerialLink>(opt_.serial_device, opt_.baud);
+    if (s->error()) return *s->error();
+    links_.push_back(std::move(s));
+  }
+  if (opt_.stdio) links_.push_back(std::make_unique<hal::StdioLink>());
+  std::vector<hal::ByteStream*> streams;
+  for (auto& l : links_) streams.push_back(l.get());
+
+  auto heartbeat = std::make_unique<HeartbeatModule>(bb_);
+  auto serial = std::make_unique<SerialModule>(bb_, cfg_, streams);
+  auto stepper = std::make_unique<hal::SimStepper>(*sim_);
+  const NamedProcess modules[] = {{"sim", stepper.get()}, {"heartbeat", heartbeat.get()}, {"serial", serial.get()}};
+  std::vector<ProcessRow> table;
+  if (auto err = build_table(cfg_, modules, table)) return err;
+  processes_.push_back(std::move(stepper));
+  processes_.push_back(std::move(heartbeat));
+  processes_.push_back(std::move(serial));
+  if (opt_.ticks > 0) {
+    processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
+    table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});
+  }
+  kernel_ = std::make_unique<Kernel>(*clock_, static_cast<Nanos>(cfg_.kernel.tick_us) * kNanosPerMicro);
+  if (auto err = kernel_->set_table(table)) return "process table: " + *err;
+  return std::nullopt;
+}
+
+int Firmware::run() { return kernel_->run(); }
+
+}  // namespace robuter

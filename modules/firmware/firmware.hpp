@@ -1,0 +1,64 @@
+// The whole firmware, composed: clock, HAL backend, links, modules, process table and kernel.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hal/api/byte_stream.hpp"
+#include "hal/sitl/sim_robot.hpp"
+#include "kernel/clock.hpp"
+#include "kernel/config.hpp"
+#include "kernel/kernel.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+class HeartbeatModule;
+class SerialModule;
+
+// How robuterd was asked to run (command line).
+struct FirmwareOptions {
+  bool sim = false;                   // run on the simulated robot
+  hal::SimOptions sim_options;        // world, seed, noise
+  double speed = 1.0;                 // simulated seconds per second; 0 = as fast as possible
+  std::vector<std::string> ptys;      // pty links to create (symbolic link paths)
+  std::string serial_device;          // serial link device, empty = none
+  unsigned baud = 9600;               // serial link rate, bit/s
+  bool stdio = false;                 // serve a link on standard input/output
+  std::uint64_t ticks = 0;            // stop after this many ticks (0 = run until stopped)
+};
+
+class Firmware {
+ public:
+  Firmware(const Config& cfg, const FirmwareOptions& opt);
+  ~Firmware();
+  Firmware(const Firmware&) = delete;
+  Firmware& operator=(const Firmware&) = delete;
+
+  // Builds backend, links, modules and table; the problem when something cannot start.
+  std::optional<std::string> setup();
+  // Runs until stopped; the exit status.
+  int run();
+
+  Kernel& kernel() { return *kernel_; }
+  Blackboard& blackboard() { return bb_; }
+  hal::SimRobot* sim() { return sim_.get(); }
+  // The virtual clock when running as fast as possible (tests step it), else null.
+  VirtualClock* virtual_clock() { return dynamic_cast<VirtualClock*>(clock_.get()); }
+  // Paths of the pty slaves created, in the order of FirmwareOptions::ptys.
+  std::vector<std::string> pty_slaves() const;
+
+ private:
+  Config cfg_;
+  FirmwareOptions opt_;
+  Blackboard bb_;
+  std::unique_ptr<Clock> clock_;
+  std::unique_ptr<hal::SimRobot> sim_;
+  std::vector<std::unique_ptr<hal::ByteStream>> links_;
+  std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
+  std::unique_ptr<Kernel> kernel_;
+};
+
+}  // namespace robuter

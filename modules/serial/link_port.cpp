@@ -1,0 +1,227 @@
+// Each protocol request mapped onto the topic that carries it; reads from the owners' topics.
+#include "modules/serial/link_port.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "kernel/kernel.hpp"
+
+namespace robuter {
+
+using protocol::PortResult;
+
+LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
+    : w_(w),
+      posture_(bb.posture.reader()),
+      ranges_(bb.ranges.reader()),
+      timing_(bb.us_timing.reader()),
+      emergency_(bb.emergency.reader()),
+      cfg_(cfg) {}
+
+std::uint64_t LinkPort::tick() const { return kernel_ ? kernel_->tick() : 0; }
+
+bool LinkPort::latched() const { return emergency_.peek().latched; }
+
+protocol::Ticks LinkPort::clock() const noexcept { return static_cast<protocol::Ticks>(tick()); }
+
+protocol::Posture LinkPort::posture() const noexcept {
+  const Posture& p = posture_.peek();
+  return {p.x, p.y, p.theta};
+}
+
+bool LinkPort::servo_on() const noexcept { return posture_.peek().servo; }
+
+protocol::WheelSpeeds LinkPort::wheel_speeds() const noexcept {
+  return {posture_.peek().left, posture_.peek().right};
+}
+
+void LinkPort::ranges(protocol::Ranges& out) const noexcept {
+  const auto& mm = ranges_.peek().mm;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = mm[i];
+}
+
+std::int32_t LinkPort::us_timeout() const noexcept { return static_cast<std::int32_t>(w_.us.current().timeout_ms); }
+
+// The pan-tilt module will own the 72 sectors; until it runs, they read as zeros (no data).
+PortResult LinkPort::pan_tilt(protocol::SectorKind, protocol::Sectors& out) const noexcept {
+  out.fill(0);
+  return PortResult::ok;
+}
+
+std::int32_t LinkPort::node_delay() const noexcept {
+  return static_cast<std::int32_t>(w_.us.current().node_delay_ticks);
+}
+std::int32_t LinkPort::mean_node_time() const noexcept {
+  return static_cast<std::int32_t>(timing_.peek().mean_node_ticks);
+}
+std::int32_t LinkPort::mean_scan_time() const noexcept {
+  return static_cast<std::int32_t>(timing_.peek().mean_scan_ticks);
+}
+
+// AM: a request to the emergency module's gate, never to the motors.
+PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexcept {
+  const auto limit = static_cast<std::int32_t>(cfg_.robot.max_speed_cm_s);
+  if (std::abs(left) > limit || std::abs(right) > limit) return PortResult::out_of_range;
+  if (latched() && (left != 0 || right != 0)) return PortResult::refused_emergency;
+  const std::uint64_t t = tick();
+  w_.motion.modify([&](MotionRequest& m) {
+    m.left = left;
+    m.right = right;
+    ++m.seq;
+    m.tick = t;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_servo(bool on) noexcept {
+  if (on && latched()) return PortResult::refused_emergency;
+  w_.servo.modify([&](ServoRequest& s) {
+    s.on = on;
+    ++s.seq;
+  });
+  return PortResult::ok;
+}
+
+// AY: refused unless configured, and then only for an allow-listed prefix. This robot's
+// drives have no text controller behind them, so even an allowed line is not forwarded.
+PortResult LinkPort::pass_through(std::string_view line) noexcept {
+  if (!cfg_.permissions.pass_through) return PortResult::not_permitted;
+  const bool allowed = std::any_of(cfg_.permissions.pass_through_allow.begin(), cfg_.permissions.pass_through_allow.end(),
+                                   [&](const std::string& p) { return line.substr(0, p.size()) == p; });
+  return allowed ? PortResult::unavailable : PortResult::not_permitted;
+}
+
+PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
+  if (p.theta <= -18000 || p.theta > 18000) return PortResult::out_of_range;
+  w_.odometry.modify([&](OdometrySet& o) {
+    o.x = p.x;
+    o.y = p.y;
+    o.theta = p.theta;
+    ++o.seq;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
+  if (t.theta <= -18000 || t.theta > 18000) return PortResult::out_of_range;
+  if (latched()) return PortResult::refused_emergency;
+  w_.go_to.modify([&](GoToRequest& g) {
+    g.x = t.x;
+    g.y = t.y;
+    g.theta = t.theta;
+    g.active = true;
+    ++g.seq;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::request_shutdown() noexcept {
+  if (!cfg_.permissions.shutdown) return PortResult::not_permitted;
+  shutdown_ = true;
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_pan_tilt(bool on) noexcept {
+  w_.modes.modify([&](ModeRequest& m) {
+    m.pan_tilt = on;
+    ++m.seq;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_gate_finder(bool on) noexcept {
+  if (on && latched()) return PortResult::refused_emergency;
+  w_.modes.modify([&](ModeRequest& m) {
+    m.gate = on;
+    ++m.seq;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_door_crossing(bool on) noexcept {
+  if (on && latched()) return PortResult::refused_emergency;
+  w_.modes.modify([&](ModeRequest& m) {
+    m.doors = on;
+    ++m.seq;
+  });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_sensor_table(const protocol::SensorTable& active) noexcept {
+  w_.us.modify([&](UltrasonicSettings& s) { s.user_table = static_cast<std::uint32_t>(active.to_ulong()); });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_node_delay(std::int32_t ticks) noexcept {
+  if (ticks < 0 || ticks > 1000) return PortResult::out_of_range;
+  w_.us.modify([&](UltrasonicSettings& s) { s.node_delay_ticks = static_cast<std::uint32_t>(ticks); });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_us_timeout(std::int32_t ms) noexcept {
+  if (ms < 1 || ms > 1000) return PortResult::out_of_range;
+  w_.us.modify([&](UltrasonicSettings& s) { s.timeout_ms = static_cast<std::uint32_t>(ms); });
+  return PortResult::ok;
+}
+
+PortResult LinkPort::set_auto_toggle(bool on) noexcept {
+  w_.us.modify([&](UltrasonicSettings& s) { s.auto_toggle = on; });
+  return PortResult::ok;
+}
+
+void LinkPort::message_received() noexcept {
+  const std::uint64_t t = tick();
+  w_.status.modify([&](LinkStatus& s) { s.last_message_tick = t; });
+}
+
+void LinkPort::immediate_stop() noexcept {
+  w_.status.modify([](LinkStatus& s) { ++s.stop_seq; });
+}
+
+protocol::EmergencyStatus LinkPort::emergency() const noexcept {
+  const EmergencyState& e = emergency_.peek();
+  protocol::EmergencyStatus s;
+  s.held = e.held;
+  s.latched = e.latched;
+  s.enabled = e.enabled;
+  switch (e.cause) {
+    case EmergencyCause::none: s.cause = protocol::EmergencyCause::none; break;
+    case EmergencyCause::bumper: s.cause = protocol::EmergencyCause::bumper; break;
+    case EmergencyCause::obstacle: s.cause = protocol::EmergencyCause::obstacle; break;
+    case EmergencyCause::comm_loss: s.cause = protocol::EmergencyCause::comm_loss; break;
+    case EmergencyCause::stop_byte: s.cause = protocol::EmergencyCause::stop_byte; break;
+    default: s.cause = protocol::EmergencyCause::other; break;
+  }
+  return s;
+}
+
+// XR: asks the emergency module to clear a latched emergency (it does only if the cause is gone).
+PortResult LinkPort::reenable() noexcept {
+  w_.status.modify([](LinkStatus& s) { ++s.reenable_seq; });
+  return PortResult::ok;
+}
+
+protocol::KernelFigures LinkPort::kernel_figures() const noexcept {
+  protocol::KernelFigures f;
+  if (!kernel_) return f;
+  const std::size_t n = std::min(kernel_->process_count(), figures_.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const ProcessStats& s = kernel_->stats(i);
+    figures_[i] = {kernel_->row(i).name, s.activations, s.overruns, s.slips, s.mean_ns() / 1000, s.max_ns / 1000};
+  }
+  f.ticks = kernel_->tick();
+  f.max_late_us = static_cast<std::int64_t>(kernel_->lateness().max_us());
+  f.p99_late_us = static_cast<std::int64_t>(kernel_->lateness().quantile_us(0.99));
+  f.processes = std::span<const protocol::ProcessFigures>(figures_.data(), n);
+  return f;
+}
+
+std::string_view LinkPort::firmware_version() const noexcept { return ROBUTER_VERSION; }
+
+std::uint32_t LinkPort::features() const noexcept {
+  std::uint32_t f = protocol::kFeatureGoTo;
+  if (cfg_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
+  return f;
+}
+
+}  // namespace robuter

@@ -1,0 +1,85 @@
+// The protocol's RobotPort over the blackboards: what a command reads and which topic it writes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "kernel/config.hpp"
+#include "modules/topics.hpp"
+#include "protocol/codec/robot_port.hpp"
+
+namespace robuter {
+
+class Kernel;
+
+// The writable handles the serial module (the owner) lends to its port.
+struct LinkWriters {
+  Writer<MotionRequest> motion;
+  Writer<ServoRequest> servo;
+  Writer<OdometrySet> odometry;
+  Writer<GoToRequest> go_to;
+  Writer<UltrasonicSettings> us;
+  Writer<LinkStatus> status;
+  Writer<ModeRequest> modes;
+};
+
+class LinkPort final : public protocol::RobotPort {
+ public:
+  LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg);
+  // The kernel, for the clock and XK (set at init).
+  void attach(Kernel& k) { kernel_ = &k; }
+  // True once AX was accepted: the serial module flushes the ack, then stops the kernel.
+  bool shutdown_requested() const { return shutdown_; }
+
+  // reads
+  protocol::Ticks clock() const noexcept override;
+  protocol::Posture posture() const noexcept override;
+  bool servo_on() const noexcept override;
+  protocol::WheelSpeeds wheel_speeds() const noexcept override;
+  void ranges(protocol::Ranges& out) const noexcept override;
+  std::int32_t us_timeout() const noexcept override;
+  protocol::PortResult pan_tilt(protocol::SectorKind kind, protocol::Sectors& out) const noexcept override;
+  std::int32_t node_delay() const noexcept override;
+  std::int32_t mean_node_time() const noexcept override;
+  std::int32_t mean_scan_time() const noexcept override;
+  // requests
+  protocol::PortResult request_motion(std::int32_t left, std::int32_t right) noexcept override;
+  protocol::PortResult set_servo(bool on) noexcept override;
+  protocol::PortResult pass_through(std::string_view line) noexcept override;
+  protocol::PortResult set_odometry(const protocol::Posture& p) noexcept override;
+  protocol::PortResult go_to(const protocol::Posture& target) noexcept override;
+  protocol::PortResult request_shutdown() noexcept override;
+  protocol::PortResult set_pan_tilt(bool on) noexcept override;
+  protocol::PortResult set_gate_finder(bool on) noexcept override;
+  protocol::PortResult set_door_crossing(bool on) noexcept override;
+  protocol::PortResult set_sensor_table(const protocol::SensorTable& active) noexcept override;
+  protocol::PortResult set_node_delay(std::int32_t ticks) noexcept override;
+  protocol::PortResult set_us_timeout(std::int32_t ms) noexcept override;
+  protocol::PortResult set_auto_toggle(bool on) noexcept override;
+  // link events
+  void message_received() noexcept override;
+  void immediate_stop() noexcept override;
+  // extensions
+  protocol::EmergencyStatus emergency() const noexcept override;
+  protocol::PortResult reenable() noexcept override;
+  protocol::KernelFigures kernel_figures() const noexcept override;
+  std::string_view firmware_version() const noexcept override;
+  std::uint32_t features() const noexcept override;
+
+ private:
+  // True while an emergency is latched: requests to move are refused.
+  bool latched() const;
+  std::uint64_t tick() const;
+
+  LinkWriters w_;                          // topics the serial module owns
+  Reader<Posture> posture_;
+  Reader<UltrasonicRanges> ranges_;
+  Reader<UltrasonicTiming> timing_;
+  Reader<EmergencyState> emergency_;
+  const Config& cfg_;
+  Kernel* kernel_ = nullptr;
+  bool shutdown_ = false;                  // AX accepted
+  mutable std::array<protocol::ProcessFigures, protocol::kMaxKernelProcesses> figures_{};  // XK storage
+};
+
+}  // namespace robuter

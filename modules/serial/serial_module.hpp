@@ -1,0 +1,51 @@
+// The command-link process: reads every link, answers each complete line in order, never blocks.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "hal/api/byte_stream.hpp"
+#include "kernel/config.hpp"
+#include "kernel/process.hpp"
+#include "modules/serial/link_port.hpp"
+#include "modules/serial/output_ring.hpp"
+#include "modules/topics.hpp"
+#include "protocol/codec/link_codec.hpp"
+
+namespace robuter {
+
+class SerialModule final : public Process {
+ public:
+  static constexpr std::size_t kMaxLinks = 4;           // links served at once
+  static constexpr std::size_t kOutputBytes = 64 * 1024;  // replies queued per link, bytes
+  static constexpr std::size_t kReadChunk = 512;        // bytes read per read() call
+
+  // `links` must outlive the module; at most kMaxLinks are used.
+  SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links);
+  bool init(Kernel& k) override;
+  void run(Kernel& k) override;
+  void close(Kernel& k) override;
+
+ private:
+  struct Link {
+    hal::ByteStream* stream = nullptr;          // transport
+    protocol::LinkCodec codec;                  // framing, session, replies
+    OutputRing<kOutputBytes> out;               // replies not yet written
+    std::array<std::uint8_t, kReadChunk> in{};  // bytes read, not yet fed
+    std::size_t in_len = 0, in_pos = 0;         // unfed bytes are in[in_pos, in_len)
+    int watched_fd = -1;                        // descriptor that wakes the kernel, -1 none
+  };
+
+  // Serves one link: attach/detach, flush, read, answer, flush.
+  void serve(Kernel& k, Link& l);
+  // Writes queued replies as far as the transport takes them.
+  void flush(Link& l);
+
+  LinkWriters writers_;       // topics this module owns, lent to the port
+  LinkPort port_;             // the protocol's view of the robot
+  std::array<Link, kMaxLinks> links_{};
+  std::size_t link_count_ = 0;
+};
+
+}  // namespace robuter
