@@ -33,6 +33,7 @@ struct Posture {
   std::int32_t left = 0;        // wheel speed set-point that reached the drive, cm/s
   std::int32_t right = 0;       // cm/s
   std::uint64_t tick = 0;       // tick of the odometry read
+  std::uint8_t drive_health = 0; // hal::DriveHealth of the drive as a number (0 ok)
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).
@@ -82,6 +83,7 @@ struct UltrasonicRanges {
   std::array<std::uint16_t, kSensors> mm{};      // range of sensor s at [s-1], mm; 0 = inactive / none
   std::array<std::uint64_t, kSensors> read_tick{};  // tick each range was read
   std::uint32_t scans = 0;                       // full passes over the active nodes
+  std::uint32_t no_echo = 0;                     // bit s-1: sensor s heard no echo (mm = time-out range)
   std::uint64_t tick = 0;                        // tick of the latest read
 };
 
@@ -108,6 +110,10 @@ struct EmergencyState {
   std::int32_t main_sensor = 0; // sensor in the direction of motion (0 when stopped)
   std::uint32_t watch = 0;      // watch-dog sensor set, bit s-1 = sensor s
   std::uint64_t tick = 0;       // tick of the verdict
+  std::uint32_t trips = 0;      // emergencies that stopped the robot since start (count)
+  bool clearable = false;       // latched and the cause is gone: a re-enable (XR) now clears it
+  std::uint32_t safety_mm = 0;  // safety distance in force, mm (0 when stopped)
+  std::int32_t sensor = 0;      // sensor that tripped (obstacle) or is awaited (held), 0 none
 };
 
 // What the executor is allowed to send to the motors: the only path to a non-zero speed.
@@ -116,6 +122,7 @@ struct MotionCommand {
   std::int32_t right = 0;       // cm/s
   bool stop = true;             // true: zero speeds and servo off (emergency)
   std::uint32_t seq = 0;        // bumped on every decision
+  MotionSource source = MotionSource::link;  // who asked for the granted speeds
 };
 
 // Life of the command links (serial).

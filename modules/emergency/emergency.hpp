@@ -1,0 +1,73 @@
+// Emergency module: the request-to-move gate between every motion source and the executor.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "hal/api/bumpers.hpp"
+#include "kernel/config.hpp"
+#include "kernel/process.hpp"
+#include "modules/emergency/motion_gate.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+// Tunables of the emergency module that the configuration file does not carry (yet).
+struct EmergencyTuning {
+  std::uint32_t stale_ticks = 300;       // a watch-dog reading older than this counts as missing, ticks
+  std::uint32_t hold_limit_ticks = 500;  // a motion held for data longer than this is forgotten, ticks
+};
+
+class EmergencyModule final : public Process {
+ public:
+  static constexpr std::size_t kMaxSources = 8;  // motion sources the gate arbitrates
+
+  // Registers `link_motion` (serial) and `go_to_motion` (executor) as motion sources.
+  EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const EmergencyConfig& cfg, const RobotConfig& robot,
+                  const EmergencyTuning& tuning = {});
+  // The executor, triggered whenever the command changes so it acts in the same tick.
+  void set_executor(Process* p) { executor_ = p; }
+  // Adds another source of motion requests (gate, doors, planner…); false when full.
+  bool add_motion_source(MotionSource source, Reader<MotionRequest> reader);
+  // Switches detections on or off (bumper 1, ultrasonic 2, communication 4).
+  void set_enabled(std::uint8_t mask) { gate_.set_enabled(mask); }
+  std::uint8_t enabled() const { return gate_.enabled(); }
+
+  bool init(Kernel& k) override;
+  void run(Kernel& k) override;
+
+ private:
+  // A motion source and the request sequence number last seen from it.
+  struct Source {
+    MotionSource source = MotionSource::link;  // who publishes there
+    Reader<MotionRequest> reader;              // its topic
+    std::uint32_t seen_seq = 0;                // seq of its last request taken, for change detection
+  };
+  // Finds the newest new request of all sources (latest tick; ties go to the first registered).
+  void take_requests(safety::GateInputs& in);
+  // Logs what changed between two verdicts (transitions only, never every tick).
+  void log_transitions(const safety::GateDecision& d);
+
+  hal::Bumpers& bumpers_;
+  EmergencyConfig cfg_;
+  RobotConfig robot_;
+  EmergencyTuning tuning_;
+  safety::MotionGate gate_;
+  std::array<Source, kMaxSources> sources_{};
+  std::size_t source_count_ = 0;
+  Reader<LinkStatus> link_;
+  Reader<ServoRequest> servo_;
+  Reader<UltrasonicSettings> settings_;
+  Reader<UltrasonicRanges> ranges_;
+  Reader<Posture> posture_;
+  Writer<EmergencyState> state_out_;
+  Writer<MotionCommand> command_out_;
+  Writer<SonarSelection> selection_out_;
+  Process* executor_ = nullptr;       // triggered on every new command
+  std::uint32_t seen_stop_ = 0;       // LinkStatus.stop_seq last seen
+  std::uint32_t seen_reenable_ = 0;   // LinkStatus.reenable_seq last seen
+  std::uint32_t seen_servo_ = 0;      // ServoRequest.seq last seen
+  EmergencyState last_{};             // previous verdict, for transition logs
+};
+
+}  // namespace robuter

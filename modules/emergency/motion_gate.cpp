@@ -1,0 +1,121 @@
+// The gate's decision: re-enable, requests, detections, then trip / latch / hold / grant.
+#include "modules/emergency/motion_gate.hpp"
+
+#include "modules/emergency/obstacle_check.hpp"
+
+namespace robuter::safety {
+
+// Forgetting is how the seed's "rtm = FALSE" is made final: an old speed can never come back.
+void MotionGate::forget() {
+  has_request_ = false;
+  left_ = right_ = 0;
+  holding_ = false;
+}
+
+// Order matters: a re-enable is judged on the conditions present now; requests are taken before
+// the detections so a request that meets an emergency is forgotten in the same activation;
+// every detection runs every activation (the seed skipped the bumper and link checks while it
+// waited for sonar data).
+GateDecision MotionGate::step(const GateInputs& in) {
+  GateDecision d;
+  const std::uint64_t tick = in.tick;
+  const bool bumper_now = (s_.enabled & kDetectBumper) && in.bumpers != 0;
+  const bool comm_now = (s_.enabled & kDetectComm) && tick > in.last_message_tick &&
+                        tick - in.last_message_tick > s_.comm_limit_ticks;
+  const bool condition_now = bumper_now || comm_now || in.drive_fault;
+
+  // 1. Re-enable: only when no condition is present; the request is forgotten either way.
+  if (in.reenable && latched_ && !condition_now) {
+    latched_ = false;
+    latched_cause_ = EmergencyCause::none;
+    forget();
+    d.cleared = true;
+  }
+  // 2. Requests. Any servo request stops the motion (ASF stops; ASN must not move anything).
+  if (in.servo_request) forget();
+  if (in.new_request && !latched_) {
+    has_request_ = true;
+    left_ = in.left;
+    right_ = in.right;
+    source_ = in.source;
+    request_tick_ = tick;
+    holding_ = false;
+  }
+
+  // 3. Detections.
+  const bool moving = has_request_ && (left_ != 0 || right_ != 0);
+  EmergencyCause cause = EmergencyCause::none;
+  if (in.stop_byte) cause = EmergencyCause::stop_byte;
+  else if (in.drive_fault) cause = EmergencyCause::drive_fault;
+  else if (bumper_now) cause = EmergencyCause::bumper;
+  else if (comm_now) cause = EmergencyCause::comm_loss;
+  else if (moving && s_.motion_timeout_ticks > 0 && tick - request_tick_ > s_.motion_timeout_ticks)
+    cause = EmergencyCause::motion_timeout;
+
+  const int main = moving ? main_sensor(left_, right_, s_.wheel_base_mm) : 0;
+  const std::uint32_t safety = moving ? safety_distance_mm(left_, right_, s_.min_safety_mm, s_.safety_mm_per_cm_s) : 0;
+  d.state.main_sensor = main;
+  d.state.watch = watch_mask(main);
+  d.state.safety_mm = safety;
+  bool held = false;
+  if (cause == EmergencyCause::none && moving && (s_.enabled & kDetectUltrasonic) && in.ranges != nullptr) {
+    const WatchVerdict v = check_watch(watch_sensors(main), *in.ranges, safety, tick, s_.stale_ticks);
+    if (v.result == WatchResult::obstacle) cause = EmergencyCause::obstacle;
+    held = v.result == WatchResult::hold;
+    d.state.sensor = v.sensor;
+  }
+
+  // 4. Verdict.
+  if (cause != EmergencyCause::none) {
+    // A trip is a condition that interrupts something (a motion, a powered servo) or the
+    // operator's stop byte; a condition met at rest only inhibits until it goes.
+    const bool interrupts = moving || in.servo_on || cause == EmergencyCause::stop_byte;
+    if (interrupts) {
+      ++trips_;
+      d.tripped = true;
+      if (s_.latch && !latched_) {
+        latched_ = true;
+        latched_cause_ = cause;
+      }
+    }
+    forget();
+    d.stop = true;
+  } else if (latched_) {
+    d.stop = true;
+  } else if (held) {
+    if (!holding_) {
+      holding_ = true;
+      hold_since_ = tick;
+    } else if (tick - hold_since_ > s_.hold_limit_ticks) {
+      forget();
+      held = false;
+      d.hold_expired = true;
+      d.state.main_sensor = 0;
+      d.state.watch = 0;
+      d.state.safety_mm = 0;
+      d.state.sensor = 0;
+    }
+  } else {
+    holding_ = false;
+    if (has_request_) {
+      d.left = left_;
+      d.right = right_;
+    }
+  }
+  d.source = source_;
+
+  d.state.held = held;
+  d.state.latched = latched_;
+  d.state.cause = latched_ ? latched_cause_ : cause;
+  d.state.enabled = s_.enabled;
+  d.state.tick = tick;
+  d.state.trips = trips_;
+  d.state.clearable = latched_ && !condition_now;
+  if (d.state.cause != EmergencyCause::obstacle && !held) d.state.sensor = 0;
+  // The ring fires what the remembered request needs (a held request keeps its set).
+  const int wanted = has_request_ && (left_ != 0 || right_ != 0) ? main_sensor(left_, right_, s_.wheel_base_mm) : 0;
+  d.selection = select_sensors(in.user_table, in.auto_toggle, watch_mask(wanted), (s_.enabled & kDetectUltrasonic) != 0);
+  return d;
+}
+
+}  // namespace robuter::safety

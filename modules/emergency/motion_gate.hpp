@@ -1,0 +1,90 @@
+// The request-to-move gate: the emergency module's whole decision, a pure state machine.
+#pragma once
+
+#include <cstdint>
+
+#include "modules/emergency/watchdog_sets.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter::safety {
+
+// Detection bits of the `enabled` mask (seed emerg.on).
+inline constexpr std::uint8_t kDetectBumper = 1;      // contact bumpers
+inline constexpr std::uint8_t kDetectUltrasonic = 2;  // watch-dog sensors under the safety distance
+inline constexpr std::uint8_t kDetectComm = 4;        // link silent for longer than the limit
+
+// Everything the gate needs to know, in ticks and mm.
+struct GateSettings {
+  std::uint8_t enabled = 7;                  // detections on: bumper 1, ultrasonic 2, communication 4
+  std::uint32_t comm_limit_ticks = 18'000;   // link silence that trips, ticks
+  std::uint32_t min_safety_mm = 220;         // smallest safety distance, mm
+  std::uint32_t safety_mm_per_cm_s = 10;     // safety distance per cm/s of the faster wheel, mm
+  std::uint32_t motion_timeout_ticks = 0;    // moving without a new request this long trips, ticks; 0 off
+  bool latch = true;                         // a trip holds until a re-enable
+  std::uint32_t wheel_base_mm = 600;         // DBW, mm
+  std::uint32_t stale_ticks = 300;           // a watch-dog reading older than this counts as missing, ticks
+  std::uint32_t hold_limit_ticks = 500;      // a motion held longer than this is forgotten, ticks
+};
+
+// One activation's view of the world.
+struct GateInputs {
+  std::uint64_t tick = 0;                    // now, ticks
+  bool new_request = false;                  // a motion request arrived (the newest one below)
+  std::int32_t left = 0;                     // its left wheel speed, cm/s
+  std::int32_t right = 0;                    // its right wheel speed, cm/s
+  MotionSource source = MotionSource::link;  // who asked
+  bool servo_request = false;                // an ASN/ASF arrived: any motion stops
+  bool stop_byte = false;                    // the link's immediate stop byte arrived
+  bool reenable = false;                     // a re-enable (XR) arrived
+  std::uint32_t bumpers = 0;                 // bumpers pressed, bit per bumper
+  std::uint64_t last_message_tick = 0;       // tick of the link's last well-formed message
+  bool drive_fault = false;                  // the drive reports a fault or went silent
+  bool servo_on = false;                     // the drive's servo is on (executor's posture)
+  const UltrasonicRanges* ranges = nullptr;  // the ring's latest ranges (never null in use)
+  std::uint32_t user_table = kAllSensors;    // the operator's table (UT), bit s-1 = sensor s
+  bool auto_toggle = false;                  // only the watch-dog sensors fire (Uu)
+};
+
+// One activation's verdict.
+struct GateDecision {
+  EmergencyState state;                      // what the module publishes as `emergency`
+  std::int32_t left = 0;                     // granted left wheel speed, cm/s
+  std::int32_t right = 0;                    // granted right wheel speed, cm/s
+  bool stop = false;                         // emergency: zero and servo off
+  MotionSource source = MotionSource::link;  // whose speeds were granted
+  std::uint32_t selection = kAllSensors;     // table the ring must fire, bit s-1 = sensor s
+  bool tripped = false;                      // this activation stopped a motion (for the log)
+  bool hold_expired = false;                 // this activation forgot a motion held too long
+  bool cleared = false;                      // this activation cleared a latched emergency
+};
+
+// The seed's emergency() made a state machine with an explicit latch: holds the request to
+// move, decides grant / hold / stop every activation. No heap, bounded work.
+class MotionGate {
+ public:
+  explicit MotionGate(const GateSettings& s) : s_(s) {}
+  // Decides for one activation.
+  GateDecision step(const GateInputs& in);
+  // Switches detections on or off (mask bits kDetect*), effective at the next step.
+  void set_enabled(std::uint8_t mask) { s_.enabled = static_cast<std::uint8_t>(mask & 7u); }
+  std::uint8_t enabled() const { return s_.enabled; }
+  const GateSettings& settings() const { return s_; }
+
+ private:
+  // Drops the remembered request: the robot stays stopped until a new one arrives.
+  void forget();
+
+  GateSettings s_;
+  bool has_request_ = false;                   // a request to move is remembered
+  std::int32_t left_ = 0;                      // its left wheel speed, cm/s
+  std::int32_t right_ = 0;                     // its right wheel speed, cm/s
+  MotionSource source_ = MotionSource::link;   // who asked
+  std::uint64_t request_tick_ = 0;             // when it arrived, ticks
+  bool latched_ = false;                       // a trip waits for a re-enable
+  EmergencyCause latched_cause_ = EmergencyCause::none;  // what tripped it
+  bool holding_ = false;                       // the request is held for sensor data
+  std::uint64_t hold_since_ = 0;               // when the hold began, ticks
+  std::uint32_t trips_ = 0;                    // trips so far
+};
+
+}  // namespace robuter::safety

@@ -1,0 +1,157 @@
+// Executor glue: odometry out, servo and odometry requests, the granted command, the go-to.
+#include "modules/executor/executor.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "kernel/kernel.hpp"
+#include "kernel/log.hpp"
+
+namespace robuter {
+
+namespace {
+motion::GoToSettings with_robot(motion::GoToSettings s, const RobotConfig& robot) {
+  s.wheel_base_mm = robot.wheel_base_mm;
+  const auto cap = static_cast<std::int32_t>(std::min<std::uint32_t>(robot.max_speed_cm_s, 1000));
+  s.max_drive_cm_s = std::min(s.max_drive_cm_s, cap);
+  s.max_turn_cm_s = std::min(s.max_turn_cm_s, cap);
+  return s;
+}
+}  // namespace
+
+ExecutorModule::ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotConfig& robot,
+                               const motion::GoToSettings& go_to)
+    : drive_(drive),
+      robot_(robot),
+      go_to_(with_robot(go_to, robot)),
+      command_(bb.motion_command.reader()),
+      emergency_(bb.emergency.reader()),
+      servo_(bb.servo_request.reader()),
+      odometry_set_(bb.odometry_set.reader()),
+      go_to_request_(bb.go_to.reader()),
+      link_motion_(bb.link_motion.reader()),
+      posture_out_(bb.posture.writer()),
+      go_to_out_(bb.go_to_motion.writer()) {}
+
+// Known state at start: servo off (wheels zero); requests from before the start are not
+// replayed.
+bool ExecutorModule::init(Kernel& k) {
+  drive_.set_servo(false);
+  servo_.copy();
+  odometry_set_.copy();
+  go_to_request_.copy();
+  seen_link_seq_ = link_motion_.peek().seq;
+  applied_seq_ = command_.peek().seq;
+  const motion::PostureUnits p = motion::to_posture(drive_.odometry());
+  posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), static_cast<std::uint8_t>(drive_.health())});
+  return true;
+}
+
+// The seed's close_execute: SERV OF, with the speeds zeroed first.
+void ExecutorModule::close(Kernel&) {
+  if (drive_.servo()) drive_.command_wheels(0, 0);
+  drive_.set_servo(false);
+}
+
+// A command is applied once (by seq), except "stop", which is enforced every activation: the
+// servo stays off whatever else happens. Before the emergency module has published, nothing is
+// granted (the default command is a stop).
+void ExecutorModule::apply_command(bool drive_ok) {
+  const MotionCommand& c = command_.peek();
+  if (c.stop || command_.generation() == 0) {
+    if (drive_.servo()) drive_.set_servo(false);
+    applied_seq_ = c.seq;
+    return;
+  }
+  if (c.seq == applied_seq_) return;
+  applied_seq_ = c.seq;
+  if (c.left != 0 || c.right != 0) {
+    if (!drive_ok) return;
+    if (!drive_.servo()) drive_.set_servo(true);
+    drive_.command_wheels(c.left, c.right);
+  } else if (drive_.servo()) {
+    drive_.command_wheels(0, 0);
+  }
+}
+
+void ExecutorModule::request(std::uint64_t tick, std::int32_t left, std::int32_t right) {
+  go_to_out_.modify([&](MotionRequest& m) {
+    m.left = left;
+    m.right = right;
+    ++m.seq;
+    m.tick = tick;
+  });
+}
+
+void ExecutorModule::end_go_to(std::uint64_t tick, bool publish_stop) {
+  if (!go_to_.active()) return;
+  go_to_.cancel();
+  if (publish_stop) request(tick, 0, 0);
+}
+
+// Cancellations first (a newer AM, an emergency), then a new AW, then one control step per
+// tick whatever the number of activations.
+void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits& now) {
+  const EmergencyState& e = emergency_.peek();
+  if (link_motion_.peek().seq != seen_link_seq_) {
+    seen_link_seq_ = link_motion_.peek().seq;
+    if (go_to_.active()) log::info("executor: go-to cancelled by a motion request");
+    end_go_to(tick, false);
+  }
+  if (go_to_.active() && (e.cause != EmergencyCause::none || e.latched || e.trips != go_to_trips_)) {
+    log::info("executor: go-to cancelled by an emergency");
+    end_go_to(tick, true);
+  }
+  if (go_to_request_.updated()) {
+    const GoToRequest g = go_to_request_.copy();
+    if (g.active) {
+      go_to_.start(motion::PostureUnits{g.x, g.y, g.theta});
+      go_to_trips_ = e.trips;
+      log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
+    } else {
+      end_go_to(tick, true);
+    }
+  }
+  if (!go_to_.active() || tick == last_go_to_tick_) return;
+  last_go_to_tick_ = tick;
+  const motion::WheelSpeeds w = go_to_.step(now);
+  request(tick, w.left, w.right);
+  if (!go_to_.active()) log::info("executor: go-to reached {} {} {}", now.x, now.y, now.theta);
+}
+
+// One activation, in the seed's order: odometry, servo change, motion; then AC and the go-to.
+void ExecutorModule::run(Kernel& k) {
+  const std::uint64_t tick = k.tick();
+  const hal::DriveHealth health = drive_.health();
+  const bool drive_ok = health == hal::DriveHealth::ok;
+  if (!drive_ok && drive_.servo()) drive_.set_servo(false);  // local reaction; emergency latches
+
+  if (servo_.updated()) {
+    const ServoRequest s = servo_.copy();
+    const MotionCommand& c = command_.peek();
+    if (s.on && !c.stop && command_.generation() > 0 && drive_ok) drive_.set_servo(true);
+    if (!s.on) drive_.set_servo(false);
+    end_go_to(tick, true);  // any AS ends a go-to, as it ends any motion at the gate
+  }
+  apply_command(drive_ok);
+
+  if (odometry_set_.updated()) {
+    const OdometrySet o = odometry_set_.copy();
+    drive_.set_odometry(motion::to_odometry(motion::PostureUnits{o.x, o.y, o.theta}));
+    end_go_to(tick, true);  // the target was in the old frame
+  }
+  const motion::PostureUnits now = motion::to_posture(drive_.odometry());
+  serve_go_to(tick, now);
+
+  Posture p;
+  p.x = now.x;
+  p.y = now.y;
+  p.theta = now.theta;
+  p.servo = drive_.servo();
+  drive_.commanded(p.left, p.right);
+  p.tick = tick;
+  p.drive_health = static_cast<std::uint8_t>(health);
+  posture_out_.publish(p);
+}
+
+}  // namespace robuter

@@ -1,0 +1,52 @@
+// Motion executor (seed executor.c): the only module that commands the drive.
+#pragma once
+
+#include <cstdint>
+
+#include "hal/api/drive.hpp"
+#include "kernel/config.hpp"
+#include "kernel/process.hpp"
+#include "modules/executor/go_to.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+class ExecutorModule final : public Process {
+ public:
+  // Owns `drive` for the life of the module.
+  ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotConfig& robot, const motion::GoToSettings& go_to = {});
+  const motion::GoToController& go_to() const { return go_to_; }
+
+  bool init(Kernel& k) override;
+  void run(Kernel& k) override;
+  void close(Kernel& k) override;
+
+ private:
+  // Applies the emergency module's command: stop → zero and servo off; a new grant → speeds.
+  void apply_command(bool drive_ok);
+  // Decides whether a go-to runs on: new AW, cancellations, one control step per tick.
+  void serve_go_to(std::uint64_t tick, const motion::PostureUnits& now);
+  // Ends the go-to; `publish_stop` asks the gate for zero speeds (not when a newer link
+  // request took over, which must stay the newest).
+  void end_go_to(std::uint64_t tick, bool publish_stop);
+  // Publishes a go-to wheel-speed request through the emergency gate.
+  void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+
+  hal::Drive& drive_;
+  RobotConfig robot_;
+  motion::GoToController go_to_;
+  Reader<MotionCommand> command_;        // what the emergency module grants
+  Reader<EmergencyState> emergency_;     // trips cancel a go-to
+  Reader<ServoRequest> servo_;           // ASN / ASF
+  Reader<OdometrySet> odometry_set_;     // AC
+  Reader<GoToRequest> go_to_request_;    // AW
+  Reader<MotionRequest> link_motion_;    // AM: a newer one cancels a go-to
+  Writer<Posture> posture_out_;
+  Writer<MotionRequest> go_to_out_;
+  std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
+  std::uint32_t seen_link_seq_ = 0;      // MotionRequest.seq of link_motion last seen
+  std::uint32_t go_to_trips_ = 0;        // EmergencyState.trips when the go-to started
+  std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
+};
+
+}  // namespace robuter
