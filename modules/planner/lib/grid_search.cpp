@@ -172,6 +172,7 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
   std::uint32_t* next = next_.data();
   std::uint32_t* prev = prev_.data();
   const std::uint32_t seen = gen_ << 1, closed = seen | 1u;
+  const bool uniform = costs.unknown_cost <= 1.0;
   const auto stride = static_cast<std::uint32_t>(grid.stride);
   const int tx = static_cast<int>(t % stride);
   const int ty = static_cast<int>(t / stride);
@@ -236,7 +237,7 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
       const int m = std::countr_zero(legal);
       legal &= legal - 1;
       const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
-      const double ng = gu + cost[m][cu][cls[v]];
+      const double ng = uniform ? gu + (m < 4 ? 1.0 : kSqrt2) : gu + cost[m][cu][cls[v]];
       const std::uint32_t mv = mark[v];
       const bool known = (mv | 1u) == closed;
       if (known && !(ng < g[v] - 1e-9)) continue;
