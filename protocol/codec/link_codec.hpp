@@ -41,6 +41,7 @@ class LinkCodec {
   // comes at once after XS, then one every stream_period ticks.
   std::optional<std::string_view> poll_stream(const RobotPort& port) noexcept;
 
+  // The link's options (the serial module may preset the terminator from its configuration).
   SessionState& session() noexcept { return session_; }
   const SessionState& session() const noexcept { return session_; }
   // Drops a partial line and returns the session to seed behaviour (link reopened).
