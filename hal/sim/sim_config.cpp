@@ -1,0 +1,221 @@
+// TOML overrides of the simulator's configuration, strict like the world loader.
+#include "hal/sim/sim_config.hpp"
+
+#include "hal/sim/toml_fields.hpp"
+
+namespace robuter::sim {
+
+namespace {
+
+using detail::Fields;
+using detail::ParseFailure;
+
+// Assigns an optional value when present.
+template <class T>
+void maybe(T& field, const std::optional<double>& v) {
+  if (v) field = static_cast<T>(*v);
+}
+
+// Fails at the key's line when it is in the table, else at the table's line.
+[[noreturn]] void fail_key(Fields& f, const char* key, const std::string& why) {
+  if (const auto* n = f.get(key)) f.fail_at(*n, std::string(key) + ": " + why);
+  f.fail(f.line(), std::string(key) + ": " + why);
+}
+
+// Refuses values that would make the model meaningless.
+void positive(Fields& f, const char* key, double v) {
+  if (!(v > 0.0)) fail_key(f, key, "must be positive");
+}
+
+void non_negative(Fields& f, const char* key, double v) {
+  if (v < 0.0) fail_key(f, key, "must not be negative");
+}
+
+void probability(Fields& f, const char* key, double v) {
+  if (v < 0.0 || v > 1.0) fail_key(f, key, "must be within 0..1");
+}
+
+// The sonar behaviour keys shared by [sonar] and [pan_tilt].
+void read_sonar_params(Fields& f, SonarParams& p) {
+  if (auto v = f.opt_number("half_angle_deg")) {
+    if (*v <= 0.0 || *v >= 89.0) f.fail_at(*f.get("half_angle_deg"), "half_angle_deg: must be within 0..89");
+    p.half_angle = deg_to_rad(*v);
+  }
+  if (auto v = f.opt_number("timeout_ms")) {
+    positive(f, "timeout_ms", *v);
+    p.timeout = *v * 1e-3;
+  }
+  if (auto v = f.opt_number("sound_speed")) {
+    positive(f, "sound_speed", *v);
+    p.sound_speed = *v;
+  }
+  if (auto v = f.opt_number("min_range")) {
+    non_negative(f, "min_range", *v);
+    p.min_range = *v;
+  }
+  if (auto v = f.opt_number("max_incidence_deg")) {
+    if (*v < 0.0 || *v > 90.0) f.fail_at(*f.get("max_incidence_deg"), "max_incidence_deg: must be within 0..90");
+    p.max_incidence = deg_to_rad(*v);
+  }
+  if (auto v = f.opt_number("noise_sigma")) {
+    non_negative(f, "noise_sigma", *v);
+    p.noise_sigma = *v;
+  }
+  if (auto v = f.opt_number("noise_relative")) {
+    non_negative(f, "noise_relative", *v);
+    p.noise_relative = *v;
+  }
+  if (auto v = f.opt_number("spurious_probability")) {
+    probability(f, "spurious_probability", *v);
+    p.spurious_probability = *v;
+  }
+  if (auto v = f.opt_number("dropout_probability")) {
+    probability(f, "dropout_probability", *v);
+    p.dropout_probability = *v;
+  }
+  if (auto v = f.opt_number("scale")) {
+    positive(f, "scale", *v);
+    p.scale = *v;
+  }
+  maybe(p.offset, f.opt_number("offset"));
+  maybe(p.no_echo, f.opt_number("no_echo"));
+}
+
+void read_robot(Fields& f, RobotParams& r) {
+  auto& g = r.geometry;
+  maybe(g.length, f.opt_number("length"));
+  maybe(g.width, f.opt_number("width"));
+  maybe(g.axle_to_front, f.opt_number("axle_to_front"));
+  maybe(g.wheel_base, f.opt_number("wheel_base"));
+  maybe(r.limits.max_wheel_speed, f.opt_number("max_wheel_speed"));
+  maybe(r.limits.max_accel, f.opt_number("max_accel"));
+  maybe(r.limits.max_decel, f.opt_number("max_decel"));
+  maybe(r.contact_tolerance, f.opt_number("contact_tolerance"));
+  maybe(r.max_substep_travel, f.opt_number("max_substep_travel"));
+  maybe(r.trail_spacing, f.opt_number("trail_spacing"));
+  positive(f, "length", g.length);
+  positive(f, "width", g.width);
+  positive(f, "wheel_base", g.wheel_base);
+  positive(f, "max_wheel_speed", r.limits.max_wheel_speed);
+  non_negative(f, "max_accel", r.limits.max_accel);
+  non_negative(f, "max_decel", r.limits.max_decel);
+  non_negative(f, "contact_tolerance", r.contact_tolerance);
+  positive(f, "max_substep_travel", r.max_substep_travel);
+  if (g.axle_to_front <= 0.0 || g.axle_to_front >= g.length) {
+    f.fail(f.line(), "axle_to_front must lie within the body length");
+  }
+  if (r.max_substep_travel >= std::min(g.length, g.width)) {
+    f.fail(f.line(), "max_substep_travel must be smaller than the body, or walls could be jumped");
+  }
+}
+
+void read_odometry(Fields& f, OdometryErrors& o) {
+  maybe(o.scale_left, f.opt_number("scale_left"));
+  maybe(o.scale_right, f.opt_number("scale_right"));
+  maybe(o.wheel_base_error, f.opt_number("wheel_base_error"));
+  maybe(o.noise, f.opt_number("noise"));
+  maybe(o.slip_mean, f.opt_number("slip_mean"));
+  maybe(o.slip_sigma, f.opt_number("slip_sigma"));
+  if (auto s = f.opt_integer("seed")) o.seed = static_cast<std::uint64_t>(*s);
+  non_negative(f, "noise", o.noise);
+  non_negative(f, "slip_sigma", o.slip_sigma);
+}
+
+// [[sonar.sensor]] rows replace fields of the numbered sensor.
+void read_sensor(const toml::table& t, std::string_view file, RingLayout& layout) {
+  Fields f(t, file, "[[sonar.sensor]]");
+  const auto number = f.opt_integer("number");
+  if (!number) f.fail(f.line(), "missing key 'number'");
+  if (*number < 1 || *number > kRingSensors) {
+    f.fail_at(*f.get("number"), "number: must be within 1..24");
+  }
+  f.set_what("[[sonar.sensor]] " + std::to_string(*number));
+  SonarMount& m = layout[static_cast<std::size_t>(*number - 1)];
+  if (auto v = f.opt_number("x")) m.position.x() = *v;
+  if (auto v = f.opt_number("y")) m.position.y() = *v;
+  if (auto v = f.opt_number("direction_deg")) m.direction = wrap_angle(deg_to_rad(*v));
+  if (auto v = f.opt_integer("node")) {
+    if (*v < 1 || *v > kRingNodes) f.fail_at(*f.get("node"), "node: must be within 1..6");
+    m.node = static_cast<int>(*v);
+  }
+  if (auto v = f.opt_integer("slot")) {
+    if (*v < 1 || *v > 4) f.fail_at(*f.get("slot"), "slot: must be within 1..4");
+    m.slot = static_cast<int>(*v);
+  }
+  f.finish();
+}
+
+SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
+  Fields top(root, file, "configuration");
+  if (const auto* n = top.get("robot")) {
+    if (!n->is_table()) top.fail_at(*n, "robot: expected a table [robot]");
+    Fields f(*n->as_table(), file, "[robot]");
+    read_robot(f, c.robot);
+    f.finish();
+  }
+  if (const auto* n = top.get("odometry")) {
+    if (!n->is_table()) top.fail_at(*n, "odometry: expected a table [odometry]");
+    Fields f(*n->as_table(), file, "[odometry]");
+    read_odometry(f, c.robot.odometry);
+    f.finish();
+  }
+  if (const auto* n = top.get("sonar")) {
+    if (!n->is_table()) top.fail_at(*n, "sonar: expected a table [sonar]");
+    Fields f(*n->as_table(), file, "[sonar]");
+    read_sonar_params(f, c.ring);
+    c.timing.timeout = c.ring.timeout;
+    if (auto v = f.opt_number("node_delay_ms")) {
+      non_negative(f, "node_delay_ms", *v);
+      c.timing.node_delay = *v * 1e-3;
+    }
+    if (auto s = f.opt_integer("seed")) c.sonar_seed = static_cast<std::uint64_t>(*s);
+    if (const auto* s = f.get("sensor")) {
+      if (!s->is_array_of_tables()) f.fail_at(*s, "sensor: must be written [[sonar.sensor]]");
+      for (const auto& row : *s->as_array()) read_sensor(*row.as_table(), file, c.layout);
+    }
+    f.finish();
+  }
+  if (const auto* n = top.get("pan_tilt")) {
+    if (!n->is_table()) top.fail_at(*n, "pan_tilt: expected a table [pan_tilt]");
+    Fields f(*n->as_table(), file, "[pan_tilt]");
+    read_sonar_params(f, c.pan_tilt);
+    if (auto v = f.opt_number("x")) c.pan_tilt_mount.pivot.x() = *v;
+    if (auto v = f.opt_number("y")) c.pan_tilt_mount.pivot.y() = *v;
+    if (auto v = f.opt_number("sensor_offset")) {
+      non_negative(f, "sensor_offset", *v);
+      c.pan_tilt_mount.sensor_offset = *v;
+    }
+    f.finish();
+  }
+  top.finish();
+  return c;
+}
+
+}  // namespace
+
+Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view file,
+                                   SimConfig base) {
+  try {
+    return apply(table, file, std::move(base));
+  } catch (const ParseFailure& e) {
+    return e.error;
+  }
+}
+
+Result<SimConfig> parse_sim_config(std::string_view text, std::string_view file, SimConfig base) {
+  try {
+    return apply(detail::parse_toml(text, file), file, std::move(base));
+  } catch (const ParseFailure& e) {
+    return e.error;
+  }
+}
+
+Result<SimConfig> load_sim_config(const std::filesystem::path& path, SimConfig base) {
+  std::string text;
+  if (!detail::read_text_file(path.string(), text)) {
+    return Error{path.string(), 0, "cannot open the file"};
+  }
+  return parse_sim_config(text, path.string(), std::move(base));
+}
+
+}  // namespace robuter::sim

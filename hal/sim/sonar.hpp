@@ -1,0 +1,100 @@
+// Ultrasonic range model: a beam cone, nearest specular echo, grazing-incidence misses,
+// time-out range, blanking, and optional seeded noise, drop-outs and spurious short echoes.
+#pragma once
+
+#include <vector>
+
+#include "hal/sim/rng.hpp"
+#include "hal/sim/segment_grid.hpp"
+#include "hal/sim/world.hpp"
+
+namespace robuter::sim {
+
+// How one kind of sonar behaves. Defaults are the Robuter ring's (seed 002: time-out 33 ms,
+// calibrated sound speed 300 m/s, so about 5 m of range).
+struct SonarParams {
+  double half_angle = deg_to_rad(12.5);    // half-angle of the beam cone, rad (< 90°)
+  double timeout = 0.033;                  // listening time after firing, s
+  double sound_speed = 300.0;              // speed of sound used for ranging, m/s
+  double min_range = 0.15;                 // echoes nearer than this are lost in blanking, m
+  double max_incidence = deg_to_rad(40.0); // echoes hitting a surface more obliquely are lost, rad
+  double noise_sigma = 0.0;                // Gaussian range noise, m
+  double noise_relative = 0.0;             // extra Gaussian noise proportional to range, fraction
+  double spurious_probability = 0.0;       // chance a reading is a spurious short echo
+  double dropout_probability = 0.0;        // chance a reading misses its echo entirely
+  double scale = 1.0;                      // reported = scale · range + offset (calibration error)
+  double offset = 0.0;                     // see scale, m
+  double no_echo = 0.0;                    // value reported when nothing echoes in time, m
+
+  // Farthest echo that returns before the time-out, m.
+  double max_range() const { return timeout * sound_speed * 0.5; }
+};
+
+// Where a sensor sits on the robot and which way it looks.
+struct SonarMount {
+  int number = 0;           // sensor number, 1..24 on the ring (0 for other sensors)
+  Vec2 position;            // transducer position in the robot frame, m
+  double direction = 0.0;   // beam axis in the robot frame, rad (0 forward, counter-clockwise)
+  int node = 0;             // ring node that fires it, 1..6 (0 if not on the ring)
+  int slot = 0;             // position within its node, 1..4
+};
+
+// The nearest echo of one firing, before noise and calibration are applied.
+struct Echo {
+  bool found = false;       // whether anything echoed within range
+  double range = 0.0;       // distance from the transducer to the echoing point, m
+  Vec2 point;               // echoing point in the world, m
+  double incidence = 0.0;   // angle between the ray and the surface normal there, rad
+  int segment = -1;         // world edge that echoed
+};
+
+// Computes sonar readings in one world. Holds scratch buffers sized at construction, so no
+// measurement allocates; one model per thread.
+class SonarModel {
+ public:
+  // The world must outlive the model.
+  SonarModel(const World& world, const SonarParams& params);
+
+  // The ideal echo for a transducer at `origin` looking along `direction` (world frame):
+  // the nearest visible surface point inside the cone and the range whose incidence is within
+  // max_incidence. Surfaces nearer than min_range blind the sensor (no echo).
+  Echo trace(const Vec2& origin, double direction);
+  // The same for a sensor mounted on a robot at `robot`.
+  Echo trace(const Pose& robot, const SonarMount& mount);
+
+  // The reported range, m (params().no_echo without an echo): trace, then drop-outs, spurious
+  // echoes and noise drawn from `rng` (none when rng is null), then the calibration line.
+  double measure(const Pose& robot, const SonarMount& mount, Rng* rng = nullptr);
+  double measure_from(const Vec2& origin, double direction, Rng* rng = nullptr);
+
+  const SonarParams& params() const { return params_; }
+  // Replaces the behaviour (and its cached trigonometry).
+  void set_params(const SonarParams& params);
+
+ private:
+  // One edge's best echo candidate inside the cone.
+  struct Candidate {
+    double range;     // distance to the nearest in-cone point of the edge, m
+    Vec2 point;       // that point, world frame, m
+    double cos_incidence; // cosine of the incidence angle there
+    int segment;      // edge index
+    bool echoes;      // whether the incidence allows an echo
+  };
+
+  const World& world_;                 // the world; outlives the model
+  SonarParams params_;                 // behaviour
+  double cos_half_ = 1.0;              // cos(half_angle), cached
+  double sin_half_ = 0.0;              // sin(half_angle), cached
+  double cos_max_incidence_ = 0.0;     // cos(max_incidence), cached
+  std::vector<Candidate> candidates_;  // scratch, capacity = edge count
+  GridScratch scratch_;                // grid query scratch
+};
+
+// World-frame position and direction of a mounted sensor (the direction is not wrapped).
+inline void sensor_in_world(const Pose& robot, const SonarMount& m, Vec2& origin,
+                            double& direction) {
+  origin = to_world(robot, m.position);
+  direction = robot.theta + m.direction;
+}
+
+}  // namespace robuter::sim

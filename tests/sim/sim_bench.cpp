@@ -1,0 +1,115 @@
+// Speed of the pure simulated world: simulated seconds per wall-clock second on the default
+// world, robot stepped every 10 ms, all 24 ring sonars every 40 ms, the pan-tilt pair every 30 ms.
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <string>
+
+#include "hal/sim/robot.hpp"
+#include "hal/sim/sonar_layout.hpp"
+#include "hal/sim/world_io.hpp"
+
+using namespace robuter::sim;
+
+namespace {
+
+// A wandering robot: forward with a slight curve, turning on the spot when the front sensors
+// report something near, so that it keeps moving around the default world's rooms.
+struct Scenario {
+  const World& world;
+  Robot robot;
+  SonarModel ring;
+  SonarModel ptu;
+  RingLayout layout = default_ring_layout();
+  PanTiltMount mount;
+  Rng noise{1234};
+  std::array<double, kRingSensors> ranges{};
+  double pan = 0.0;         // pan direction, rad
+  double pan_step = 0.0873; // 5° per firing
+  long sonar_reads = 0;     // ring sensor evaluations
+  long ptu_reads = 0;       // pan-tilt firings (two sensors each)
+
+  explicit Scenario(const World& w)
+      : world(w),
+        robot(w, RobotParams{}, *w.start),
+        ring(w, default_ring_params()),
+        ptu(w, default_pan_tilt_params()) {
+    SonarParams p = default_ring_params();
+    p.noise_sigma = 0.01;
+    p.spurious_probability = 0.01;
+    ring.set_params(p);
+  }
+
+  // What the wanderer is doing, and until which tick.
+  enum class Mode { Forward, Turn, Back } mode = Mode::Forward;
+  long until = 0;  // tick at which the current manoeuvre ends
+
+  // One 10 ms tick number `k`.
+  void tick(long k) {
+    if (k % 4 == 0) {
+      for (int i = 0; i < kRingSensors; ++i) ranges[i] = ring.measure(robot.pose(), layout[i], &noise);
+      sonar_reads += kRingSensors;
+      auto near = [&](int n) { return ranges[n - 1] > 0.0 && ranges[n - 1] < 0.9; };
+      const bool blocked_ahead = near(22) || near(23) || near(24) || near(1) || near(2) ||
+                                 near(3) || near(4);
+      if (robot.bumper() && mode != Mode::Back) {
+        mode = Mode::Back;
+        until = k + 100;
+      } else if (k >= until) {
+        if (mode == Mode::Back || (mode == Mode::Forward && blocked_ahead)) {
+          mode = Mode::Turn;
+          until = k + 40 + static_cast<long>(noise.uniform() * 160);
+        } else {
+          mode = Mode::Forward;
+        }
+      }
+      switch (mode) {
+        case Mode::Forward: robot.command({0.42, 0.38}); break;
+        case Mode::Turn: robot.command({-0.25, 0.25}); break;
+        case Mode::Back: robot.command({-0.15, -0.15}); break;
+      }
+    }
+    if (k % 3 == 0) {
+      measure_pan_tilt(ptu, robot.pose(), mount, pan, &noise);
+      ++ptu_reads;
+      pan += pan_step;
+      if (pan > kPi / 2 || pan < -kPi / 2) pan_step = -pan_step;
+    }
+    robot.step(0.01);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string path = argc > 1 ? argv[1] : std::string(ROBUTER_WORLDS_DIR) + "/default.toml";
+  auto w = load_world(path);
+  if (!w.ok()) {
+    std::fprintf(stderr, "%s\n", w.error().describe().c_str());
+    return 1;
+  }
+  Scenario s(w.value());
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const std::clock_t c0 = std::clock();
+  long k = 0;
+  double wall = 0.0;
+  // At least 600 simulated seconds and at least 1 wall second.
+  while (k < 60000 || wall < 1.0) {
+    for (int i = 0; i < 1000; ++i) s.tick(k++);
+    wall = std::chrono::duration<double>(clock::now() - t0).count();
+  }
+  const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  const double simulated = static_cast<double>(k) * 0.01;
+  const double readings = static_cast<double>(s.sonar_reads + 2 * s.ptu_reads);
+  std::printf("sim: world %s, robot step 10 ms, 24 ring sonars every 40 ms, pan-tilt pair every 30 ms\n",
+              w.value().name.c_str());
+  std::printf("sim: %.0f simulated s in %.3f wall s: %.0f simulated s per wall s\n", simulated, wall,
+              simulated / wall);
+  std::printf("sim: %.0f simulated s per CPU s (the wall figure drops when other jobs share the cores)\n",
+              simulated / cpu);
+  std::printf("sim: %.0f sonar readings and %.0f robot steps per wall s; robot travelled %.1f m\n",
+              readings / wall, static_cast<double>(k) / wall, s.robot.travelled());
+  return 0;
+}
