@@ -59,7 +59,8 @@ class GridSearch {
   // MovingAI maps) and lose to the bucket A* where obstacles are scattered cells (random
   // grids, even at 1 %). Auto measures, on a fixed sample of up to 256 cells, the share of
   // blocked cells with at most one blocked side neighbour, and uses jump points below
-  // kScatteredLimit.
+  // kScatteredLimit (an obstacle-free sample counts as scattered: A* crosses open space in a
+  // straight line).
   double scattered_fraction(const PassGrid& grid);
   static constexpr std::size_t kSamples = 256;
   static constexpr double kScatteredLimit = 0.3;
