@@ -141,12 +141,13 @@ void Kernel::activate(std::size_t i, bool from_event) {
 }
 
 void Kernel::serve_events_until(Nanos deadline) {
-  for (auto& w : watches_) w.runs_this_tick = 0;
+  for (auto& w : watches_) w.stuck_runs = 0;
   for (;;) {
+    if (clock_.now() >= deadline) return;  // the tick is due: events never delay it
     std::size_t n = 0;
     for (std::size_t k = 0; k < watches_.size(); ++k) {
       const Watch& w = watches_[k];
-      if (w.fd < 0 || w.runs_this_tick >= kMaxEventRunsPerTick) continue;
+      if (w.fd < 0 || w.stuck_runs >= kMaxEventRunsPerTick) continue;
       pollfds_[n] = pollfd{w.fd, POLLIN, 0};
       poll_map_[n] = static_cast<std::uint8_t>(k);
       ++n;
@@ -158,10 +159,14 @@ void Kernel::serve_events_until(Nanos deadline) {
     for (std::size_t s = 0; s < n; ++s) {
       if (pollfds_[s].revents == 0) continue;
       Watch& w = watches_[poll_map_[s]];
-      ++w.runs_this_tick;
       for (std::size_t i = 0; i < count_; ++i) {
         if (rows_[i].process == w.process) { activate(i, true); break; }
       }
+      // A process that left its descriptor readable (it cannot take more now, or it does not
+      // read at all) is not woken again by it more than a few times per tick.
+      pollfd again{w.fd, POLLIN, 0};
+      if (w.fd >= 0 && ::poll(&again, 1, 0) > 0) ++w.stuck_runs;
+      else w.stuck_runs = 0;
       run_triggered();
       if (stop_requested()) return;
     }

@@ -18,7 +18,7 @@ class Kernel {
  public:
   static constexpr std::size_t kMaxProcesses = 32;      // rows in the process table
   static constexpr std::size_t kMaxWatches = 16;        // descriptors that can wake a process
-  static constexpr int kMaxEventRunsPerTick = 8;        // bound on descriptor activations per tick
+  static constexpr int kMaxEventRunsPerTick = 8;        // runs per tick of a descriptor that stays readable
   static constexpr int kMaxTriggersPerTick = 2;         // bound on triggered activations per tick
   static constexpr int kMinPriority = 0;                // priority range accepted in a row
   static constexpr int kMaxPriority = 99;
@@ -84,7 +84,7 @@ class Kernel {
   struct Watch {
     int fd = -1;                  // watched descriptor
     Process* process = nullptr;   // process run when it is readable
-    int runs_this_tick = 0;       // event activations since the last tick
+    int stuck_runs = 0;           // runs this tick after which the descriptor was still readable
   };
 
   Clock& clock_;
