@@ -41,6 +41,11 @@ test-san: $(SAN_BUILD)/build.ninja
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure -j $(JOBS) --timeout 900 -LE no-san
 
+# Fuzz the protocol codec: FUZZ_TIME seconds per target (default 600), or FUZZ_RUNS executions.
+FUZZ_TIME ?= 600
+fuzz: deps
+	tools/fuzz/run.sh $(if $(FUZZ_RUNS),-runs=$(FUZZ_RUNS),$(FUZZ_TIME))
+
 bench: deps build
 	@tools/deps/ensure.sh tools/deps/bench-packages.txt
 	@ROBUTER_BUILD=$(BUILD) tools/bench/run.sh
