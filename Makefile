@@ -6,7 +6,7 @@ JOBS     ?= $(shell nproc)
 DEPS     := tools/deps/ensure.sh tools/deps/debian-packages.txt
 PTY      ?= /tmp/robuter.pty
 PREFIX   ?= /usr/local
-RUN_ARGS ?=
+RUN_ARGS ?= --sim --pty $(PTY)
 
 .PHONY: all deps build run test test-fast test-san bench fuzz install clean
 
