@@ -1,6 +1,8 @@
 // Tests of the occupancy grid: beam integration (seed 003's rule), change log, text rendering.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/text_render.hpp"
 
@@ -44,6 +46,9 @@ TEST(OccupancyMap, BeamLeavingTheMapIsClipped) {
   for (int y = 5; y < 10; ++y) EXPECT_EQ(m.state({10, y}), CellState::Free);
   m.integrate_beam({1.0, 0.55}, 0.0, 1e12, 1e13);  // huge ranges are harmless
   EXPECT_EQ(m.state({19, 5}), CellState::Free);
+  m.integrate_beam({-1e12, 0.75}, 0.0, 2e12, 3e12);  // far origin: only the map part is walked
+  EXPECT_EQ(m.state({0, 7}), CellState::Free);
+  m.integrate_beam({std::nan(""), 0.0}, 0.0, 1.0, 2.0);  // ignored
 }
 
 TEST(OccupancyMap, ChangeLogListsStateChangesOnce) {
@@ -67,6 +72,8 @@ TEST(OccupancyMap, WorldCellConversion) {
   EXPECT_EQ(m.cell_of({-0.949, 2.051}), (Cell{1, 1}));
   EXPECT_FALSE(m.contains(m.cell_of({-1.01, 2.0})));
   EXPECT_NEAR(m.center({1, 1}).x, -0.925, 1e-12);
+  EXPECT_FALSE(m.contains(m.cell_of({1e300, -1e300})));
+  EXPECT_FALSE(m.contains(m.cell_of({std::nan(""), 0.0})));
 }
 
 TEST(TextRender, SeedCharacters) {

@@ -8,6 +8,32 @@
 
 namespace robuter::plan {
 
+// Why: Liang-Barsky clip of a segment to the map grown by one cell, so edges far outside the
+// map cost nothing; segments inside are returned unchanged (same Bresenham cells).
+bool clip_segment_to_map(const MapGeometry& g, Point2& p, Point2& q) {
+  const double x0 = g.origin.x - g.resolution, x1 = g.origin.x + (g.width + 1) * g.resolution;
+  const double y0 = g.origin.y - g.resolution, y1 = g.origin.y + (g.height + 1) * g.resolution;
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = q.x - p.x, dy = q.y - p.y;
+  const double pk[4] = {-dx, dx, -dy, dy};
+  const double qk[4] = {p.x - x0, x1 - p.x, p.y - y0, y1 - p.y};
+  for (int i = 0; i < 4; ++i) {
+    if (pk[i] == 0.0) {
+      if (qk[i] < 0.0) return false;
+      continue;
+    }
+    const double t = qk[i] / pk[i];
+    if (pk[i] < 0.0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  const Point2 a{p.x + t0 * dx, p.y + t0 * dy};
+  const Point2 b{p.x + t1 * dx, p.y + t1 * dy};
+  if (t0 > 0.0) p = a;
+  if (t1 < 1.0) q = b;
+  return true;
+}
+
 // Why: every buffer is sized once here so that later updates never allocate.
 OccupancyMap::OccupancyMap(const MapGeometry& geometry, std::uint8_t threshold)
     : geo_(geometry), threshold_(std::max<std::uint8_t>(threshold, 1)) {
@@ -20,9 +46,15 @@ OccupancyMap::OccupancyMap(const MapGeometry& geometry, std::uint8_t threshold)
 }
 
 // Why: world to grid is a floor, as the thesis' pto_mapa() for positive coordinates.
+// Far-away or non-finite points are clamped to a cell far outside (never a wrapped int).
 Cell OccupancyMap::cell_of(Point2 p) const {
-  return {static_cast<int>(std::floor((p.x - geo_.origin.x) / geo_.resolution)),
-          static_cast<int>(std::floor((p.y - geo_.origin.y) / geo_.resolution))};
+  auto axis = [&](double v, double o) {
+    const double c = std::floor((v - o) / geo_.resolution);
+    if (!(c > -1e9)) return -1'000'000'000;  // also NaN
+    if (c > 1e9) return 1'000'000'000;
+    return static_cast<int>(c);
+  };
+  return {axis(p.x, geo_.origin.x), axis(p.y, geo_.origin.y)};
 }
 
 // Why: paths are handed to the controller as cell centres (the thesis adds PRECISAO/2).
@@ -64,15 +96,16 @@ void OccupancyMap::clear() {
 // Why: seed 003's update rule; the beam is walked cell to cell with Bresenham like the thesis.
 void OccupancyMap::integrate_beam(Point2 origin, double angle, double range, double max_range) {
   if (!(range >= 0.0) || !(max_range > 0.0)) return;  // also rejects NaN
-  const bool hit = range < max_range;
-  // A beam never needs to be longer than the map is far from its origin (guards huge ranges).
-  const double cx = geo_.origin.x + 0.5 * geo_.width * geo_.resolution;
-  const double cy = geo_.origin.y + 0.5 * geo_.height * geo_.resolution;
-  const double reach = std::hypot(origin.x - cx, origin.y - cy) +
-                       std::hypot(geo_.width, geo_.height) * geo_.resolution;
-  const double len = std::min({range, max_range, reach});
-  const Point2 end{origin.x + len * std::cos(angle), origin.y + len * std::sin(angle)};
-  const Cell a = cell_of(origin);
+  if (!std::isfinite(origin.x) || !std::isfinite(origin.y) || !std::isfinite(angle)) return;
+  bool hit = range < max_range;
+  const double len = std::min(range, max_range);
+  Point2 end{origin.x + len * std::cos(angle), origin.y + len * std::sin(angle)};
+  Point2 from = origin;
+  const Point2 full_end = end;
+  if (!clip_segment_to_map(geo_, from, end)) return;  // the beam misses the map
+  const bool clipped_end = end.x != full_end.x || end.y != full_end.y;
+  if (clipped_end) hit = false;                        // the hit cell is outside the map
+  const Cell a = cell_of(from);
   const Cell b = cell_of(end);
   for_each_line_cell(a, b, [&](int x, int y) {
     const Cell c{x, y};

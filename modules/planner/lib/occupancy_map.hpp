@@ -92,4 +92,8 @@ class OccupancyMap {
   std::vector<std::uint32_t> changes_;     // cell indexes, reserved to the cell count
 };
 
+// Why: Liang-Barsky clip of the segment p-q to the map grown by one cell, so that lines far
+// outside cost nothing; a segment inside is returned unchanged. False if it misses the map.
+bool clip_segment_to_map(const MapGeometry& geometry, Point2& p, Point2& q);
+
 }  // namespace robuter::plan

@@ -1,8 +1,6 @@
 // Parsers for the thesis' parameter and environment files, and polygon edge rasterisation.
 #include "modules/planner/lib/thesis_files.hpp"
 
-#include <algorithm>
-
 #include "modules/planner/lib/bresenham.hpp"
 #include "modules/planner/lib/text_reader.hpp"
 
@@ -65,36 +63,6 @@ Result<std::vector<Polygon>> load_environment(const std::string& path) {
   return parse_environment(*text, path);
 }
 
-namespace {
-
-// Why: Liang-Barsky clip of a segment to the map grown by one cell, so edges far outside the
-// map cost nothing; segments inside are returned unchanged (same Bresenham cells).
-bool clip_to_map(const MapGeometry& g, Point2& p, Point2& q) {
-  const double x0 = g.origin.x - g.resolution, x1 = g.origin.x + (g.width + 1) * g.resolution;
-  const double y0 = g.origin.y - g.resolution, y1 = g.origin.y + (g.height + 1) * g.resolution;
-  double t0 = 0.0, t1 = 1.0;
-  const double dx = q.x - p.x, dy = q.y - p.y;
-  const double pk[4] = {-dx, dx, -dy, dy};
-  const double qk[4] = {p.x - x0, x1 - p.x, p.y - y0, y1 - p.y};
-  for (int i = 0; i < 4; ++i) {
-    if (pk[i] == 0.0) {
-      if (qk[i] < 0.0) return false;
-      continue;
-    }
-    const double t = qk[i] / pk[i];
-    if (pk[i] < 0.0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
-    if (t0 > t1) return false;
-  }
-  const Point2 a{p.x + t0 * dx, p.y + t0 * dy};
-  const Point2 b{p.x + t1 * dx, p.y + t1 * dy};
-  if (t0 > 0.0) p = a;
-  if (t1 < 1.0) q = b;
-  return true;
-}
-
-}  // namespace
-
 void rasterise_polygons(OccupancyMap& map, const std::vector<Polygon>& polygons) {
   for (const Polygon& poly : polygons) {
     const std::size_t n = poly.vertices.size();
@@ -102,7 +70,7 @@ void rasterise_polygons(OccupancyMap& map, const std::vector<Polygon>& polygons)
     for (std::size_t i = 0; i < n; ++i) {
       Point2 p = poly.vertices[i];
       Point2 q = poly.vertices[(i + 1) % n];
-      if (!clip_to_map(map.geometry(), p, q)) continue;
+      if (!clip_segment_to_map(map.geometry(), p, q)) continue;
       const Cell a = map.cell_of(p);
       const Cell b = map.cell_of(q);
       for_each_line_cell(a, b, [&](int x, int y) {
