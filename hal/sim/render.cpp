@@ -2,6 +2,7 @@
 #include "hal/sim/render.hpp"
 
 #include <cairo-svg.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <cmath>
@@ -360,6 +361,12 @@ Status render_svg(const Scene& scene, const RenderOptions& options,
     return Error{path.string(), 0, "cannot write the picture: " + why};
   }
   return finish_surface(s, scene, v, options, path, false);
+}
+
+// Cairo first (it holds fontconfig objects), then fontconfig itself.
+void release_render_caches() {
+  cairo_debug_reset_static_data();
+  FcFini();
 }
 
 std::vector<SonarBeam> ring_beams(const Pose& robot, const RingLayout& layout,

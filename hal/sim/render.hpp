@@ -83,6 +83,10 @@ Status render_png(const Scene& scene, const RenderOptions& options,
 Status render_svg(const Scene& scene, const RenderOptions& options,
                   const std::filesystem::path& path);
 
+// Frees cairo's and fontconfig's process-wide caches (text drawing fills them). Call once at
+// the end of a program or test run checked by LeakSanitizer; render nothing afterwards.
+void release_render_caches();
+
 // Beams for every ring sensor of a robot at `robot`, given their reported ranges (entry i for
 // sensor i + 1).
 std::vector<SonarBeam> ring_beams(const Pose& robot, const RingLayout& layout,
