@@ -1,6 +1,10 @@
 // Tests of footprints and the (x, y, heading) search: the Robuter passes a 90 cm door, a disc does not.
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include "modules/planner/lib/cspace.hpp"
+
 #include "modules/planner/lib/footprint.hpp"
 #include "modules/planner/lib/heading_search.hpp"
 #include "modules/planner/lib/planner.hpp"
@@ -39,6 +43,53 @@ TEST(Footprint, RectangleMaskFollowsHeading) {
     for (int dx = r.lo; dx <= r.hi; ++dx) EXPECT_TRUE(swept.contains(dx, r.dy));
   EXPECT_NEAR(circumscribed_radius(robuter), 0.6206, 1e-3);
   EXPECT_NEAR(inscribed_radius(robuter), 0.35, 1e-12);
+}
+
+// Why: the prefix-sum build and the incremental stamping must both equal brute force.
+TEST(CSpaceLayer, BuildAndUpdateEqualBruteForce) {
+  std::mt19937 rng(4);
+  OccupancyMap map(MapGeometry{37, 23, 0.05, {}});
+  std::uniform_int_distribution<int> pick(0, 19);
+  for (int y = 0; y < 23; ++y)
+    for (int x = 0; x < 37; ++x) {
+      const int v = pick(rng);
+      if (v == 0) map.mark_occupied({x, y});
+      else if (v < 12) map.mark_free({x, y});
+    }
+  map.clear_changes();
+  const FootprintMask mask = rectangle_mask(RectangleFootprint{}, 0.1, 0.3, 0.5);
+  CSpaceLayer layer;
+  layer.build(map, mask);
+  auto expect_brute = [&](const char* when) {
+    for (int y = 0; y < 23; ++y)
+      for (int x = 0; x < 37; ++x) {
+        bool hit = false;
+        for (const MaskRun& r : mask.runs)
+          for (int dx = r.lo; dx <= r.hi; ++dx) {
+            const Cell o{x + dx, y + r.dy};
+            hit = hit || (map.contains(o) && map.state(o) == CellState::Occupied);
+          }
+        const std::uint8_t want = hit ? kBlocked : map.state({x, y}) == CellState::Unknown ? kUnknown : kFree;
+        ASSERT_EQ(layer.grid().at({x, y}), want) << when << " at " << x << "," << y;
+      }
+  };
+  expect_brute("build");
+  std::vector<ClassChange> changes;
+  std::uniform_int_distribution<int> cx(0, 36), cy(0, 22);
+  for (int round = 0; round < 30; ++round) {
+    for (int k = 0; k < 4; ++k) {
+      const Cell c{cx(rng), cy(rng)};
+      const int v = pick(rng);
+      if (v < 7) map.mark_occupied(c);
+      else if (v < 14) map.mark_free(c);
+      else map.set_count(c, OccupancyMap::kUnknown);
+    }
+    changes.clear();
+    layer.update(map, map.changes(), &changes);
+    map.clear_changes();
+    expect_brute("update");
+    for (const ClassChange& ch : changes) EXPECT_NE(layer.grid().cls[ch.index], ch.before);
+  }
 }
 
 TEST(Footprint, SlicesCoverHalfTurn) {

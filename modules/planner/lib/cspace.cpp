@@ -39,21 +39,31 @@ void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
       row[x + 1] = row[x] + (occ ? 1u : 0u);
     }
   }
+  // Per output row, add each mask run's count of occupied cells (prefix differences); the
+  // columns where the run lies fully inside the map need no clamping (a vectorisable loop).
+  std::vector<std::uint32_t> acc(static_cast<std::size_t>(w));
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      std::uint32_t c = 0;
-      for (const MaskRun& r : mask_.runs) {
-        const int yy = y + r.dy;
-        if (yy < 0 || yy >= h) continue;
+    std::fill(acc.begin(), acc.end(), 0u);
+    for (const MaskRun& r : mask_.runs) {
+      const int yy = y + r.dy;
+      if (yy < 0 || yy >= h) continue;
+      const std::uint32_t* row = prefix.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(w + 1);
+      const int x_in = std::max(0, -r.lo);            // first x with x + lo >= 0
+      const int x_out = std::min(w - 1, w - 1 - r.hi);  // last x with x + hi <= w - 1
+      auto clamped = [&](int x) {
         const int lo = std::max(x + r.lo, 0);
         const int hi = std::min(x + r.hi, w - 1);
-        if (lo > hi) continue;
-        const std::uint32_t* row = prefix.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(w + 1);
-        c += row[hi + 1] - row[lo];
-      }
+        if (lo <= hi) acc[static_cast<std::size_t>(x)] += row[hi + 1] - row[lo];
+      };
+      for (int x = 0; x < std::min(x_in, w); ++x) clamped(x);
+      for (int x = x_in; x <= x_out; ++x)
+        acc[static_cast<std::size_t>(x)] += row[x + r.hi + 1] - row[x + r.lo];
+      for (int x = std::max(x_out + 1, x_in); x < w; ++x) clamped(x);
+    }
+    for (int x = 0; x < w; ++x) {
       const std::uint32_t i = map.index({x, y});
-      cover_[i] = static_cast<std::uint16_t>(std::min<std::uint32_t>(c, 65535));
-      grid_.set({x, y}, class_of(cover_[i], map.state({x, y})));
+      cover_[i] = static_cast<std::uint16_t>(std::min<std::uint32_t>(acc[static_cast<std::size_t>(x)], 65535));
+      grid_.set({x, y}, class_of(cover_[i], map.state_at(i)));
     }
   }
 }

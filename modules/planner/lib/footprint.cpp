@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "modules/planner/lib/geometry.hpp"
 
@@ -28,10 +29,9 @@ FootprintMask mask_from(int reach, Meets&& meets) {
 }
 
 // Why: separating-axis test of the unit cell square centred at (sx, sy) against a rectangle
-// with centre (cx, cy), axis angle th and half extents a (along) and b (across); cell units.
-bool square_meets_rectangle(double sx, double sy, double cx, double cy, double th, double a,
-                            double b) {
-  const double ux = std::cos(th), uy = std::sin(th);
+// with centre (cx, cy), unit axis (ux, uy) and half extents a (along) and b (across); cell units.
+bool square_meets_rectangle(double sx, double sy, double cx, double cy, double ux, double uy,
+                            double a, double b) {
   const double vx = -uy, vy = ux;
   const double ex = sx - cx, ey = sy - cy;
   if (std::fabs(ex) >= a * std::fabs(ux) + b * std::fabs(vx) + 0.5) return false;
@@ -67,14 +67,20 @@ FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, 
   const double grow = radius * 0.5 * step;  // largest displacement to the nearest sample
   const double a = a0 + grow, b = b0 + grow;
   const int reach = static_cast<int>(std::ceil(radius + grow + 1.0));
+  // Mark the cells met at each sampled heading (trigonometry once per sample), then read runs.
+  const int side = 2 * reach + 1;
+  std::vector<std::uint8_t> met(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
+  for (int i = 0; i < samples; ++i) {
+    const double th = heading_lo + step * i;
+    const double c = std::cos(th), sn = std::sin(th);
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        std::uint8_t& cell = met[static_cast<std::size_t>((dy + reach) * side + (dx + reach))];
+        if (!cell && square_meets_rectangle(dx, dy, off * c, off * sn, c, sn, a, b)) cell = 1;
+      }
+  }
   return mask_from(reach, [&](int dx, int dy) {
-    if (dx == 0 && dy == 0) return true;
-    for (int i = 0; i < samples; ++i) {
-      const double th = heading_lo + step * i;
-      if (square_meets_rectangle(dx, dy, off * std::cos(th), off * std::sin(th), th, a, b))
-        return true;
-    }
-    return false;
+    return (dx == 0 && dy == 0) || met[static_cast<std::size_t>((dy + reach) * side + (dx + reach))] != 0;
   });
 }
 

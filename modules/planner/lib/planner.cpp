@@ -15,16 +15,16 @@ void Planner::set_map(const OccupancyMap& map) {
   map_ = map;
   map_.clear_changes();
   const double res = map_.resolution();
-  layers_.clear();
-  if (cfg_.footprint == FootprintKind::Disc) {
-    layers_.resize(1);
-    layers_[0].build(map_, disc_mask(cfg_.radius, res));
-  } else {
-    auto masks = rectangle_slices(cfg_.rectangle, res, cfg_.heading_slices);
-    layers_.resize(masks.size());
-    for (std::size_t k = 0; k < masks.size(); ++k) layers_[k].build(map_, std::move(masks[k]));
-    relaxation_.build(map_, disc_mask(inscribed_radius(cfg_.rectangle), res));
+  if (res != masks_resolution_) {  // masks depend on the resolution only: made once
+    masks_resolution_ = res;
+    masks_.clear();
+    if (cfg_.footprint == FootprintKind::Disc) masks_.push_back(disc_mask(cfg_.radius, res));
+    else masks_ = rectangle_slices(cfg_.rectangle, res, cfg_.heading_slices);
+    relaxation_mask_ = disc_mask(inscribed_radius(cfg_.rectangle), res);
   }
+  layers_.resize(masks_.size());
+  for (std::size_t k = 0; k < masks_.size(); ++k) layers_[k].build(map_, masks_[k]);
+  if (cfg_.footprint == FootprintKind::Rectangle) relaxation_.build(map_, relaxation_mask_);
   slice_grids_.clear();
   for (const CSpaceLayer& l : layers_) slice_grids_.push_back(&l.grid());
   const int w = map_.width(), h = map_.height();
