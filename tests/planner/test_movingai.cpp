@@ -41,6 +41,7 @@ TEST(MovingAiFiles, MalformedMapsGiveClearErrors) {
       {"type octile\nheight 2\nwidth 3\nmap\n...\n", 5, "unexpected end of file"},
       {"type octile\nheight 1\nwidth 1\nmap\n.\n.\n", 6, "after the map rows"},
       {"type octile\nsize 1\nmap\n", 2, "unknown header key"},
+      {"type octile\nheight 5000\nwidth 5000\nmap\n", 4, "too large"},
   };
   for (const Case& c : cases) {
     const auto r = parse_movingai_map(c.text, "bad.map");

@@ -75,8 +75,10 @@ int run_thesis(const Options& o) {
     if (!loaded) return fail(loaded.error());
     map = std::move(*loaded);
   } else {
-    const MapGeometry g{static_cast<int>(std::ceil(o.width_m / o.resolution - 1e-9)),
-                        static_cast<int>(std::ceil(o.height_m / o.resolution - 1e-9)), o.resolution, {}};
+    const double cols = std::ceil(o.width_m / o.resolution - 1e-9);
+    const double rows = std::ceil(o.height_m / o.resolution - 1e-9);
+    if (cols * rows > 16e6) return fail(Error{"", 0, "map too large: more than 16 million cells"});
+    const MapGeometry g{static_cast<int>(cols), static_cast<int>(rows), o.resolution, {}};
     map = OccupancyMap(g);
     if (!o.environment.empty()) {
       auto env = load_environment(o.environment);

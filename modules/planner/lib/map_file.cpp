@@ -95,8 +95,8 @@ Result<OccupancyMap> parse_map(std::string_view text, const std::string& name) {
   if (i >= lines.size()) return Error{name, static_cast<int>(lines.size()), "no 'data' line"};
   if (g.width < 0 || g.height < 0 || g.resolution <= 0.0)
     return Error{name, static_cast<int>(i) + 1, "width, height and resolution must come before 'data'"};
-  if (static_cast<long long>(g.width) * g.height > 100'000'000)
-    return Error{name, static_cast<int>(i) + 1, "map too large (more than 1e8 cells)"};
+  if (static_cast<long long>(g.width) * g.height > 16'000'000)
+    return Error{name, static_cast<int>(i) + 1, "map too large (more than 16 million cells)"};
   ++i;
   OccupancyMap map(g, static_cast<std::uint8_t>(threshold));
   for (int y = g.height - 1; y >= 0; --y, ++i) {

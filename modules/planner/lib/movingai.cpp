@@ -51,7 +51,7 @@ Result<OccupancyMap> parse_movingai_map(std::string_view text, const std::string
   if (i >= lines.size()) return Error{name, static_cast<int>(lines.size()), "no 'map' line"};
   if (!typed) return Error{name, 1, "missing 'type octile'"};
   if (width < 0 || height < 0) return Error{name, static_cast<int>(i) + 1, "missing width or height"};
-  if (width * height > 100'000'000) return Error{name, static_cast<int>(i) + 1, "map too large (more than 1e8 cells)"};
+  if (width * height > 16'000'000) return Error{name, static_cast<int>(i) + 1, "map too large (more than 16 million cells)"};
   ++i;
   OccupancyMap map(MapGeometry{static_cast<int>(width), static_cast<int>(height), 1.0, {}}, 1);
   for (int y = 0; y < height; ++y, ++i) {
