@@ -23,21 +23,24 @@ constexpr Rgb kObstacleEdge{0.20, 0.20, 0.22};
 constexpr Rgb kDoor{0.10, 0.60, 0.20};
 constexpr Rgb kRobot{0.55, 0.70, 0.95};
 constexpr Rgb kRobotEdge{0.05, 0.15, 0.45};
-constexpr Rgb kTrail{0.85, 0.35, 0.10};
+constexpr Rgb kTrail{0.75, 0.05, 0.35};
 constexpr Rgb kBeam{0.95, 0.75, 0.10};
 constexpr Rgb kPanTilt{0.70, 0.10, 0.70};
 constexpr Rgb kGoal{0.85, 0.10, 0.10};
 constexpr Rgb kText{0.10, 0.10, 0.10};
 
+// Selects a colour (with transparency) for the next fill or stroke.
 void set(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
 }
 
+// Starts a new path piece at a world point.
 void move(cairo_t* cr, const View& v, const Vec2& w) {
   const Vec2 d = v.to_device(w);
   cairo_move_to(cr, d.x(), d.y());
 }
 
+// Extends the current path to a world point.
 void line(cairo_t* cr, const View& v, const Vec2& w) {
   const Vec2 d = v.to_device(w);
   cairo_line_to(cr, d.x(), d.y());
@@ -63,6 +66,7 @@ void wedge(cairo_t* cr, const View& v, const Vec2& o, double dir, double half, d
   cairo_close_path(cr);
 }
 
+// A light 1 m grid, to read distances off the picture.
 void draw_grid(cairo_t* cr, const View& v) {
   set(cr, kGrid);
   cairo_set_line_width(cr, 1.0);
@@ -77,6 +81,7 @@ void draw_grid(cairo_t* cr, const View& v) {
   cairo_stroke(cr);
 }
 
+// Obstacles filled grey with a dark outline; thin (two-vertex) walls as thick lines.
 void draw_obstacles(cairo_t* cr, const View& v, const World& w) {
   for (const auto& ob : w.obstacles()) {
     const auto& p = ob.vertices;
@@ -138,6 +143,7 @@ void pose_arrow(cairo_t* cr, const View& v, const Pose& p, double len, const Rgb
   cairo_fill(cr);
 }
 
+// Start pose (dashed body outline), goal (red cross) and named markers (arrows).
 void draw_marks(cairo_t* cr, const View& v, const Scene& s, bool labels) {
   const World& w = *s.world;
   if (w.start) {
@@ -167,10 +173,11 @@ void draw_marks(cairo_t* cr, const View& v, const Scene& s, bool labels) {
   }
 }
 
+// Where the robot has been, as one polyline.
 void draw_trail(cairo_t* cr, const View& v, const Trail& t) {
   if (t.size() < 2) return;
   set(cr, kTrail);
-  cairo_set_line_width(cr, 1.5);
+  cairo_set_line_width(cr, 2.0);
   move(cr, v, t[0]);
   for (std::size_t i = 1; i < t.size(); ++i) line(cr, v, t[i]);
   cairo_stroke(cr);
@@ -237,6 +244,7 @@ void draw_robot(cairo_t* cr, const View& v, const RobotGeometry& g, const Pose& 
   pose_arrow(cr, v, p, 0.8 * g.axle_to_front, kRobotEdge);
 }
 
+// Enlarges a box to contain a point.
 void grow(Box& b, const Vec2& p) {
   b.lo = b.lo.cwiseMin(p);
   b.hi = b.hi.cwiseMax(p);
@@ -264,6 +272,7 @@ Status finish_surface(cairo_surface_t* surface, const Scene& scene, const View& 
 
 }  // namespace
 
+// World units with y up: scale by the resolution, flip y, move the world's corner to 0.
 void View::apply(cairo_t* cr) const {
   cairo_scale(cr, scale, -scale);
   cairo_translate(cr, -world.lo.x(), -world.hi.y());
@@ -302,7 +311,7 @@ View make_view(const Scene& scene, const RenderOptions& options) {
   return v;
 }
 
-// Layers, bottom to top: floor, grid, underlay, obstacles, doors, marks, trail, beams, robot,
+// Layers, bottom to top: floor, grid, underlay, obstacles, doors, marks, beams, trail, robot,
 // pan-tilt, overlay, title.
 void render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options) {
   cairo_save(cr);
@@ -322,8 +331,8 @@ void render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptio
     draw_doors(cr, view, *scene.world, options.labels);
     draw_marks(cr, view, scene, options.labels);
   }
-  if (scene.trail != nullptr) draw_trail(cr, view, *scene.trail);
   draw_beams(cr, view, scene.beams, kBeam, options.cones, options.labels);
+  if (scene.trail != nullptr) draw_trail(cr, view, *scene.trail);
   if (scene.robot) draw_robot(cr, view, scene.geometry, *scene.robot);
   draw_beams(cr, view, scene.pan_tilt, kPanTilt, options.cones, false);
   if (scene.overlay) {
@@ -340,6 +349,7 @@ void render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptio
   cairo_restore(cr);
 }
 
+// An ARGB image surface sized by make_view, written with cairo's PNG writer.
 Status render_png(const Scene& scene, const RenderOptions& options,
                   const std::filesystem::path& path) {
   const View v = make_view(scene, options);
@@ -351,6 +361,7 @@ Status render_png(const Scene& scene, const RenderOptions& options,
   return finish_surface(s, scene, v, options, path, true);
 }
 
+// A vector picture of the same drawing, units = points.
 Status render_svg(const Scene& scene, const RenderOptions& options,
                   const std::filesystem::path& path) {
   const View v = make_view(scene, options);
@@ -369,6 +380,7 @@ void release_render_caches() {
   FcFini();
 }
 
+// Mount positions moved into the world; ranges as reported (the ring is uncalibrated).
 std::vector<SonarBeam> ring_beams(const Pose& robot, const RingLayout& layout,
                                   std::span<const double, kRingSensors> ranges,
                                   const SonarParams& params) {
@@ -386,6 +398,7 @@ std::vector<SonarBeam> ring_beams(const Pose& robot, const RingLayout& layout,
   return out;
 }
 
+// Reported pan-tilt readings are raw: undo the calibration line to draw true distances.
 std::vector<SonarBeam> pan_tilt_beams(const Pose& robot, const PanTiltMount& mount,
                                       double direction, const PanTiltReading& reading,
                                       const SonarParams& params) {

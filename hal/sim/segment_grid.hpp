@@ -128,6 +128,7 @@ class SegmentGrid {
   int rows() const { return ny_; }
 
  private:
+  // Cell column (and row, below) of a coordinate, clamped to the grid.
   int clamp_x(double x) const {
     return std::clamp(static_cast<int>(std::floor((x - origin_.x()) / cell_)), 0, nx_ - 1);
   }

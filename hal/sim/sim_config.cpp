@@ -27,10 +27,12 @@ void positive(Fields& f, const char* key, double v) {
   if (!(v > 0.0)) fail_key(f, key, "must be positive");
 }
 
+// Refuses negative values (noises, tolerances, delays).
 void non_negative(Fields& f, const char* key, double v) {
   if (v < 0.0) fail_key(f, key, "must not be negative");
 }
 
+// Refuses probabilities outside 0..1.
 void probability(Fields& f, const char* key, double v) {
   if (v < 0.0 || v > 1.0) fail_key(f, key, "must be within 0..1");
 }
@@ -81,6 +83,7 @@ void read_sonar_params(Fields& f, SonarParams& p) {
   maybe(p.no_echo, f.opt_number("no_echo"));
 }
 
+// [robot]: geometry and drive; checks the result is a usable body.
 void read_robot(Fields& f, RobotParams& r) {
   auto& g = r.geometry;
   maybe(g.length, f.opt_number("length"));
@@ -109,6 +112,7 @@ void read_robot(Fields& f, RobotParams& r) {
   }
 }
 
+// [odometry]: encoder and slip errors.
 void read_odometry(Fields& f, OdometryErrors& o) {
   maybe(o.scale_left, f.opt_number("scale_left"));
   maybe(o.scale_right, f.opt_number("scale_right"));
@@ -145,6 +149,7 @@ void read_sensor(const toml::table& t, std::string_view file, RingLayout& layout
   f.finish();
 }
 
+// Applies each known section; throws ParseFailure on the first error.
 SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
   Fields top(root, file, "configuration");
   if (const auto* n = top.get("robot")) {
@@ -193,6 +198,7 @@ SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
 
 }  // namespace
 
+// Public entry points: the internal exception becomes an Error value here.
 Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view file,
                                    SimConfig base) {
   try {
@@ -202,6 +208,7 @@ Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view fi
   }
 }
 
+// Parses first, then applies.
 Result<SimConfig> parse_sim_config(std::string_view text, std::string_view file, SimConfig base) {
   try {
     return apply(detail::parse_toml(text, file), file, std::move(base));
@@ -210,6 +217,7 @@ Result<SimConfig> parse_sim_config(std::string_view text, std::string_view file,
   }
 }
 
+// Reads the whole file, then parses it.
 Result<SimConfig> load_sim_config(const std::filesystem::path& path, SimConfig base) {
   std::string text;
   if (!detail::read_text_file(path.string(), text)) {

@@ -60,6 +60,7 @@ void SonarModel::set_params(const SonarParams& params) {
   cos_max_incidence_ = std::cos(std::clamp(params_.max_incidence, 0.0, kPi / 2));
 }
 
+// Mount moved into the world frame, then the world-frame trace.
 Echo SonarModel::trace(const Pose& robot, const SonarMount& mount) {
   Vec2 o;
   double d;
@@ -160,6 +161,7 @@ Echo SonarModel::trace(const Vec2& origin, double direction) {
   }
 }
 
+// Mount moved into the world frame, then the world-frame measurement.
 double SonarModel::measure(const Pose& robot, const SonarMount& mount, Rng* rng) {
   Vec2 o;
   double d;

@@ -25,15 +25,18 @@ std::string type_name(const toml::node& node) {
   }
 }
 
+// Keeps a reference to the table: it must outlive the reader.
 Fields::Fields(const toml::table& table, std::string_view file, std::string what,
                double length_scale)
     : table_(table), file_(file), what_(std::move(what)), scale_(length_scale) {}
 
+// Every key asked for becomes known, present or not, so finish() accepts it.
 const toml::node* Fields::get(std::string_view key) {
   known_.emplace(key);
   return table_.get(key);
 }
 
+// All errors of a table read as "<what>: <message>".
 void Fields::fail(int line, const std::string& message) const {
   throw ParseFailure{Error{file_, line, what_ + ": " + message}};
 }
@@ -63,12 +66,14 @@ Vec2 Fields::as_point(const toml::node& node, std::string_view key) const {
   return {as_number(*arr->get(0), key) * scale_, as_number(*arr->get(1), key) * scale_};
 }
 
+// Required keys fail at the table's own line when missing.
 double Fields::number(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
   return as_number(*n, key);
 }
 
+// Optional keys are empty when absent, checked when present.
 std::optional<double> Fields::opt_number(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) return std::nullopt;
@@ -77,12 +82,14 @@ std::optional<double> Fields::opt_number(std::string_view key) {
 
 double Fields::length(std::string_view key) { return number(key) * scale_; }
 
+// A length in the file's units, returned in metres.
 std::optional<double> Fields::opt_length(std::string_view key) {
   auto v = opt_number(key);
   if (v) *v *= scale_;
   return v;
 }
 
+// Whole numbers only (counts, seeds, indices).
 std::optional<std::int64_t> Fields::opt_integer(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) return std::nullopt;
@@ -91,6 +98,7 @@ std::optional<std::int64_t> Fields::opt_integer(std::string_view key) {
   return i->get();
 }
 
+// true or false, nothing else.
 std::optional<bool> Fields::opt_bool(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) return std::nullopt;
@@ -99,6 +107,7 @@ std::optional<bool> Fields::opt_bool(std::string_view key) {
   return b->get();
 }
 
+// A string, nothing else.
 std::optional<std::string> Fields::opt_string(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) return std::nullopt;
@@ -107,18 +116,21 @@ std::optional<std::string> Fields::opt_string(std::string_view key) {
   return s->get();
 }
 
+// An optional [x, y] in the file's units.
 std::optional<Vec2> Fields::opt_point(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) return std::nullopt;
   return as_point(*n, key);
 }
 
+// A required [x, y] in the file's units.
 Vec2 Fields::point(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
   return as_point(*n, key);
 }
 
+// An array of [x, y] points in the file's units.
 std::vector<Vec2> Fields::points(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
@@ -144,6 +156,7 @@ void Fields::finish() const {
   }
 }
 
+// toml++ throws parse_error; it becomes a ParseFailure with the same line.
 toml::table parse_toml(std::string_view text, std::string_view file) {
   try {
     return toml::parse(text, file);
@@ -153,6 +166,7 @@ toml::table parse_toml(std::string_view text, std::string_view file) {
   }
 }
 
+// Binary mode: line ends are the parsers' business.
 bool read_text_file(const std::string& path, std::string& out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;

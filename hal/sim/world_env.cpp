@@ -152,6 +152,7 @@ World read_env(std::string_view text, std::string_view file) {
 
 }  // namespace
 
+// Names the world after the file and builds its grid; errors become values here.
 Result<World> parse_world_env(std::string_view text, std::string_view file) {
   try {
     World w = read_env(text, file);

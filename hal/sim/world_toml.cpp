@@ -32,6 +32,7 @@ class TomlWorldReader {
   TomlWorldReader(std::string_view text, std::string_view file)
       : file_(file), root_(detail::parse_toml(text, file)) {}
 
+  // Sections in a fixed order (units before lengths); the grid is built at the end.
   World read() {
     check_sections();
     world_.source = file_;
@@ -185,10 +186,11 @@ class TomlWorldReader {
     const double len = (to - from).norm();
     if (len <= 0.0) f.fail(f.line(), "from and to are the same point");
     const Vec2 u = (to - from) / len;
+    // A door's opening along the wall line.
     struct Gap {
-      double s0, s1;  // along the wall, m
-      int line;       // line of the door entry
-      std::string name;
+      double s0, s1;     // start and end along the wall from `from`, m
+      int line;          // line of the door entry
+      std::string name;  // door name, for messages
     };
     std::vector<Gap> gaps;
     if (doors_node != nullptr) {
@@ -304,6 +306,7 @@ class TomlWorldReader {
 
 }  // namespace
 
+// Reading, then the pose checks; the internal exception becomes an Error value here.
 Result<World> parse_world_toml(std::string_view text, std::string_view file,
                                const RobotGeometry& robot) {
   try {
@@ -346,6 +349,7 @@ Status check_world_poses(const World& world, const RobotGeometry& robot) {
   return Ok{};
 }
 
+// The extension picks the format: the seed's files have none of their own.
 Result<World> load_world(const std::filesystem::path& path, const RobotGeometry& robot) {
   std::string text;
   if (!detail::read_text_file(path.string(), text)) {

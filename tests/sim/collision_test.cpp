@@ -11,6 +11,7 @@
 namespace robuter::sim {
 namespace {
 
+// Instant speed changes: the worst case for contact.
 RobotParams quick() {
   RobotParams p;
   p.limits.max_accel = 0.0;  // instant speed changes: the worst case for contact

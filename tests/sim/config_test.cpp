@@ -62,6 +62,7 @@ offset = 0.0
   EXPECT_DOUBLE_EQ(c.pan_tilt.scale, 1.0);
 }
 
+// Expects a configuration error at `line` whose message contains `fragment`.
 void expect_error(const std::string& text, int line, const std::string& fragment) {
   const auto r = parse_sim_config(text, "sim.toml");
   ASSERT_FALSE(r.ok());

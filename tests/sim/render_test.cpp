@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -14,6 +15,7 @@
 namespace robuter::sim {
 namespace {
 
+// A whole file as bytes.
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -27,6 +29,7 @@ struct Picture {
   Scene scene;
   int overlay_calls = 0;
 
+  // Loads the world, drives 4 s on a curve, reads every sensor, fills the scene.
   Picture() {
     auto w = load_world(test::world_path("default.toml"));
     EXPECT_TRUE(w.ok());
@@ -85,6 +88,35 @@ TEST(Render, DefaultWorldToSvg) {
   const std::string svg = slurp(path);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_GT(svg.size(), 10000u);
+}
+
+// Every shipped world with the robot at its start and its ring readings, one PNG each (handy
+// pictures of the worlds, in the build tree).
+TEST(Render, EveryShippedWorld) {
+  for (const auto& e : std::filesystem::directory_iterator(ROBUTER_WORLDS_DIR)) {
+    const auto ext = e.path().extension();
+    if (ext != ".toml" && ext != ".env") continue;
+    SCOPED_TRACE(e.path().string());
+    auto w = load_world(e.path());
+    ASSERT_TRUE(w.ok());
+    const World& world = w.value();
+    Scene scene;
+    scene.world = &world;
+    scene.title = e.path().filename().string();
+    if (world.start) {
+      scene.robot = *world.start;
+      SonarModel ring(world, default_ring_params());
+      const RingLayout layout = default_ring_layout();
+      std::array<double, kRingSensors> ranges{};
+      for (int i = 0; i < kRingSensors; ++i) ranges[i] = ring.measure(*world.start, layout[i]);
+      scene.beams = ring_beams(*world.start, layout, ranges, default_ring_params());
+    }
+    const std::string path =
+        test::out_path("world_" + e.path().stem().string() + "_" + ext.string().substr(1) + ".png");
+    const Status s = render_png(scene, RenderOptions{}, path);
+    ASSERT_TRUE(s.ok()) << s.error().describe();
+    EXPECT_GT(std::filesystem::file_size(path), 5000u);
+  }
 }
 
 TEST(Render, UnwritablePathIsAnError) {

@@ -17,19 +17,20 @@ namespace {
 // A wandering robot: forward with a slight curve, turning on the spot when the front sensors
 // report something near, so that it keeps moving around the default world's rooms.
 struct Scenario {
-  const World& world;
-  Robot robot;
-  SonarModel ring;
-  SonarModel ptu;
-  RingLayout layout = default_ring_layout();
-  PanTiltMount mount;
-  Rng noise{1234};
-  std::array<double, kRingSensors> ranges{};
+  const World& world;                        // the world wandered in
+  Robot robot;                               // the robot
+  SonarModel ring;                           // ring sonar model (noisy)
+  SonarModel ptu;                            // pan-tilt sonar model
+  RingLayout layout = default_ring_layout(); // ring sensor mounts
+  PanTiltMount mount;                        // pan-tilt mount
+  Rng noise{1234};                           // sonar noise and manoeuvre durations
+  std::array<double, kRingSensors> ranges{}; // last ring readings, m
   double pan = 0.0;         // pan direction, rad
   double pan_step = 0.0873; // 5° per firing
   long sonar_reads = 0;     // ring sensor evaluations
   long ptu_reads = 0;       // pan-tilt firings (two sensors each)
 
+  // The robot at the world's start, noisy ring sonars, ideal pan-tilt sonars.
   explicit Scenario(const World& w)
       : world(w),
         robot(w, RobotParams{}, *w.start),
@@ -42,7 +43,7 @@ struct Scenario {
   }
 
   // What the wanderer is doing, and until which tick.
-  enum class Mode { Forward, Turn, Back } mode = Mode::Forward;
+  enum class Mode { Forward, Turn, Back } mode = Mode::Forward;  // current manoeuvre
   long until = 0;  // tick at which the current manoeuvre ends
 
   // One 10 ms tick number `k`.
@@ -82,6 +83,7 @@ struct Scenario {
 
 }  // namespace
 
+// Runs at least 600 simulated seconds and at least one wall second, then prints the rates.
 int main(int argc, char** argv) {
   const std::string path = argc > 1 ? argv[1] : std::string(ROBUTER_WORLDS_DIR) + "/default.toml";
   auto w = load_world(path);

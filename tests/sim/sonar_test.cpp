@@ -18,6 +18,7 @@ std::vector<Vec2> wall(const Vec2& p, double normal) {
   return {p - 10.0 * t, p + 10.0 * t};
 }
 
+// A world holding only that wall.
 World one_wall(const Vec2& p, double normal) {
   World w;
   w.add_obstacle({"wall", wall(p, normal), 0});

@@ -14,12 +14,14 @@
 namespace robuter::sim {
 namespace {
 
+// Loads a shipped world, failing the test (and returning an empty world) on error.
 World load(const std::string& name) {
   auto r = load_world(test::world_path(name));
   EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().describe());
   return r.ok() ? std::move(r).value() : World{};
 }
 
+// The marker of that name, or null.
 const Marker* marker(const World& w, const std::string& name) {
   for (const auto& m : w.markers) {
     if (m.name == name) return &m;
