@@ -1,0 +1,107 @@
+// Test stand-in for the serial module: the owner of the link's topics, driven by the test.
+// (The real robuter::SerialModule lives in modules/serial and is never linked into these tests.)
+#pragma once
+
+#include <cstdint>
+
+#include "kernel/kernel.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+// Publishes what the link would publish for each protocol command; optionally triggers the
+// emergency module like a link that wants a same-tick reaction.
+class SerialModule {
+ public:
+  SerialModule(Blackboard& bb, Kernel& k)
+      : k_(k),
+        motion_(bb.link_motion.writer()),
+        servo_(bb.servo_request.writer()),
+        odometry_(bb.odometry_set.writer()),
+        go_to_(bb.go_to.writer()),
+        us_(bb.us_settings.writer()),
+        status_(bb.link_status.writer()) {}
+
+  // Any well-formed message: the communication watchdog's time stamp.
+  void message() {
+    const std::uint64_t t = k_.tick();
+    status_.modify([&](LinkStatus& s) { s.last_message_tick = t; });
+  }
+  // AM left right.
+  void am(std::int32_t left, std::int32_t right) {
+    message();
+    const std::uint64_t t = k_.tick();
+    motion_.modify([&](MotionRequest& m) {
+      m.left = left;
+      m.right = right;
+      ++m.seq;
+      m.tick = t;
+    });
+  }
+  // ASN / ASF.
+  void as(bool on) {
+    message();
+    servo_.modify([&](ServoRequest& s) {
+      s.on = on;
+      ++s.seq;
+    });
+  }
+  // AC x y theta.
+  void ac(std::int32_t x, std::int32_t y, std::int32_t theta) {
+    message();
+    odometry_.modify([&](OdometrySet& o) {
+      o.x = x;
+      o.y = y;
+      o.theta = theta;
+      ++o.seq;
+    });
+  }
+  // AW x y theta (active) or a cancel.
+  void aw(std::int32_t x, std::int32_t y, std::int32_t theta, bool active = true) {
+    message();
+    go_to_.modify([&](GoToRequest& g) {
+      g.x = x;
+      g.y = y;
+      g.theta = theta;
+      g.active = active;
+      ++g.seq;
+    });
+  }
+  // UT table (bit s-1 = sensor s).
+  void ut(std::uint32_t table) {
+    message();
+    us_.modify([&](UltrasonicSettings& s) { s.user_table = table; });
+  }
+  // Uu on/off.
+  void uu(bool on) {
+    message();
+    us_.modify([&](UltrasonicSettings& s) { s.auto_toggle = on; });
+  }
+  // UD ticks.
+  void ud(std::uint32_t ticks) {
+    message();
+    us_.modify([&](UltrasonicSettings& s) { s.node_delay_ticks = ticks; });
+  }
+  // The settings as the real serial module publishes them at construction.
+  void settings(const UltrasonicSettings& s) { us_.publish(s); }
+  // XR.
+  void xr() {
+    message();
+    status_.modify([](LinkStatus& s) { ++s.reenable_seq; });
+  }
+  // The stop byte (not a message).
+  void stop_byte() {
+    status_.modify([](LinkStatus& s) { ++s.stop_seq; });
+  }
+
+ private:
+  Kernel& k_;
+  Writer<MotionRequest> motion_;
+  Writer<ServoRequest> servo_;
+  Writer<OdometrySet> odometry_;
+  Writer<GoToRequest> go_to_;
+  Writer<UltrasonicSettings> us_;
+  Writer<LinkStatus> status_;
+};
+
+}  // namespace robuter
