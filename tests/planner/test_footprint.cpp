@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "modules/planner/lib/cost_field.hpp"
 #include "modules/planner/lib/cspace.hpp"
 
 #include "modules/planner/lib/footprint.hpp"
@@ -171,6 +172,52 @@ TEST(DoorCrossing, NarrowerDoorBlocksTheRectangleToo) {
   Planner planner(rect);
   planner.set_map(m);
   EXPECT_EQ(planner.plan({1.0, 0.8, 0.0}, {5.0, 3.2}).status, PlanStatus::Unreachable);
+}
+
+// Why: the bucket-ring open list must give the heap's (exact) costs, with and without a
+// heuristic field, in both motion models.
+TEST(HeadingSearch, RingEqualsHeap) {
+  std::mt19937 rng(8);
+  const int w = 30, h = 24, k_count = 8;
+  std::vector<PassGrid> grids(k_count, PassGrid(w, h));
+  PassGrid relax(w, h);
+  std::bernoulli_distribution blocked(0.12);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      bool any_free = false;
+      for (int k = 0; k < k_count; ++k) {
+        const bool b = blocked(rng);
+        grids[static_cast<std::size_t>(k)].set({x, y}, b ? kBlocked : kFree);
+        any_free = any_free || !b;
+      }
+      relax.set({x, y}, any_free ? kFree : kBlocked);
+    }
+  std::vector<const PassGrid*> slices;
+  for (const PassGrid& g : grids) slices.push_back(&g);
+  HeadingSearch search;
+  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1), pk(0, k_count - 1);
+  int found = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const CellPose start{px(rng), py(rng), pk(rng)};
+    const Cell goal{px(rng), py(rng)};
+    CostField field;
+    field.compute(relax, goal);
+    for (MotionModel motion : {MotionModel::Aligned, MotionModel::Holonomic})
+      for (const CostField* heuristic : {static_cast<const CostField*>(nullptr), static_cast<const CostField*>(&field)}) {
+        HeadingOptions opt;
+        opt.motion = motion;
+        opt.rotation_step_cost = 0.7;
+        const PlanResult a = search.find(slices, start, goal, opt, {}, heuristic);
+        opt.heap = true;
+        const PlanResult b = search.find(slices, start, goal, opt, {}, heuristic);
+        ASSERT_EQ(a.status, b.status) << trial;
+        if (a.found()) {
+          ++found;
+          EXPECT_NEAR(a.cost, b.cost, 1e-9) << trial;
+        }
+      }
+  }
+  EXPECT_GT(found, 40);
 }
 
 TEST(HeadingSearch, GoalOutsideAndBlockedStart) {

@@ -30,6 +30,7 @@ void HeadingSearch::reserve(int width, int height, int slices) {
     gen_ = 0;
   }
   open_.reserve(states);
+  ring_.reserve(states);
   path_.reserve(2 * stored + static_cast<std::size_t>(std::max(slices, 1)));
   const auto k = static_cast<std::size_t>(std::max(slices, 1));
   if (cls_of_.size() < k) cls_of_.resize(k, nullptr);
@@ -79,6 +80,17 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   const double turn = std::max(options.rotation_step_cost, 0.0);
   Node* nodes = nodes_.data();
 
+  // Open list: the bucket ring when edge costs are bounded enough, else the heap (see
+  // BucketRing: with the ring, closed states may be reopened and the loop ends when the lowest
+  // bucket reaches the best goal cost; with the heap, when the popped f reaches it).
+  const double max_edge = std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn);
+  const double h0 = h_of(g0.index(sc));
+  if (h0 == CostField::kInfinity) return r;  // the relaxation already says unreachable
+  const bool use_ring = !options.heap && ring_.reset(kBucketWidth, max_edge, h0);
+  open_.clear();
+  double best = CostField::kInfinity;
+  std::uint32_t reached = 0;
+
   auto relax = [&](std::uint32_t cell, int k, double ng, std::uint8_t how) {
     const std::uint32_t s = static_cast<std::uint32_t>(k) * stored + cell;
     Node& n = nodes[s];
@@ -86,32 +98,46 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       const double h = h_of(cell);
       if (h == CostField::kInfinity) return;  // the relaxation cannot reach the goal from here
       n = Node{ng, gen_, how, 0};
-      open_.push(s, ng + h, static_cast<float>(h));
-    } else if (!n.closed && ng < n.g) {
+      if (use_ring) ring_.push(s, ng + h);
+      else open_.push(s, ng + h, static_cast<float>(h));
+    } else if (ng < n.g - 1e-9 && (use_ring || !n.closed)) {
+      const double h = h_of(cell);
+      if (n.closed) {
+        n.closed = 0;  // reopened (ring only): its first expansion came a little early
+        ring_.push(s, ng + h);
+      } else if (use_ring) {
+        ring_.lower_key(s, n.g + h, ng + h);
+      } else {
+        open_.decrease(s, ng + h, static_cast<float>(h));
+      }
       n.g = ng;
       n.parent = how;
-      const double h = h_of(cell);
-      open_.decrease(s, ng + h, static_cast<float>(h));
+    } else {
+      return;
+    }
+    if (cell == t && ng < best) {
+      best = ng;
+      reached = s;
     }
   };
 
-  open_.clear();
   relax(g0.index(sc), start.slice, 0.0, kNoMove);
-  std::uint32_t reached = 0;
-  bool found = false;
-  while (!open_.empty()) {
-    const std::uint32_t s = open_.pop().node;
+  for (;;) {
+    std::uint32_t s;
+    if (use_ring) {
+      if (ring_.empty() || ring_.lower() >= best) break;
+      s = ring_.pop();
+    } else {
+      if (open_.empty() || open_.top().key >= best) break;
+      s = open_.pop().node;
+    }
     Node& ns = nodes[s];
     ns.closed = 1;
-    ++r.expanded;
     const std::uint32_t u = s % stored;
     const int k = static_cast<int>(s / stored);
-    if (u == t) {
-      reached = s;
-      found = true;
-      break;
-    }
     const double gu = ns.g;
+    if (u == t || gu + h_of(u) >= best) continue;
+    ++r.expanded;
     const std::uint8_t* cls = cls_of[k];
     const std::uint8_t cu = cls[u];
     const std::uint8_t bits = allowed[k];
@@ -133,6 +159,7 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
         relax(u, down, gu + turn, 9);
     }
   }
+  const bool found = best != CostField::kInfinity;
   if (!found) return r;  // Unreachable
 
   // Walk back from the goal state.

@@ -8,6 +8,7 @@
 
 #include "modules/planner/lib/cost_field.hpp"
 #include "modules/planner/lib/geometry.hpp"
+#include "modules/planner/lib/bucket_ring.hpp"
 #include "modules/planner/lib/indexed_heap.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
 #include "modules/planner/lib/plan_result.hpp"
@@ -25,6 +26,7 @@ enum class MotionModel : std::uint8_t {
 struct HeadingOptions {
   MotionModel motion = MotionModel::Aligned;  // allowed moves within a slice
   double rotation_step_cost = 0.0;            // cells: cost of turning by one slice in place
+  bool heap = false;                          // force the heap open list (tests compare)
 };
 
 // A* over states (cell, slice). Moves: the allowed grid moves within a slice (both cells, and
@@ -33,9 +35,12 @@ struct HeadingOptions {
 // an adjacent slice when the cell is free in both (their union covers the turn). The goal is a
 // cell at any heading. Heuristic: the cost field of a relaxation (the map dilated by the
 // footprint's inscribed disc: free for the rectangle at some heading implies free for the disc),
-// which is admissible and consistent; without one, octile distance.
+// which is admissible and consistent; without one, octile distance. Open list: a BucketRing
+// (exact, with reopening), or a 4-ary heap when unknown cells are far dearer.
 class HeadingSearch {
  public:
+  static constexpr double kBucketWidth = 0.5;  // cells of f per open-list bucket
+
   // Why: size every buffer for slices of width x height (the only allocation).
   void reserve(int width, int height, int slices);
 
@@ -56,11 +61,12 @@ class HeadingSearch {
   };
 
   std::vector<Node> nodes_;    // slice-major: slice * stored + cell index
-  IndexedHeap open_;           // open list
+  IndexedHeap open_;           // open list for very uneven costs
   std::vector<CellPose> path_; // last path, start first
   std::uint32_t gen_ = 0;      // generation stamp
   std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
   std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
+  BucketRing ring_;            // open list when edge costs allow (else open_)
 };
 
 // Why: which of the 8 moves a slice allows under a motion model (bit m set = move m allowed).
