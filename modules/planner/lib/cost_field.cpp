@@ -15,6 +15,7 @@ void CostField::reserve(int width, int height) {
     work_.reserve(stored);
   }
   heap_.reserve(stored);
+  ring_.reserve(stored);
 }
 
 bool CostField::compute(const PassGrid& grid, Cell goal, const CostModel& costs) {
@@ -34,8 +35,12 @@ bool CostField::compute(const PassGrid& grid, Cell goal, const CostModel& costs)
     return false;
   }
   goal_index_ = grid.index(goal);
+  // One seed: Dijkstra's keys stay within two edges of the lowest, so the bucket ring fits
+  // (label-correcting: a cell improved after its pop is queued again, so the result is exact).
+  use_ring_ = ring_.reset(kBucketWidth, kSqrt2 * std::max(1.0, costs_.unknown_cost), 0.0);
   seed(goal_index_);
   run();
+  use_ring_ = false;
   return grid.at(goal) != kBlocked;
 }
 
@@ -54,7 +59,17 @@ bool CostField::edge_ok(std::uint32_t u, int m) const {
          cls[u + static_cast<std::uint32_t>(mt_.side_b[m])] != kBlocked;
 }
 
-void CostField::push_or_lower(std::uint32_t v, double d) {
+// Why: queue v with key d, or lower its key (old = the key it is queued with = its old dist).
+void CostField::push_or_lower(std::uint32_t v, double old, double d) {
+  if (use_ring_) {
+    if (in_heap_[v]) {
+      ring_.lower_key(v, old, d);
+    } else {
+      in_heap_[v] = 1;
+      ring_.push(v, d);
+    }
+    return;
+  }
   if (in_heap_[v]) {
     heap_.decrease(v, d, 0.0f);
   } else {
@@ -68,12 +83,14 @@ void CostField::seed(std::uint32_t v) {
   const std::uint8_t* cls = grid_->cls.data();
   if (cls[v] == kBlocked) return;
   if (v == goal_index_) {
+    const double old = dist_[v];
     dist_[v] = 0.0;
     next_[v] = kNoMove;
-    push_or_lower(v, 0.0);
+    push_or_lower(v, old, 0.0);
     return;
   }
-  double best = dist_[v];
+  const double old = dist_[v];
+  double best = old;
   int best_m = -1;
   for (int m = 0; m < 8; ++m) {
     const std::uint32_t y = v + static_cast<std::uint32_t>(mt_.step[m]);
@@ -88,7 +105,7 @@ void CostField::seed(std::uint32_t v) {
     dist_[v] = best;
     next_[v] = static_cast<std::uint8_t>(best_m);
   }
-  if (dist_[v] != kInfinity) push_or_lower(v, dist_[v]);
+  if (dist_[v] != kInfinity) push_or_lower(v, old, dist_[v]);
 }
 
 // Why: Dijkstra relaxation of u's neighbours (the graph is symmetric).
@@ -100,16 +117,24 @@ void CostField::relax_from(std::uint32_t u) {
     const std::uint32_t v = u + static_cast<std::uint32_t>(mt_.step[m]);
     const double d = du + table_[m][cls[u]][cls[v]];
     if (d < dist_[v]) {
+      const double old = dist_[v];
       dist_[v] = d;
       next_[v] = static_cast<std::uint8_t>(opposite_move(m));
-      push_or_lower(v, d);
+      push_or_lower(v, old, d);
     }
   }
 }
 
 void CostField::run() {
-  while (!heap_.empty()) {
-    const std::uint32_t u = heap_.pop().node;
+  for (;;) {
+    std::uint32_t u;
+    if (use_ring_) {
+      if (ring_.empty()) break;
+      u = ring_.pop();
+    } else {
+      if (heap_.empty()) break;
+      u = heap_.pop().node;
+    }
     in_heap_[u] = 0;
     ++settled_;
     relax_from(u);
@@ -170,7 +195,7 @@ void CostField::update(std::span<const ClassChange> changes) {
     seed(c);
     for (int m = 0; m < 8; ++m) {
       const std::uint32_t n = c + static_cast<std::uint32_t>(mt_.step[m]);
-      if (cls[n] != kBlocked && dist_[n] != kInfinity) push_or_lower(n, dist_[n]);
+      if (cls[n] != kBlocked && dist_[n] != kInfinity) push_or_lower(n, dist_[n], dist_[n]);
     }
   }
   for (std::uint32_t x : work_) reset_[x] = 0;

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "modules/planner/lib/bucket_ring.hpp"
 #include "modules/planner/lib/cspace.hpp"
 #include "modules/planner/lib/indexed_heap.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
@@ -25,6 +26,7 @@ namespace robuter::plan {
 class CostField {
  public:
   static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  static constexpr double kBucketWidth = 0.5;  // cells of cost per bucket (full computation)
 
   // Why: size for grids up to width x height (the only allocation).
   void reserve(int width, int height);
@@ -54,7 +56,7 @@ class CostField {
   void relax_from(std::uint32_t u);
   void run();
   void seed(std::uint32_t v);
-  void push_or_lower(std::uint32_t v, double d);
+  void push_or_lower(std::uint32_t v, double old, double d);
   void invalidate_subtree(std::uint32_t root);
 
   const PassGrid* grid_ = nullptr;             // the grid the field is for
@@ -68,7 +70,9 @@ class CostField {
   std::vector<std::uint8_t> in_heap_;          // per stored cell: 1 while in the heap
   std::vector<std::uint8_t> reset_;            // per stored cell: 1 while reset in an update
   std::vector<std::uint32_t> work_;            // reset cells of the current update
-  IndexedHeap heap_;                           // Dijkstra queue keyed by dist
+  IndexedHeap heap_;                           // repair queue keyed by dist (seeds spread wide)
+  BucketRing ring_;                            // full computation's queue (one seed)
+  bool use_ring_ = false;                      // run() takes from ring_ instead of heap_
   std::uint32_t settled_ = 0;                  // nodes popped by the last run
   std::uint32_t invalidated_ = 0;              // cells reset by the last update
 };
