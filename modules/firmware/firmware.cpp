@@ -8,8 +8,11 @@
 #include "hal/link/stdio_link.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "modules/firmware/process_table.hpp"
+#include "modules/emergency/emergency.hpp"
+#include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
 #include "modules/serial/serial_module.hpp"
+#include "modules/us/ultrasonic.hpp"
 
 namespace robuter {
 
@@ -65,12 +68,24 @@ std::optional<std::string> Firmware::setup() {
   auto heartbeat = std::make_unique<HeartbeatModule>(bb_);
   auto serial = std::make_unique<SerialModule>(bb_, cfg_, streams);
   auto stepper = std::make_unique<hal::SimStepper>(*sim_);
-  const NamedProcess modules[] = {{"sim", stepper.get()}, {"heartbeat", heartbeat.get()}, {"serial", serial.get()}};
+  auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
+  auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
+  auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
+  // New data is acted on in the same tick: ranges → emergency verdict → motors.
+  us->set_emergency(emergency.get());
+  emergency->set_executor(executor.get());
+  serial->set_emergency(emergency.get());
+  const NamedProcess modules[] = {{"sim", stepper.get()},         {"heartbeat", heartbeat.get()},
+                                  {"serial", serial.get()},        {"us", us.get()},
+                                  {"emergency", emergency.get()},  {"executor", executor.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   processes_.push_back(std::move(stepper));
   processes_.push_back(std::move(heartbeat));
   processes_.push_back(std::move(serial));
+  processes_.push_back(std::move(us));
+  processes_.push_back(std::move(emergency));
+  processes_.push_back(std::move(executor));
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
     table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});

@@ -18,6 +18,10 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       emergency_(bb.emergency.reader()),
       cfg_(cfg) {}
 
+void LinkPort::wake_emergency() const {
+  if (kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
+}
+
 std::uint64_t LinkPort::tick() const { return kernel_ ? kernel_->tick() : 0; }
 
 bool LinkPort::latched() const { return emergency_.peek().latched; }
@@ -70,6 +74,7 @@ PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexc
     ++m.seq;
     m.tick = t;
   });
+  wake_emergency();
   return PortResult::ok;
 }
 
@@ -176,6 +181,7 @@ void LinkPort::message_received() noexcept {
 
 void LinkPort::immediate_stop() noexcept {
   w_.status.modify([](LinkStatus& s) { ++s.stop_seq; });
+  wake_emergency();
 }
 
 protocol::EmergencyStatus LinkPort::emergency() const noexcept {
@@ -190,14 +196,21 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
     case EmergencyCause::obstacle: s.cause = protocol::EmergencyCause::obstacle; break;
     case EmergencyCause::comm_loss: s.cause = protocol::EmergencyCause::comm_loss; break;
     case EmergencyCause::stop_byte: s.cause = protocol::EmergencyCause::stop_byte; break;
+    case EmergencyCause::motion_timeout: s.cause = protocol::EmergencyCause::motion_timeout; break;
+    case EmergencyCause::drive_fault: s.cause = protocol::EmergencyCause::drive_fault; break;
     default: s.cause = protocol::EmergencyCause::other; break;
   }
   return s;
 }
 
-// XR: asks the emergency module to clear a latched emergency (it does only if the cause is gone).
+// XR: clears a latched emergency whose cause is gone (the emergency module does it this tick);
+// refused while the cause is still there.
 PortResult LinkPort::reenable() noexcept {
+  const EmergencyState& e = emergency_.peek();
+  if (!e.latched) return PortResult::ok;
+  if (!e.clearable) return PortResult::refused_emergency;
   w_.status.modify([](LinkStatus& s) { ++s.reenable_seq; });
+  wake_emergency();
   return PortResult::ok;
 }
 

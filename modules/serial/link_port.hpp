@@ -11,6 +11,7 @@
 namespace robuter {
 
 class Kernel;
+class Process;
 
 // The writable handles the serial module (the owner) lends to its port.
 struct LinkWriters {
@@ -28,6 +29,8 @@ class LinkPort final : public protocol::RobotPort {
   LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg);
   // The kernel, for the clock and XK (set at init).
   void attach(Kernel& k) { kernel_ = &k; }
+  // The emergency module, triggered on a stop byte or a motion request so it acts this tick.
+  void set_emergency(Process* p) { emergency_process_ = p; }
   // True once AX was accepted: the serial module flushes the ack, then stops the kernel.
   bool shutdown_requested() const { return shutdown_; }
 
@@ -78,6 +81,9 @@ class LinkPort final : public protocol::RobotPort {
   Reader<EmergencyState> emergency_;
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
+  Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
+  // Asks the emergency module to judge a new request in this tick.
+  void wake_emergency() const;
   bool shutdown_ = false;                  // AX accepted
   mutable std::array<protocol::ProcessFigures, protocol::kMaxKernelProcesses> figures_{};  // XK storage
 };

@@ -23,6 +23,8 @@ class SerialModule final : public Process {
 
   // `links` must outlive the module; at most kMaxLinks are used.
   SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links);
+  // The emergency module, woken in the same tick by a stop byte or a motion request.
+  void set_emergency(Process* p) { port_.set_emergency(p); }
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
   void close(Kernel& k) override;

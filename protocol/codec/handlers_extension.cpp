@@ -13,6 +13,8 @@ std::string_view emergency_cause_name(EmergencyCause cause) noexcept {
     case EmergencyCause::obstacle: return "obstacle";
     case EmergencyCause::comm_loss: return "comm-loss";
     case EmergencyCause::stop_byte: return "stop-byte";
+    case EmergencyCause::motion_timeout: return "motion-timeout";
+    case EmergencyCause::drive_fault: return "drive-fault";
     case EmergencyCause::other: return "other";
   }
   return "other";

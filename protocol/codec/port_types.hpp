@@ -53,6 +53,8 @@ enum class EmergencyCause : std::uint8_t {
   obstacle,    // ultrasonic reading under the safety distance
   comm_loss,   // no message for longer than the communication limit
   stop_byte,   // the client sent the immediate stop byte (0x18)
+  motion_timeout,  // moving, and no motion command arrived within the configured freshness time
+  drive_fault,     // the motor drive reports a fault or stopped answering
   other,       // anything else (a module fault, ...)
 };
 

@@ -17,19 +17,19 @@ check missing-file 2 "configuration error: /nope.toml: cannot open: No such file
 check unknown-key 2 "unknown_key.toml:2: key 'kernel.tik_us': unknown key" "$bin" --config "$configs/unknown_key.toml"
 check wrong-type 2 "wrong_type.toml:2: key 'sonar.timeout_ms': expected an integer, got a string" "$bin" --config "$configs/wrong_type.toml"
 check out-of-range 2 "out_of_range.toml:2: key 'kernel.tick_us': 50 is out of range 100..1000000" "$bin" --config "$configs/out_of_range.toml"
-check unknown-process 2 "unknown_process.toml:1: key 'process.teleport': no process of that name" "$bin" --config "$configs/unknown_process.toml"
-check bad-row 2 "offset 10 must be less than the period 10" "$bin" --config "$configs/bad_row.toml"
+check unknown-process 2 "unknown_process.toml:1: key 'process.teleport': no process of that name" "$bin" --sim --config "$configs/unknown_process.toml"
+check bad-row 2 "offset 10 must be less than the period 10" "$bin" --sim --config "$configs/bad_row.toml"
 check syntax 2 "syntax.toml:1:" "$bin" --config "$configs/syntax.toml"
 check valid 0 "is valid" "$bin" --check-config
 
 # SIGINT: clean stop, exit status 0.
 log=$(mktemp)
-"$bin" --log-level info >"$log" 2>&1 &
+"$bin" --sim --log-level info >"$log" 2>&1 &
 pid=$!
 for _ in $(seq 50); do grep -q starting "$log" && break; sleep 0.1; done
 kill -INT $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]] && grep -q "stopped after" "$log"; then pass=$((pass+1)); echo "ok   sigint: exit 0"; else fail=$((fail+1)); echo "FAIL sigint: rc=$rc"; cat "$log"; fi
-"$bin" --log-level info >"$log" 2>&1 &
+"$bin" --sim --log-level info >"$log" 2>&1 &
 pid=$!
 sleep 0.3; kill -TERM $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]]; then pass=$((pass+1)); echo "ok   sigterm: exit 0"; else fail=$((fail+1)); echo "FAIL sigterm: rc=$rc"; fi
