@@ -3,6 +3,7 @@
 #include "tests/support/alloc_counter.hpp"
 
 #include <cstddef>
+#include <cstdlib>
 
 extern "C" {
 void* __libc_malloc(std::size_t);
@@ -15,8 +16,15 @@ void __libc_free(void*);
 namespace {
 thread_local bool t_armed = false;          // counting on this thread
 thread_local std::uint64_t t_count = 0;     // allocations counted on this thread
+// ROBUTER_ALLOC_TRAP=1 aborts at the first counted allocation, so a debugger shows who made it.
 inline void note() {
-  if (t_armed) ++t_count;
+  if (!t_armed) return;
+  ++t_count;
+  static const bool trap = [] {
+    const char* v = std::getenv("ROBUTER_ALLOC_TRAP");
+    return v && v[0] == '1';
+  }();
+  if (trap) __builtin_trap();
 }
 }  // namespace
 

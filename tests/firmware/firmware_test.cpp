@@ -1,0 +1,47 @@
+// The whole firmware on the simulated robot: AX, motion on the simulated robot.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/sim_firmware.hpp"
+
+namespace robuter {
+namespace {
+
+TEST(Firmware, AnsweringAndMovingOnTheSimulatedRobot) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  EXPECT_EQ(fw.ask("UN"), "N 3");
+  EXPECT_EQ(fw.ask("ASN"), "ack");
+  EXPECT_EQ(fw.ask("AM 20 20"), "ack");
+  fw.run_ticks(300);
+  const auto bo = fw.ask("BO");
+  ASSERT_TRUE(bo);
+  int x = 0, y = 0, theta = 0, servo = 0, clock = 0;
+  ASSERT_EQ(std::sscanf(bo->c_str(), "S %d %d %d %d %d", &x, &y, &theta, &servo, &clock), 5) << *bo;
+  EXPECT_GT(x, 3000);  // at 20 cm/s for about 2.5 s (after the first ring scan): well over 30 cm
+  EXPECT_EQ(servo, 1);
+  EXPECT_EQ(fw.ask("AM 0 0"), "ack");
+}
+
+TEST(Firmware, AxStopsTheMotorsAndEndsTheLoop) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  EXPECT_EQ(fw.ask("ASN"), "ack");
+  EXPECT_EQ(fw.ask("AM 15 15"), "ack");
+  fw.run_ticks(200);
+  std::int32_t l = 0, r = 0;
+  fw.sim().drive().commanded(l, r);
+  EXPECT_EQ(l, 15);
+  EXPECT_EQ(fw.ask("AX"), "ack");
+  fw.run_ticks(2);
+  EXPECT_TRUE(fw.kernel().stop_requested());
+  fw.kernel().shutdown();
+  fw.sim().drive().commanded(l, r);
+  EXPECT_EQ(l, 0);
+  EXPECT_EQ(r, 0);
+  EXPECT_FALSE(fw.sim().drive().servo());
+}
+
+}  // namespace
+}  // namespace robuter

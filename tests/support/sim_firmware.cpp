@@ -1,0 +1,111 @@
+// The harness: temporary pty, firmware on a virtual clock, line-level client.
+#include "tests/support/sim_firmware.hpp"
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace robuter::test {
+
+SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOptions sim) {
+  char tmpl[] = "/tmp/robuter-test-XXXXXX";
+  dir_ = mkdtemp(tmpl);
+  FirmwareOptions opt;
+  opt.sim = true;
+  opt.speed = 0.0;  // virtual clock: the test steps time
+  sim.world_file = world;
+  opt.sim_options = sim;
+  opt.ptys = {dir_ + "/robuter.pty"};
+  fw_ = std::make_unique<Firmware>(cfg, opt);
+  if (auto err = fw_->setup()) {
+    error_ = *err;
+    return;
+  }
+  client_ = ::open(opt.ptys[0].c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  if (client_ < 0) {
+    error_ = "cannot open the pty";
+    return;
+  }
+  termios t{};
+  tcgetattr(client_, &t);
+  cfmakeraw(&t);
+  tcsetattr(client_, TCSANOW, &t);
+  if (!fw_->kernel().start()) {
+    error_ = "kernel start failed";
+    return;
+  }
+  started_ = true;
+}
+
+SimFirmware::~SimFirmware() {
+  if (started_) fw_->kernel().shutdown();
+  if (client_ >= 0) ::close(client_);
+  fw_.reset();
+  std::error_code ec;
+  std::filesystem::remove_all(dir_, ec);
+}
+
+void SimFirmware::step() { fw_->kernel().step(); }
+
+void SimFirmware::run_ticks(int n) {
+  for (int i = 0; i < n; ++i) step();
+}
+
+double SimFirmware::seconds() const { return fw_->sim() ? fw_->sim()->time() : 0.0; }
+
+std::pair<int, int> SimFirmware::count_lines() {
+  int replies = 0, stream = 0;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(client_, buf, sizeof buf);
+    if (n <= 0) break;
+    for (ssize_t i = 0; i < n; ++i) {
+      if (at_line_start_) stream_line_ = buf[i] == '@';
+      at_line_start_ = buf[i] == '\r';
+      if (buf[i] == '\r') ++(stream_line_ ? stream : replies);
+    }
+  }
+  return {replies, stream};
+}
+
+void SimFirmware::send_raw(std::string_view bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(client_, bytes.data() + done, bytes.size() - done);
+    if (n > 0) done += static_cast<std::size_t>(n);
+    else step();  // the pty is full: let the firmware read
+  }
+}
+
+std::optional<std::string> SimFirmware::ask(const std::string& line, int max_ticks) {
+  send_raw(line + "\r");
+  for (int i = 0; i <= max_ticks; ++i) {
+    char buf[4096];
+    const ssize_t n = ::read(client_, buf, sizeof buf);
+    if (n > 0) pending_.append(buf, static_cast<std::size_t>(n));
+    for (;;) {
+      const auto cr = pending_.find('\r');
+      if (cr == std::string::npos) break;
+      std::string reply = pending_.substr(0, cr);
+      pending_.erase(0, cr + 1);
+      if (!reply.empty() && reply[0] == '@') {
+        unsolicited_ += reply + "\n";
+        continue;
+      }
+      return reply;
+    }
+    step();
+  }
+  return std::nullopt;
+}
+
+std::string SimFirmware::take_unsolicited() {
+  std::string out;
+  out.swap(unsolicited_);
+  return out;
+}
+
+}  // namespace robuter::test

@@ -1,0 +1,66 @@
+// Test harness: the whole firmware on the simulated robot, on a virtual clock, with a client on
+// a real pty — tests step time and talk to robuterd exactly as an operator would.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "modules/firmware/firmware.hpp"
+
+namespace robuter::test {
+
+class SimFirmware {
+ public:
+  // Builds and starts the firmware (world file, config); ok() tells whether it did.
+  explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {});
+  ~SimFirmware();
+  SimFirmware(const SimFirmware&) = delete;
+  SimFirmware& operator=(const SimFirmware&) = delete;
+
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }
+
+  // Sends `line` and steps the kernel until its reply arrives (at most `max_ticks`).
+  std::optional<std::string> ask(const std::string& line, int max_ticks = 50);
+  // Writes raw bytes to the link (no terminator added).
+  void send_raw(std::string_view bytes);
+  // Reads what the firmware wrote and counts complete lines without keeping them (no
+  // allocation: for the allocation proof). Returns {replies, stream lines}.
+  std::pair<int, int> count_lines();
+  // Runs `n` ticks.
+  void run_ticks(int n);
+  // Runs until `pred()` holds or `max_ticks` pass; true if it held.
+  template <typename Pred>
+  bool run_until(Pred pred, int max_ticks) {
+    for (int i = 0; i < max_ticks; ++i) {
+      if (pred()) return true;
+      step();
+    }
+    return pred();
+  }
+  void step();
+  // Lines that arrived without being asked for (stream lines), since the last call.
+  std::string take_unsolicited();
+
+  Firmware& firmware() { return *fw_; }
+  Kernel& kernel() { return fw_->kernel(); }
+  Blackboard& bb() { return fw_->blackboard(); }
+  hal::SimRobot& sim() { return *fw_->sim(); }
+  double seconds() const;  // simulated time, s
+
+ private:
+  std::string dir_;                 // temporary folder of the pty link
+  std::unique_ptr<Firmware> fw_;
+  int client_ = -1;                 // the client's end (pty slave)
+  std::string pending_;             // bytes read past the last line
+  std::string unsolicited_;         // lines read while no reply was awaited
+  std::string error_;
+  bool started_ = false;
+  bool at_line_start_ = true;       // count_lines(): next byte starts a line
+  bool stream_line_ = false;        // count_lines(): the current line is a stream line
+};
+
+}  // namespace robuter::test
