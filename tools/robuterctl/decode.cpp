@@ -43,7 +43,7 @@ std::string describe_reply(const std::string& sent, const std::string& reply) {
   if (h == "T" && f.size() == 2) return fmt::format("ultrasonic time-out {} ms", f[1]);
   if (h == "N" && f.size() == 2) return fmt::format("node firing delay {} ticks ({} ms)", f[1], num(f[1]) * 10);
   if (h == "U" && f.size() == 27)
-    return fmt::format("ranges, mm (0 = inactive/no echo)\n  {}\n  servo {}  {}", ranges_text(f, 1, 24, "s"),
+    return fmt::format("ranges, mm (0 = inactive or not read yet)\n  {}\n  servo {}  {}", ranges_text(f, 1, 24, "s"),
                        f[25] == "1" ? "on" : "off", clock_text(f[26]));
   if (h == "V" && f.size() == 30)
     return fmt::format("posture  {}  servo {}\n  {}\n  {}", posture_text(f[1], f[2], f[3]), f[4] == "1" ? "on" : "off",
