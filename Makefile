@@ -6,6 +6,7 @@ JOBS     ?= $(shell nproc)
 DEPS     := tools/deps/ensure.sh tools/deps/debian-packages.txt
 PTY      ?= /tmp/robuter.pty
 PREFIX   ?= /usr/local
+SHELL    := /bin/bash
 RUN_ARGS ?= --sim --pty $(PTY)
 
 .PHONY: all deps build run test test-fast test-san bench fuzz install clean
@@ -25,10 +26,12 @@ build: $(BUILD)/build.ninja
 run: deps build
 	$(BUILD)/bin/robuterd $(RUN_ARGS)
 
-# The whole suite: the normal build, then the same tests under ASan and UBSan.
+# The whole suite: the normal build, then the same tests under ASan and UBSan; the last line
+# adds both up ("N passed, N failed").
 test: deps
-	$(MAKE) --no-print-directory test-fast
-	$(MAKE) --no-print-directory test-san
+	@set -o pipefail; $(MAKE) --no-print-directory test-fast 2>&1 | tee $(BUILD).test.log; a=$$?; \
+	 set -o pipefail; $(MAKE) --no-print-directory test-san 2>&1 | tee $(SAN_BUILD).test.log; b=$$?; \
+	 tools/test/summary.sh $(BUILD).test.log $(SAN_BUILD).test.log && [[ $$a -eq 0 && $$b -eq 0 ]]
 
 test-fast: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600
@@ -54,4 +57,4 @@ install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD) $(SAN_BUILD)
+	rm -rf $(BUILD) $(SAN_BUILD) $(BUILD).test.log $(SAN_BUILD).test.log
