@@ -24,6 +24,31 @@ TEST(Firmware, AnsweringAndMovingOnTheSimulatedRobot) {
   EXPECT_EQ(fw.ask("AM 0 0"), "ack");
 }
 
+// What an operator does after `make run`: ASN, AM 10 10, and watch BO and BU change.
+TEST(Firmware, BoAndBuChangeAsTheRobotMoves) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  fw.run_ticks(100);  // a first full ring scan
+  const auto bo0 = fw.ask("BO"), bu0 = fw.ask("BU");
+  EXPECT_EQ(fw.ask("ASN"), "ack");
+  EXPECT_EQ(fw.ask("AM 10 10"), "ack");
+  std::string last_bo = *bo0, last_bu = *bu0;
+  int bo_changes = 0, bu_changes = 0;
+  for (int i = 0; i < 10; ++i) {
+    fw.run_ticks(50);
+    const auto bo = fw.ask("BO"), bu = fw.ask("BU");
+    ASSERT_TRUE(bo && bu);
+    // Compare without the trailing clock field, which changes anyway.
+    auto body = [](const std::string& r) { return r.substr(0, r.rfind(' ')); };
+    bo_changes += body(*bo) != body(last_bo);
+    bu_changes += body(*bu) != body(last_bu);
+    last_bo = *bo;
+    last_bu = *bu;
+  }
+  EXPECT_GE(bo_changes, 9);
+  EXPECT_GE(bu_changes, 8);
+}
+
 TEST(Firmware, AxStopsTheMotorsAndEndsTheLoop) {
   test::SimFirmware fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
