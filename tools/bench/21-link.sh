@@ -1,13 +1,27 @@
 #!/usr/bin/env bash
-# Link figures: pty round-trip latency of BO over 10,000 requests with the 10 ms tick running.
+# Link figures: pty round-trip latency of BO over 10,000 requests with the 10 ms tick running,
+# as a normal process and with SCHED_FIFO (robuterd realtime = true, the client under chrt).
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 n=${ROBUTER_BENCH_LINK_REQUESTS:-10000}
-dir=$(mktemp -d); pty="$dir/robuter.pty"
-"$bin/robuterd" --sim --pty "$pty" --log-level warn >"$dir/log" 2>&1 &
-pid=$!
-trap 'kill -INT $pid 2>/dev/null; wait $pid 2>/dev/null; rm -rf "$dir"' EXIT
-for _ in $(seq 100); do [[ -L "$pty" ]] && break; sleep 0.05; done
-echo -n "robuterd --sim, 10 ms tick, pty: "
-"$bin/robuterctl" --port "$pty" --bench "$n" --bench-line BO
+dir=$(mktemp -d)
+trap 'pkill -INT -f "$dir/robuter.pty" 2>/dev/null; rm -rf "$dir"' EXIT
+
+# run_case LABEL CONFIG CLIENT_PREFIX...
+run_case() {
+  local label=$1 cfg=$2; shift 2
+  local pty="$dir/robuter.pty"
+  "$bin/robuterd" --sim --pty "$pty" --log-level warn ${cfg:+--config "$cfg"} >"$dir/log" 2>&1 &
+  local pid=$!
+  for _ in $(seq 100); do [[ -L "$pty" ]] && break; sleep 0.05; done
+  echo -n "$label: "
+  "$@" "$bin/robuterctl" --port "$pty" --bench "$n" --bench-line BO
+  kill -INT $pid; wait $pid || true
+}
+
+run_case "robuterd --sim, 10 ms tick, pty, SCHED_OTHER" ""
+if chrt -f 70 true 2>/dev/null; then
+  printf '[kernel]\nrealtime = true\nrt_priority = 80\nlock_memory = true\n' >"$dir/rt.toml"
+  run_case "robuterd --sim, 10 ms tick, pty, SCHED_FIFO (server 80, client 70)" "$dir/rt.toml" chrt -f 70
+fi
 echo "target: p99 under 1000 us"
