@@ -1,6 +1,7 @@
 // The simulated robot behind the HAL: world loading, physics stepping, firing timing of the ring.
 #include "hal/sitl/sim_robot.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hal/sim/world_io.hpp"
@@ -11,7 +12,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-SimRobot::SimRobot(const Config& cfg, const SimOptions& opt) : rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
+SimRobot::SimRobot(const Config& cfg, const SimOptions& opt)
+    : ptu_(opt.ptu), rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
   sim::RobotGeometry geom;
   geom.length = cfg.robot.length_mm / 1000.0;
   geom.width = cfg.robot.width_mm / 1000.0;
@@ -46,12 +48,23 @@ SimRobot::SimRobot(const Config& cfg, const SimOptions& opt) : rng_(opt.seed), s
     sp.spurious_probability = 0.002;
   }
   sonar_ = std::make_unique<sim::SonarModel>(*world_, sp);
+  sim::SonarParams pp = sim::default_pan_tilt_params();
+  if (opt.sonar_noise) {
+    pp.noise_sigma = 0.01;
+    pp.dropout_probability = 0.01;
+    pp.spurious_probability = 0.002;
+  }
+  pan_tilt_sonar_ = std::make_unique<sim::SonarModel>(*world_, pp);
   layout_ = sim::default_ring_layout();
 }
+
+// Seed ptu.c: pt_values[(angle + 90) / 5] = temp[1], pt_values[... + 36] = temp[0].
+double SimRobot::pan_tilt_direction(double angle_deg) { return (angle_deg + 90.0) * kPi / 180.0; }
 
 void SimRobot::advance_to(double t_s) {
   if (!robot_ || t_s <= time_) return;
   robot_->step(t_s - time_);
+  ptu_.advance(t_s - time_);
   time_ = t_s;
 }
 
@@ -92,7 +105,8 @@ void SimSonarRing::configure(std::uint32_t timeout_ms, std::uint32_t sound_speed
 }
 
 bool SimSonarRing::fire(int node, std::uint8_t mask) {
-  if (node < 0 || node >= kSonarNodes) return false;  // the pan-tilt channel is the PTU emulator's
+  if (node == kPanTiltChannel) return r_.fire_pan_tilt(mask);
+  if (node < 0 || node >= kSonarNodes) return false;
   auto& f = r_.firings_[static_cast<std::size_t>(node)];
   f.pending = true;
   f.mask = mask;
@@ -101,10 +115,14 @@ bool SimSonarRing::fire(int node, std::uint8_t mask) {
 }
 
 bool SimSonarRing::read(int node, NodeRanges& out) {
-  if (node < 0 || node >= kSonarNodes) return false;
+  if ((node < 0 || node >= kSonarNodes) && node != kPanTiltChannel) return false;
   auto& f = r_.firings_[static_cast<std::size_t>(node)];
   if (!f.pending || r_.time_ + 1e-9 < f.ready_s) return false;
   f.pending = false;
+  if (node == kPanTiltChannel) {
+    out = {f.pan_tilt_mm[0], f.pan_tilt_mm[1], 0, 0};
+    return true;
+  }
   for (int i = 0; i < kSensorsPerNode; ++i) {
     out[static_cast<std::size_t>(i)] = 0;
     if (!(f.mask & (1u << i))) continue;
@@ -112,6 +130,26 @@ bool SimSonarRing::read(int node, NodeRanges& out) {
     const double m = r_.sonar_->measure(r_.robot_->pose(), mount, r_.sonar_noise_ ? &r_.rng_ : nullptr);
     out[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(std::lround(std::max(0.0, m) * 1000.0));
   }
+  return true;
+}
+
+// Why measure at firing: the pan axis moves ~1° during the 15 ms listening time, and the echo
+// comes from where the transducers pointed when they fired.
+bool SimRobot::fire_pan_tilt(std::uint8_t mask) {
+  if (mask & ~0x3u) return false;  // the pan-tilt carries two sonars
+  auto& f = firings_[static_cast<std::size_t>(kPanTiltChannel)];
+  const double angle = ptu_.angle_deg();
+  const sim::PanTiltReading m = sim::measure_pan_tilt(*pan_tilt_sonar_, robot_->pose(), pan_tilt_mount_,
+                                                      pan_tilt_direction(angle), sonar_noise_ ? &rng_ : nullptr);
+  auto to_mm = [](double metres) {
+    return static_cast<std::uint16_t>(std::lround(std::clamp(metres, 0.0, 60.0) * 1000.0));
+  };
+  f.pan_tilt_mm = {static_cast<std::uint16_t>((mask & 1u) ? to_mm(m.opposite) : 0),
+                   static_cast<std::uint16_t>((mask & 2u) ? to_mm(m.facing) : 0)};
+  f.pending = true;
+  f.mask = mask;
+  f.ready_s = time_ + pan_tilt_sonar_->params().timeout;
+  last_pan_tilt_ = {true, time_, angle, f.pan_tilt_mm};
   return true;
 }
 

@@ -13,6 +13,7 @@
 #include "hal/sim/sonar.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world.hpp"
+#include "hal/sitl/ptu_emulator.hpp"
 #include "kernel/config.hpp"
 
 namespace robuter::hal {
@@ -23,6 +24,16 @@ struct SimOptions {
   std::uint64_t seed = 1;        // seed of every random source
   bool odometry_noise = false;   // encoder noise and slip on
   bool sonar_noise = false;      // range noise, drop-outs and spurious echoes on
+  PtuParams ptu;                 // the emulated pan-tilt unit: limits and power-up state
+};
+
+// The last firing of the pan-tilt's two sonars (channel 7), for pictures and tests.
+struct PanTiltShot {
+  bool valid = false;                      // a firing has happened
+  double time_s = 0.0;                     // simulated time of the firing, s
+  double angle_deg = 0.0;                  // the unit's pan angle then, degrees (pos·185/3600)
+  std::array<std::uint16_t, 2> mm{};      // reported ranges, mm (0: no echo); [1] looks along
+                                           // angle + 90°, [0] along angle − 90° (seed ptu.c)
 };
 
 class SimRobot;
@@ -43,7 +54,10 @@ class SimDrive final : public Drive {
   SimRobot& r_;
 };
 
-// The ring: nodes fire single-shot; results are ready a time-out after firing.
+// The ring: nodes fire single-shot; results are ready a time-out after firing. Channel 7
+// (kPanTiltChannel) fires the pan-tilt's two sonars (mask bits 0 and 1) at the emulated unit's
+// current pan angle, with the pan-tilt's own time-out and sound speed (15 ms, 335 m/s: the
+// seed's READ C=7 T=15 V=335); configure() changes the ring's only.
 class SimSonarRing final : public SonarRing {
  public:
   explicit SimSonarRing(SimRobot& r) : r_(r) {}
@@ -79,6 +93,17 @@ class SimRobot {
   SimBumpers& bumpers() { return bumpers_; }
   const sim::World& world() const { return *world_; }
   sim::Robot& robot() { return *robot_; }
+  const sim::Robot& robot() const { return *robot_; }
+  PtuEmulator& ptu() { return ptu_; }
+  const PtuEmulator& ptu() const { return ptu_; }
+  const sim::SonarParams& ring_params() const { return sonar_->params(); }
+  const sim::SonarParams& pan_tilt_params() const { return pan_tilt_sonar_->params(); }
+  const sim::PanTiltMount& pan_tilt_mount() const { return pan_tilt_mount_; }
+  const PanTiltShot& last_pan_tilt() const { return last_pan_tilt_; }
+  // Robot-frame direction (rad) of the pan-tilt sonar read as channel-7 index 1 at pan angle
+  // `angle_deg`: angle + 90° (seed ptu.c stores it at sector (angle + 90) / 5); index 0 looks
+  // the opposite way.
+  static double pan_tilt_direction(double angle_deg);
   const sim::RingLayout& layout() const { return layout_; }
   double time() const { return time_; }
 
@@ -87,17 +112,25 @@ class SimRobot {
   friend class SimSonarRing;
   friend class SimBumpers;
 
+  // Channel 7: measures both pan-tilt sonars now; results ready after the pan-tilt time-out.
+  bool fire_pan_tilt(std::uint8_t mask);
+
   // A node's firing in progress.
   struct Firing {
     bool pending = false;      // fired, results not yet taken
     double ready_s = 0.0;      // simulated time the results are ready, s
     std::uint8_t mask = 0;     // sensors fired, bit i = index i
+    std::array<std::uint16_t, 2> pan_tilt_mm{};  // channel 7: ranges measured at firing, mm
   };
 
   std::optional<std::string> error_;       // why the robot could not be built
   std::unique_ptr<sim::World> world_;      // obstacles
   std::unique_ptr<sim::Robot> robot_;      // body, drive, odometry
   std::unique_ptr<sim::SonarModel> sonar_; // ring sonar model
+  std::unique_ptr<sim::SonarModel> pan_tilt_sonar_;  // pan-tilt sonar model (its own params)
+  sim::PanTiltMount pan_tilt_mount_{};     // where the pan-tilt carries its sonars
+  PtuEmulator ptu_;                        // the pan-tilt unit
+  PanTiltShot last_pan_tilt_{};            // the last channel-7 firing
   sim::RingLayout layout_{};               // mounts of sensors 1..24
   sim::Rng rng_{1};                        // sonar noise source
   bool sonar_noise_ = false;               // apply noise to ring readings

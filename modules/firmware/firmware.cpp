@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+
 #include "hal/link/pty_link.hpp"
 #include "hal/link/serial_link.hpp"
 #include "hal/link/stdio_link.hpp"
+#include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "modules/firmware/process_table.hpp"
 #include "modules/emergency/emergency.hpp"
@@ -68,6 +71,14 @@ std::optional<std::string> Firmware::setup() {
   auto heartbeat = std::make_unique<HeartbeatModule>(bb_);
   auto serial = std::make_unique<SerialModule>(bb_, cfg_, streams);
   auto stepper = std::make_unique<hal::SimStepper>(*sim_);
+  if (!opt_.ptu_pty.empty()) {  // the pan-tilt emulator on its own pty
+    auto pty = std::make_unique<hal::PtyLink>(opt_.ptu_pty);
+    if (pty->error()) return "--ptu-pty: " + *pty->error();
+    stepper->attach_ptu(std::move(pty));
+  }
+  stepper->set_ptu_sweep(opt_.ptu_sweep);
+  if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
+    return "--picture " + opt_.picture + ": expected a .png or .svg file";
   auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
   auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
@@ -95,6 +106,15 @@ std::optional<std::string> Firmware::setup() {
   return std::nullopt;
 }
 
-int Firmware::run() { return kernel_->run(); }
+int Firmware::run() {
+  const int status = kernel_->run();
+  if (opt_.picture.empty()) return status;
+  const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
+  const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, opt_.picture);
+  hal::release_picture_caches();
+  if (!err) return status;
+  std::fprintf(stderr, "robuterd: %s\n", err->c_str());
+  return status == 0 ? 1 : status;
+}
 
 }  // namespace robuter

@@ -28,6 +28,9 @@ struct FirmwareOptions {
   unsigned baud = 9600;               // serial link rate, bit/s
   bool stdio = false;                 // serve a link on standard input/output
   std::uint64_t ticks = 0;            // stop after this many ticks (0 = run until stopped)
+  std::string ptu_pty;                // pan-tilt emulator's pty (symbolic link path), empty = none
+  bool ptu_sweep = false;             // built-in pan-tilt sweep and channel-7 firing (no PTU module)
+  std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
 };
 
 class Firmware {

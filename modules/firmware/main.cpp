@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
   app.add_option("--serial", opt.serial_device, "serve a link on a serial device (8N1)");
   app.add_option("--baud", opt.baud, "serial link rate, bit/s");
   app.add_flag("--stdio", opt.stdio, "serve a link on standard input/output");
+  app.add_option("--ptu-pty", opt.ptu_pty, "serve the simulated pan-tilt unit (PTU-46 protocol) on a new pty; PATH becomes a symbolic link to it");
+  app.add_flag("--ptu-sweep", opt.ptu_sweep, "simulator: sweep the pan-tilt between its limits and fire its two sonars every 5° (no PTU module needed)");
+  app.add_option("--picture", opt.picture, "simulator: at exit, draw world, robot, trail and the last ring ranges to FILE (.png or .svg)");
   app.add_flag("--stats", stats, "print per-process statistics and tick lateness at exit");
   app.add_option("--ticks", opt.ticks, "stop after this many ticks (0: run until stopped)");
   app.add_option("--log-level", log_level, "debug, info, warn, error or off (overrides the configuration)");
@@ -86,6 +89,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < opt.ptys.size(); ++i) {
     fmt::print("robuterd: link on {} -> {}\n", opt.ptys[i], fw.pty_slaves()[i]);
   }
+  if (!opt.ptu_pty.empty()) fmt::print("robuterd: pan-tilt unit on {}\n", opt.ptu_pty);
   std::fflush(stdout);
 
   log::start(stderr);

@@ -1,0 +1,99 @@
+// Pictures from the command line: robuter-sim render (PNG and SVG, bad arguments) and
+// robuterd --sim --picture; the files must be real pictures with content, not blank pages.
+#include <gtest/gtest.h>
+
+#include <cairo.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace {
+
+const std::string kBin = ROBUTER_BIN_DIR;
+const std::string kOut = ROBUTER_SITL_TEST_OUT;
+const std::string kWorld = std::string(ROBUTER_WORLDS_DIR) + "/default.toml";
+
+// Runs a shell command quietly; its exit status.
+int run(const std::string& cmd) {
+  const int s = std::system((cmd + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Fraction of a PNG's pixels that differ from its top-left pixel (the background); -1 if the
+// file is not a PNG cairo can read.
+double ink(const std::string& path, int& width, int& height) {
+  cairo_surface_t* s = cairo_image_surface_create_from_png(path.c_str());
+  if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(s);
+    return -1.0;
+  }
+  width = cairo_image_surface_get_width(s);
+  height = cairo_image_surface_get_height(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  const auto bg = *reinterpret_cast<const std::uint32_t*>(data);
+  long differ = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) differ += *reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x) != bg;
+  cairo_surface_destroy(s);
+  return static_cast<double>(differ) / (static_cast<double>(width) * height);
+}
+
+TEST(Pictures, RobuterSimRendersAPng) {
+  const std::string out = kOut + "/render_ring.png";
+  std::filesystem::remove(out);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + kWorld + " --ring --pan-tilt 30 -o " + out), 0);
+  int w = 0, h = 0;
+  const double f = ink(out, w, h);
+  EXPECT_GT(w, 300);
+  EXPECT_GT(h, 200);
+  EXPECT_GT(f, 0.05);  // walls, robot, 24 beams: plenty of non-background pixels
+  EXPECT_LT(f, 0.95);
+}
+
+TEST(Pictures, RobuterSimRendersAnSvgAtAGivenPose) {
+  const std::string out = kOut + "/render_pose.svg";
+  std::filesystem::remove(out);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + kWorld + " --pose 6.0,3.0,180 --ring -o " + out), 0);
+  const std::string svg = slurp(out);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  std::size_t paths = 0;
+  for (std::size_t p = svg.find("<path"); p != std::string::npos; p = svg.find("<path", p + 1)) ++paths;
+  EXPECT_GT(paths, 50u);
+  EXPECT_GT(svg.size(), 20000u);
+}
+
+TEST(Pictures, RobuterSimRefusesBadArguments) {
+  EXPECT_NE(run(kBin + "/robuter-sim render --world /nonexistent.toml -o " + kOut + "/x.png"), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " -o " + kOut + "/x.jpg"), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " --pose 1,2 -o " + kOut + "/x.png"), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " --pose 0.1,0.1,0 -o " + kOut + "/x.png"), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld), 0);
+}
+
+TEST(Pictures, RobuterdWritesAPictureAtExit) {
+  const std::string out = kOut + "/robuterd_exit.png";
+  std::filesystem::remove(out);
+  ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --ptu-sweep --picture " + out), 0);
+  int w = 0, h = 0;
+  const double f = ink(out, w, h);
+  EXPECT_GT(w, 300);
+  EXPECT_GT(f, 0.05);
+  const std::string svg = kOut + "/robuterd_exit.svg";
+  ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --picture " + svg), 0);
+  EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
+}
+
+TEST(Pictures, RobuterdRefusesAPictureItCannotWrite) {
+  EXPECT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 10 --picture " + kOut + "/x.jpg"), 2);
+}
+
+}  // namespace

@@ -1,0 +1,30 @@
+// robuter-sim: command-line tools around the simulated Robuter (for now: `render`, pictures).
+#include <CLI/CLI.hpp>
+
+#include "hal/sim/render.hpp"
+#include "tools/robuter-sim/render_command.hpp"
+
+int main(int argc, char** argv) {
+  using robuter::simtool::RenderRequest;
+  CLI::App app{"robuter-sim — tools for the simulated Robuter"};
+  app.require_subcommand(1);
+  RenderRequest req;
+  double pan_tilt = 0.0;
+  CLI::App* render = app.add_subcommand("render", "draw a world with the robot at a pose, its sonar ring beams and pan-tilt rays");
+  render->add_option("--world", req.world, "world file (.toml project format or seed-000 .env)")->required();
+  render->add_option("--pose", req.pose, "robot pose X,Y,THETA_DEG (m, m, degrees); default: the world's start");
+  render->add_flag("--ring", req.ring, "draw the 24 ring sonar beams with their ranges at that pose");
+  CLI::Option* pt = render->add_option("--pan-tilt", pan_tilt, "draw the pan-tilt's two rays at this pan angle, degrees (rays at angle ± 90°)");
+  render->add_option("-o,--output", req.output, "picture to write: .png or .svg")->required();
+  render->add_option("--scale", req.scale, "pixels per metre")->check(CLI::Range(5.0, 1000.0));
+  render->add_option("--title", req.title, "caption (default: world name and pose)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (pt->count() > 0) req.pan_tilt_deg = pan_tilt;
+  const int status = robuter::simtool::run_render(req);
+  robuter::sim::release_render_caches();  // LeakSanitizer: cairo's and fontconfig's caches
+  return status;
+}
