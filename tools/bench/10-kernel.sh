@@ -7,6 +7,23 @@ seconds=${ROBUTER_BENCH_KERNEL_SECONDS:-60}
 ticks=$((seconds * 100))
 
 stats=$(mktemp); trap 'rm -f "$stats"' EXIT
+
+# cyclic LABEL [cyclictest options...]: 1000 wake-ups at 10 ms, lateness p50/p99/max from its histogram.
+cyclic() {
+  local label=$1; shift
+  local hist; hist=$(mktemp)
+  cyclictest -t1 "$@" -i 10000 -l 1000 -q -h 10000 >"$hist" 2>/dev/null || true
+  awk -v label="$label" '
+    /^[0-9]+/ { us=$1+0; n=$2+0; cnt[us]=n; total+=n; if (n>0) last=us }
+    /# Max Latencies/ { mx=$4+0 }
+    END {
+      if (total == 0) { print label ": no samples"; exit }
+      s=0; p50=-1; p99=-1
+      for (u=0; u<=last; u++) { s+=cnt[u]; if (p50<0 && s>=0.5*total) p50=u; if (p99<0 && s>=0.99*total) p99=u }
+      printf "%s: %d samples, lateness p50 %d us, p99 %d us, max %d us\n", label, total, p50, p99, mx
+    }' "$hist"
+  rm -f "$hist"
+}
 "$bin/robuterd" --sim --ticks "$ticks" --stats --log-level warn >"$stats" 2>&1 &
 pid=$!
 sleep $((seconds - 2))
@@ -18,18 +35,7 @@ echo "robuterd --sim (whole firmware), 10 ms tick, ${seconds} s, SCHED_OTHER: $l
 echo "robuterd resident memory after $((seconds - 2)) s: $((rss_kb / 1024)).$(( (rss_kb % 1024) * 10 / 1024 )) MB (peak $((hwm_kb / 1024)).$(( (hwm_kb % 1024) * 10 / 1024 )) MB; target < 20 MB)"
 
 if command -v cyclictest >/dev/null; then
-  hist=$(mktemp)
-  cyclictest -t1 -i 10000 -l $((10 * 100)) -q -h 10000 >"$hist" 2>/dev/null || true
-  awk '
-    /^[0-9]+/ { us=$1+0; n=$2+0; cnt[us]=n; total+=n; if (n>0) last=us }
-    /# Max Latencies/ { mx=$4+0 }
-    END {
-      if (total == 0) { print "cyclictest: no samples"; exit }
-      s=0; p50=-1; p99=-1
-      for (u=0; u<=last; u++) { s+=cnt[u]; if (p50<0 && s>=0.5*total) p50=u; if (p99<0 && s>=0.99*total) p99=u }
-      printf "cyclictest, 10 ms interval, 10 s, SCHED_OTHER: %d samples, lateness p50 %d us, p99 %d us, max %d us\n", total, p50, p99, mx
-    }' "$hist"
-  rm -f "$hist"
+  cyclic "cyclictest, 10 ms interval, 10 s, SCHED_OTHER"
 else
   echo "cyclictest: not installed (apt-get install rt-tests) — no peer figure"
 fi
@@ -40,18 +46,7 @@ printf '[kernel]\nrealtime = true\nrt_priority = 80\nlock_memory = true\n' >"$rt
 if "$bin/robuterd" --sim --config "$rt_cfg" --ticks 1000 --stats --log-level warn >"$stats" 2>&1 && ! grep -q refused "$stats"; then
   echo "robuterd --sim, SCHED_FIFO 80, mlockall, 10 s: $(grep '^tick ' "$stats")"
   if command -v cyclictest >/dev/null; then
-    hist=$(mktemp)
-    cyclictest -t1 -p 80 -m -i 10000 -l 1000 -q -h 10000 >"$hist" 2>/dev/null || true
-    awk '
-      /^[0-9]+/ { us=$1+0; n=$2+0; cnt[us]=n; total+=n; if (n>0) last=us }
-      /# Max Latencies/ { mx=$4+0 }
-      END {
-        if (total == 0) { print "cyclictest SCHED_FIFO: no samples"; exit }
-        s=0; p50=-1; p99=-1
-        for (u=0; u<=last; u++) { s+=cnt[u]; if (p50<0 && s>=0.5*total) p50=u; if (p99<0 && s>=0.99*total) p99=u }
-        printf "cyclictest, SCHED_FIFO 80, mlockall, 10 ms, 10 s: %d samples, lateness p50 %d us, p99 %d us, max %d us\n", total, p50, p99, mx
-      }' "$hist"
-    rm -f "$hist"
+    cyclic "cyclictest, SCHED_FIFO 80, mlockall, 10 ms, 10 s" -p 80 -m
   fi
 else
   echo "SCHED_FIFO not permitted here: $(grep -m1 refused "$stats" || echo 'robuterd failed')"
