@@ -130,10 +130,12 @@ void PtuEmulator::execute_pan(char code, const char* arg, std::size_t len) {
   reply_ok();
 }
 
+// Why clamp: the direct API (the built-in sweep) has no error line to answer with.
 void PtuEmulator::command_position(std::int32_t position) {
   target_ = std::clamp(position, params_.min_position, params_.max_position);
 }
 
+// Why clamp: as command_position.
 void PtuEmulator::command_speed(std::int32_t speed) {
   speed_ = std::clamp(speed, params_.min_speed, params_.max_speed);
 }
@@ -208,24 +210,28 @@ void PtuEmulator::advance(double dt_s) {
   }
 }
 
+// Why peek: a pty may take only part of the bytes; the rest must stay queued.
 std::size_t PtuEmulator::peek_output(std::span<std::uint8_t> out) const {
   const std::size_t n = std::min(out.size(), out_size_);
   for (std::size_t i = 0; i < n; ++i) out[i] = out_[(out_first_ + i) % out_.size()];
   return n;
 }
 
+// Why separate: only the bytes the host actually took leave the ring.
 void PtuEmulator::consume_output(std::size_t n) {
   n = std::min(n, out_size_);
   out_first_ = (out_first_ + n) % out_.size();
   out_size_ -= n;
 }
 
+// Why: the common case (tests, a host that takes everything) in one call.
 std::size_t PtuEmulator::read_output(std::span<std::uint8_t> out) {
   const std::size_t n = peek_output(out);
   consume_output(n);
   return n;
 }
 
+// Why one place: every acknowledgement has the same shape in both feedback modes.
 void PtuEmulator::reply_ok(const char* text) {
   put('*');
   if (text) {
@@ -244,6 +250,7 @@ void PtuEmulator::reply_value(const char* verbose_text, std::int64_t n, const ch
   put("\r\n");
 }
 
+// Why the same text in terse mode: the seed never errs, and a readable message helps whoever does.
 void PtuEmulator::reply_error(const char* message, const std::int64_t* n, const char* unit) {
   put("! ");
   put(message);
@@ -252,6 +259,7 @@ void PtuEmulator::reply_error(const char* message, const std::int64_t* n, const 
   put("\r\n");
 }
 
+// Why: replies are assembled from constant pieces without any string object.
 void PtuEmulator::put(const char* s) {
   while (*s) put(*s++);
 }
@@ -266,6 +274,7 @@ void PtuEmulator::put(char c) {
   ++out_size_;
 }
 
+// Why to_chars: no locale, no allocation.
 void PtuEmulator::put_number(std::int64_t n) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, n);

@@ -3,6 +3,7 @@
 
 namespace robuter::hal {
 
+// Why own the stream: the port is the only user of the emulator's pty.
 PtuPort::PtuPort(PtuEmulator& emulator, std::unique_ptr<ByteStream> stream)
     : emu_(emulator), stream_(std::move(stream)) {}
 

@@ -7,7 +7,7 @@
 namespace robuter::hal {
 
 namespace {
-// Lower-case extension of `path` ("" if none).
+// Lower-case extension of `path` ("" if none); why: the picture format follows it.
 std::string extension(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
@@ -18,6 +18,7 @@ std::string extension(const std::string& path) {
 }
 }  // namespace
 
+// Why at start-up: a typo must not cost a whole run whose picture is then not written.
 bool picture_path_ok(const std::string& path) {
   const std::string e = extension(path);
   return e == "png" || e == "svg";
@@ -47,6 +48,7 @@ sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSens
   return scene;
 }
 
+// Why a title with the time: pictures of several runs are told apart at a glance.
 std::optional<std::string> write_sim_picture(const SimRobot& r,
                                              std::span<const std::uint16_t, kRingSensors> mm,
                                              std::uint32_t no_echo, const std::string& path) {
@@ -60,6 +62,7 @@ std::optional<std::string> write_sim_picture(const SimRobot& r,
   return std::nullopt;
 }
 
+// Why a wrapper: robuterd need not include the renderer to release its caches.
 void release_picture_caches() { sim::release_render_caches(); }
 
 }  // namespace robuter::hal

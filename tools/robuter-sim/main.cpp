@@ -4,6 +4,7 @@
 #include "hal/sim/render.hpp"
 #include "tools/robuter-sim/render_command.hpp"
 
+// Why subcommands: room for more simulator tools beside `render`.
 int main(int argc, char** argv) {
   using robuter::simtool::RenderRequest;
   CLI::App app{"robuter-sim — tools for the simulated Robuter"};

@@ -35,7 +35,7 @@ bool parse_pose(const std::string& text, sim::Pose& out) {
   return true;
 }
 
-// Lower-case extension of a path.
+// Lower-case extension of a path (why: the output format follows it).
 std::string extension(const std::string& path) {
   const auto dot = path.find_last_of('.');
   if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
@@ -44,6 +44,7 @@ std::string extension(const std::string& path) {
   return e;
 }
 
+// Why one place: every refusal looks the same and gives the shell status 1.
 int fail(const std::string& why) {
   std::fprintf(stderr, "robuter-sim: %s\n", why.c_str());
   return 1;
