@@ -21,6 +21,10 @@ check unknown-process 2 "unknown_process.toml:1: key 'process.teleport': no proc
 check bad-row 2 "offset 10 must be less than the period 10" "$bin" --sim --config "$configs/bad_row.toml"
 check syntax 2 "syntax.toml:1:" "$bin" --config "$configs/syntax.toml"
 check valid 0 "is valid" "$bin" --check-config
+check bad-world-toml 2 "world: $configs/bad_world.toml:5: [start]: y: expected a number" "$bin" --sim --world "$configs/bad_world.toml" --ticks 1
+check bad-world-env 2 "world: $configs/bad_world.env:2: bad count" "$bin" --sim --world "$configs/bad_world.env" --ticks 1
+check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nope.toml --ticks 1
+check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
 
 # SIGINT: clean stop, exit status 0.
 log=$(mktemp)
