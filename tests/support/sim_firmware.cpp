@@ -48,7 +48,10 @@ SimFirmware::~SimFirmware() {
   std::filesystem::remove_all(dir_, ec);
 }
 
-void SimFirmware::step() { fw_->kernel().step(); }
+void SimFirmware::step() {
+  fw_->kernel().step();
+  if (observer_) observer_();
+}
 
 void SimFirmware::run_ticks(int n) {
   for (int i = 0; i < n; ++i) step();

@@ -2,6 +2,7 @@
 // a real pty — tests step time and talk to robuterd exactly as an operator would.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,6 +43,15 @@ class SimFirmware {
     return pred();
   }
   void step();
+  // Calls `f` after every tick the harness runs (step, run_ticks, run_until, ask, send_raw):
+  // lets a test check an invariant on every tick, including those inside ask(). Empty = none.
+  void set_tick_observer(std::function<void()> f) { observer_ = std::move(f); }
+  // The module that runs in the process-table row `name`, as a T (null if absent or not a T).
+  template <typename T>
+  T* module(const char* name) {
+    const auto i = fw_->kernel().find(name);
+    return i ? dynamic_cast<T*>(fw_->kernel().row(*i).process) : nullptr;
+  }
   // Lines that arrived without being asked for (stream lines), since the last call.
   std::string take_unsolicited();
 
@@ -61,6 +71,7 @@ class SimFirmware {
   bool started_ = false;
   bool at_line_start_ = true;       // count_lines(): next byte starts a line
   bool stream_line_ = false;        // count_lines(): the current line is a stream line
+  std::function<void()> observer_;  // called after every tick (set_tick_observer)
 };
 
 }  // namespace robuter::test
