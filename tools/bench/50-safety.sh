@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Safety figures: reaction time of the whole firmware on the simulated robot — from the read of a
+# range under the safety distance to zero speed at the drive — over seeded trials (virtual clock).
+set -euo pipefail
+bin=${ROBUTER_BIN:-build/bin}
+trials=${ROBUTER_BENCH_SAFETY_TRIALS:-200}
+if [[ ! -x "$bin/robuter_safety_bench" ]]; then
+  echo "50-safety: $bin/robuter_safety_bench not built (configure with -DROBUTER_BENCH=ON)" >&2
+  exit 1
+fi
+exec "$bin/robuter_safety_bench" "$trials"
