@@ -123,6 +123,7 @@ void EmergencyModule::run(Kernel& k) {
   in.last_message_tick = link.last_message_tick;
   in.drive_fault = posture.drive_health != 0;
   in.servo_on = posture.servo;
+  in.at_rest = at_rest(posture);
   in.ranges = &ranges_.peek();
   if (settings_.generation() > 0) {
     in.user_table = us.user_table;
@@ -142,6 +143,17 @@ void EmergencyModule::run(Kernel& k) {
   if (selection_out_.current().active != d.selection) selection_out_.publish(SonarSelection{d.selection});
   log_transitions(d);
   last_ = d.state;
+}
+
+// Postures of one tick (the executor may run more than once in it) are one sample; a robot
+// creeping by less than 0.1 mm and 0.01° between two samples counts as at rest.
+bool EmergencyModule::at_rest(const Posture& p) {
+  if (!have_pose_ || p.tick != pose_.tick) {
+    moved_ = have_pose_ && (p.x != pose_.x || p.y != pose_.y || p.theta != pose_.theta);
+    pose_ = p;
+    have_pose_ = true;
+  }
+  return !moved_;
 }
 
 // Transitions only: a trip, a latch cleared or refused, a hold beginning or expiring.

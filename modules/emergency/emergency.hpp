@@ -45,6 +45,9 @@ class EmergencyModule final : public Process {
   };
   // Finds the newest new request of all sources (latest tick; ties go to the first registered).
   void take_requests(safety::GateInputs& in);
+  // Whether the robot has come to rest: the executor's last two postures of different ticks
+  // agree (a stopped drive's set-points are zero long before the robot stops braking).
+  bool at_rest(const Posture& p);
   // Logs what changed between two verdicts (transitions only, never every tick).
   void log_transitions(const safety::GateDecision& d);
 
@@ -68,6 +71,9 @@ class EmergencyModule final : public Process {
   std::uint32_t seen_reenable_ = 0;   // LinkStatus.reenable_seq last seen
   std::uint32_t seen_servo_ = 0;      // ServoRequest.seq last seen
   EmergencyState last_{};             // previous verdict, for transition logs
+  Posture pose_{};                    // the executor's posture of the latest tick seen
+  bool have_pose_ = false;            // pose_ holds a published posture
+  bool moved_ = false;                // the latest posture differs from the one of the tick before
 };
 
 }  // namespace robuter

@@ -22,7 +22,13 @@ GateDecision MotionGate::step(const GateInputs& in) {
   const bool bumper_now = (s_.enabled & kDetectBumper) && in.bumpers != 0;
   const bool comm_now = (s_.enabled & kDetectComm) && tick > in.last_message_tick &&
                         tick - in.last_message_tick > s_.comm_limit_ticks;
-  const bool condition_now = bumper_now || comm_now || in.drive_fault;
+  // A trip's cause is not gone while the robot it stopped is still braking: nothing is
+  // re-enabled and nothing moves before it is at rest (docs/SAFETY.md §4).
+  if (stopping_ && in.at_rest) {
+    stopping_ = false;
+    stopping_cause_ = EmergencyCause::none;
+  }
+  const bool condition_now = bumper_now || comm_now || in.drive_fault || stopping_;
 
   // 1. Re-enable: only when no condition is present; the request is forgotten either way.
   if (in.reenable && latched_ && !condition_now) {
@@ -51,6 +57,7 @@ GateDecision MotionGate::step(const GateInputs& in) {
   else if (comm_now) cause = EmergencyCause::comm_loss;
   else if (moving && s_.motion_timeout_ticks > 0 && tick - request_tick_ > s_.motion_timeout_ticks)
     cause = EmergencyCause::motion_timeout;
+  else if (stopping_) cause = stopping_cause_;
 
   const int main = moving ? main_sensor(left_, right_, s_.wheel_base_mm) : 0;
   const std::uint32_t safety = moving ? safety_distance_mm(left_, right_, s_.min_safety_mm, s_.safety_mm_per_cm_s) : 0;
@@ -69,13 +76,17 @@ GateDecision MotionGate::step(const GateInputs& in) {
   if (cause != EmergencyCause::none) {
     // A trip is a condition that interrupts something (a motion, a powered servo) or the
     // operator's stop byte; a condition met at rest only inhibits until it goes.
-    const bool interrupts = moving || in.servo_on || cause == EmergencyCause::stop_byte;
+    const bool interrupts = moving || in.servo_on || in.stop_byte;
     if (interrupts) {
       ++trips_;
       d.tripped = true;
       if (s_.latch && !latched_) {
         latched_ = true;
         latched_cause_ = cause;
+      }
+      if (moving || !in.at_rest) {
+        stopping_ = true;
+        if (stopping_cause_ == EmergencyCause::none) stopping_cause_ = cause;
       }
     }
     forget();
@@ -110,7 +121,7 @@ GateDecision MotionGate::step(const GateInputs& in) {
   d.state.enabled = s_.enabled;
   d.state.tick = tick;
   d.state.trips = trips_;
-  d.state.clearable = latched_ && !condition_now;
+  d.state.clearable = latched_ && !condition_now && !stopping_;
   if (d.state.cause != EmergencyCause::obstacle && !held) d.state.sensor = 0;
   // The ring fires what the remembered request needs (a held request keeps its set).
   const int wanted = has_request_ && (left_ != 0 || right_ != 0) ? main_sensor(left_, right_, s_.wheel_base_mm) : 0;

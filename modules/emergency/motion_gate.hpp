@@ -40,6 +40,7 @@ struct GateInputs {
   std::uint64_t last_message_tick = 0;       // tick of the link's last well-formed message
   bool drive_fault = false;                  // the drive reports a fault or went silent
   bool servo_on = false;                     // the drive's servo is on (executor's posture)
+  bool at_rest = true;                       // the robot is not moving (odometry unchanged), whatever its set-points
   const UltrasonicRanges* ranges = nullptr;  // the ring's latest ranges (never null in use)
   std::uint32_t user_table = kAllSensors;    // the operator's table (UT), bit s-1 = sensor s
   bool auto_toggle = false;                  // only the watch-dog sensors fire (Uu)
@@ -82,6 +83,8 @@ class MotionGate {
   std::uint64_t request_tick_ = 0;             // when it arrived, ticks
   bool latched_ = false;                       // a trip waits for a re-enable
   EmergencyCause latched_cause_ = EmergencyCause::none;  // what tripped it
+  bool stopping_ = false;                      // a trip stopped a moving robot that has not come to rest yet
+  EmergencyCause stopping_cause_ = EmergencyCause::none;  // what tripped it
   bool holding_ = false;                       // the request is held for sensor data
   std::uint64_t hold_since_ = 0;               // when the hold began, ticks
   std::uint32_t trips_ = 0;                    // trips so far
