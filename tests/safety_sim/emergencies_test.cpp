@@ -162,7 +162,9 @@ TEST(Emergencies, SilenceBeyondTheCommunicationLimitStopsWithCommLoss) {
   EXPECT_EQ(xe->latched, 1);
   EXPECT_EQ(xe->cause, "comm-loss");
   EXPECT_EQ(fw.ask("AM 10 10"), "error") << "refused while latched";
-  fw.run_ticks(11);  // the emergency sees the link alive again: clearable
+  // Clearable once the emergency has seen the link alive again and the robot at rest (two
+  // executor postures apart: at most about three emergency periods after the stop).
+  EXPECT_TRUE(fw.run_until([&] { return fw.bb().emergency.reader().peek().clearable; }, 40));
   EXPECT_EQ(fw.ask("XR"), "ack");
   const double x0 = fw.sim().robot().pose().x;
   fw.run_ticks(250);
@@ -170,6 +172,56 @@ TEST(Emergencies, SilenceBeyondTheCommunicationLimitStopsWithCommLoss) {
   EXPECT_NEAR(fw.sim().robot().pose().x, x0, 1e-9);
   EXPECT_EQ(fw.ask("AM 10 10"), "ack");
   EXPECT_TRUE(fw.run_until([&] { return commanded(fw).left == 10; }, 100)) << "a new AM moves again";
+}
+
+// docs/SAFETY.md §4: an obstacle is an event, "gone once the robot has stopped" — an XR sent
+// while the robot still brakes is refused, and no new motion can start before it is at rest.
+TEST(Emergencies, AfterAnObstacleTripXrWaitsUntilTheRobotHasStopped) {
+  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml");
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  SafetyMonitor mon;
+  mon.attach(fw);
+  auto& robot = fw.sim().robot();
+  ASSERT_EQ(fw.ask("AM 80 80"), "ack");
+  ASSERT_TRUE(fw.run_until([&] { return fw.bb().emergency.reader().peek().latched; }, 2000));
+  ASSERT_GT(robot.wheel_speeds().left, 0.3) << "still braking from 80 cm/s";
+  int refused = 0;
+  while (robot.wheel_speeds().left > 0.0 || robot.wheel_speeds().right > 0.0) {
+    ASSERT_EQ(fw.ask("XR"), "error") << "re-enabled at " << robot.wheel_speeds().left << " m/s";
+    ++refused;
+    fw.run_ticks(5);
+  }
+  fw.run_ticks(30);  // at rest for an executor and an emergency period
+  EXPECT_EQ(fw.ask("XR"), "ack");
+  std::printf("obstacle trip at 80 cm/s: %d XR refused while braking, accepted at rest\n", refused);
+  EXPECT_GT(refused, 0);
+  // Turning away now is safe: the robot is at rest, the rotation is judged on its own sensors.
+  EXPECT_EQ(fw.ask("AM 10 -10"), "ack");
+  fw.run_ticks(200);
+  EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
+}
+
+// The same with latch = false: the emergency clears by itself, but only once the robot is at
+// rest; a request sent while it brakes is not granted.
+TEST(Emergencies, WithoutLatchNoNewMotionIsGrantedWhileTheRobotStillBrakes) {
+  Config cfg;
+  cfg.emergency.latch = false;
+  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  SafetyMonitor mon;
+  mon.attach(fw);
+  auto& robot = fw.sim().robot();
+  ASSERT_EQ(fw.ask("AM 80 80"), "ack");
+  ASSERT_TRUE(fw.run_until([&] { return fw.bb().emergency.reader().peek().trips > 0; }, 2000));
+  ASSERT_GT(robot.wheel_speeds().left, 0.3);
+  EXPECT_EQ(fw.ask("AM 30 -30"), "ack") << "not latched: the request is taken";
+  std::uint64_t granted_while_braking = 0;
+  while (robot.wheel_speeds().left > 0.0 && robot.wheel_speeds().right > 0.0) {
+    if (!commanded(fw).zero()) ++granted_while_braking;
+    fw.step();
+  }
+  EXPECT_EQ(granted_while_braking, 0u) << "a motion was granted while the robot still braked";
+  EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
 }
 
 TEST(Emergencies, StopByteReachesTheDriveInTheTickItIsRead) {
@@ -188,7 +240,11 @@ TEST(Emergencies, StopByteReachesTheDriveInTheTickItIsRead) {
   ASSERT_TRUE(xe);
   EXPECT_EQ(xe->cause, "stop-byte");
   EXPECT_EQ(xe->latched, 1);
-  EXPECT_EQ(fw.ask("XR"), "ack") << "an event cause is gone once stopped";
+  EXPECT_EQ(fw.ask("XR"), "error") << "still braking from 20 cm/s: the cause is not gone yet";
+  const auto& robot = fw.sim().robot();
+  ASSERT_TRUE(fw.run_until([&] { return robot.wheel_speeds().left == 0.0; }, 100));
+  fw.run_ticks(30);
+  EXPECT_EQ(fw.ask("XR"), "ack") << "an event cause is gone once the robot has stopped";
   fw.run_ticks(100);
   EXPECT_TRUE(commanded(fw).zero());
 }
