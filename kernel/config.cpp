@@ -144,10 +144,62 @@ class Binder {
   std::optional<ConfigError> error_;
 };
 
+// The [ptu], [gate] and [doors] sections (docs/DOORS.md): seed constants as defaults.
+void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
+  b.string("ptu.port", p.port);
+  b.integer("ptu.baud", p.baud, 1200, 921'600);
+  b.integer("ptu.min_position", p.min_position, -100'000, 100'000);
+  b.integer("ptu.max_position", p.max_position, -100'000, 100'000);
+  b.integer("ptu.speed", p.speed, 1, 100'000);
+  b.integer("ptu.acceleration", p.acceleration, 1, 1'000'000);
+  b.integer("ptu.fire_tolerance_centideg", p.fire_tolerance_centideg, 1, 250);
+  b.integer("ptu.reply_timeout_ticks", p.reply_timeout_ticks, 1, 10'000);
+  b.integer("ptu.max_failures", p.max_failures, 1, 100);
+  b.integer("ptu.cap_mm", p.cap_mm, 100, 20'000);
+  b.integer("ptu.offset_mm", p.offset_mm, 0, 1000);
+  b.integer("ptu.scale_permille", p.scale_permille, 500, 1500);
+  b.integer("ptu.filter_high_mm", p.filter_high_mm, 0, 20'000);
+  b.integer("ptu.filter_drop_mm", p.filter_drop_mm, 0, 20'000);
+  b.integer("ptu.pivot_x_mm", p.pivot_x_mm, -5000, 5000);
+  b.integer("ptu.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
+  if (!b.error() && p.min_position >= p.max_position)
+    b.fail_key("ptu.max_position", fmt::format("{} is not above ptu.min_position {}", p.max_position, p.min_position));
+
+  b.integer("gate.margin_mm", g.margin_mm, 1, 10'000);
+  b.integer("gate.max_gap_sectors", g.max_gap_sectors, 1, 36);
+  b.integer("gate.min_mm", g.min_mm, 0, 10'000);
+  b.integer("gate.max_mm", g.max_mm, 100, 20'000);
+  b.integer("gate.speed_cm_s", g.speed_cm_s, 1, 100);
+  b.integer("gate.turn_cm_s", g.turn_cm_s, 1, 100);
+  b.integer("gate.timeout_ticks", g.timeout_ticks, 1, 1'000'000);
+  b.integer("gate.stage_mm", g.stage_mm, 50, 5000);
+  b.integer("gate.lateral_tolerance_mm", g.lateral_tolerance_mm, 1, 1000);
+  b.integer("gate.heading_tolerance_centideg", g.heading_tolerance_centideg, 10, 3000);
+  b.integer("gate.max_manoeuvres", g.max_manoeuvres, 1, 100);
+  b.boolean("gate.hand_over", g.hand_over);
+
+  b.integer("doors.pan_x_mm", d.pan_x_mm, 0, 10'000);
+  b.integer("doors.pan_y_mm", d.pan_y_mm, 0, 10'000);
+  b.integer("doors.box_width_mm", d.box_width_mm, 0, 1000);
+  b.integer("doors.safety_mm", d.safety_mm, 0, 1000);
+  b.integer("doors.max_dist_mm", d.max_dist_mm, 100, 20'000);
+  b.integer("doors.time_before_move_ticks", d.time_before_move_ticks, 1, 1'000'000);
+  b.integer("doors.forward_cm_s", d.forward_cm_s, 1, 100);
+  b.integer("doors.back_cm_s", d.back_cm_s, 1, 100);
+  b.integer("doors.entered_mm", d.entered_mm, 100, 20'000);
+  b.integer("doors.exit_mm", d.exit_mm, 0, 10'000);
+  b.integer("doors.max_age_ticks", d.max_age_ticks, 10, 1'000'000);
+  b.integer("doors.same_echo_mm", d.same_echo_mm, 0, 1000);
+  b.integer("doors.timeout_ticks", d.timeout_ticks, 0, 100'000'000);
+  b.integer("doors.emergency_mask", d.emergency_mask, 0, 7);
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
-  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "process", "modules"}) b.table(t);
+  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "ptu", "gate", "doors", "process",
+                        "modules"})
+    b.table(t);
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
   b.boolean("kernel.realtime", c.kernel.realtime);
@@ -176,6 +228,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.boolean("permissions.pass_through", c.permissions.pass_through);
   b.strings("permissions.pass_through_allow", c.permissions.pass_through_allow);
   b.boolean("permissions.shutdown", c.permissions.shutdown);
+
+  bind_doors(b, c.ptu, c.gate, c.doors);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

@@ -62,6 +62,60 @@ struct PermissionsConfig {
   bool shutdown = true;                      // AX accepted
 };
 
+// The pan-tilt unit and its two sonars (seed ptu.c, ptu.h; docs/DOORS.md).
+struct PanTiltConfig {
+  std::string port;                          // the unit's serial device, empty = no unit (robuterd --ptu-port)
+  std::uint32_t baud = 9600;                 // its rate, bit/s
+  std::int32_t min_position = -1755;         // one end of the sweep, positions (−90.2°)
+  std::int32_t max_position = 1655;          // the other end, positions (85.0°)
+  std::uint32_t speed = 1500;                // pan speed, positions/s (SPEED)
+  std::uint32_t acceleration = 6000;         // pan acceleration, positions/s² (PA6000)
+  std::uint32_t fire_tolerance_centideg = 150;  // fire within this of a multiple of 5°, 0.01°
+  std::uint32_t reply_timeout_ticks = 20;    // an unanswered command times out after this, ticks
+  std::uint32_t max_failures = 3;            // consecutive time-outs or bad replies that fail the unit
+  std::uint32_t cap_mm = 2491;               // readings above this (and no echo) count as this, mm (PAN_TIME_OUT_DIST)
+  std::uint32_t offset_mm = 46;              // calibration: measured = scale · real + offset, mm
+  std::uint32_t scale_permille = 960;        // calibration scale, ‰ (0.96)
+  std::uint32_t filter_high_mm = 2300;       // spike filter: neighbours above this are high, mm (MAX)
+  std::uint32_t filter_drop_mm = 1000;       // spike filter: a spike is below high − this, mm
+  std::int32_t pivot_x_mm = -30;             // pan axis ahead of the wheel axle (negative: behind), mm
+  std::uint32_t beam_half_angle_centideg = 1250;  // half-angle of a pan-tilt sonar's beam, 0.01°
+};
+
+// The passage finder (seed gate.c, gate.h; docs/DOORS.md).
+struct GateConfig {
+  std::uint32_t margin_mm = 300;             // a jump of the differences above this marks a corner (MARGIN)
+  std::uint32_t max_gap_sectors = 8;         // a passage spans fewer far sectors than this (in_door < 8)
+  std::uint32_t min_mm = 700;                // a corner this close ends the approach (MIN)
+  std::uint32_t max_mm = 2300;               // a corner reading at or beyond this is no corner (MAX)
+  std::uint32_t speed_cm_s = 5;              // driving speed (Va), cm/s
+  std::uint32_t turn_cm_s = 2;               // turning speed of each wheel (Va/2), cm/s
+  std::uint32_t timeout_ticks = 1000;        // no passage locked for this long: give up (TIMEOUT), ticks
+  std::uint32_t stage_mm = 300;              // aligned with the front face this far from the passage, mm
+  std::uint32_t lateral_tolerance_mm = 30;   // aligned when the axle is this close to the centre line, mm
+  std::uint32_t heading_tolerance_centideg = 200;  // and the heading this close to the passage's normal, 0.01°
+  std::uint32_t max_manoeuvres = 6;          // manoeuvres allowed before giving up
+  bool hand_over = false;                    // start the door crossing when aligned (the seed's door = ON)
+};
+
+// The door crossing (seed doors.c, doors.h; docs/DOORS.md). Body length and width: [robot].
+struct DoorsConfig {
+  std::uint32_t pan_x_mm = 725;              // pan axis to the front face (PAN_X_POSITION), mm
+  std::uint32_t pan_y_mm = 350;              // pan axis to the left side (PAN_Y_POSITION), mm
+  std::uint32_t box_width_mm = 100;          // between the two transducer faces (BOX_WIDTH), mm
+  std::uint32_t safety_mm = 35;              // clearance kept from obstacles (SAFETY_DIST), mm
+  std::uint32_t max_dist_mm = 1500;          // a side all beyond this: through the door (MAX_DIST), mm
+  std::uint32_t time_before_move_ticks = 500;  // blocked on both sides this long: can't cross (TIME_BEFORE_MOVE)
+  std::uint32_t forward_cm_s = 2;            // speed going straight, cm/s
+  std::uint32_t back_cm_s = 1;               // speed of the wheel that backs off in a turn, cm/s
+  std::uint32_t entered_mm = 1500;           // both sides seen closer than this: inside the door, mm
+  std::uint32_t exit_mm = 400;               // driven on after "through" so the rear clears the door, mm
+  std::uint32_t max_age_ticks = 600;         // pan-tilt readings older than this are ignored, ticks
+  std::uint32_t same_echo_mm = 20;           // neighbouring sectors this close in range see the same echo, mm
+  std::uint32_t timeout_ticks = 30000;       // a crossing longer than this fails, ticks (0: no limit)
+  std::uint32_t emergency_mask = 1;          // detections kept on while crossing (bumper 1)
+};
+
 struct Config {
   std::string source = "(defaults)";         // file the configuration came from
   KernelConfig kernel;
@@ -69,6 +123,9 @@ struct Config {
   SonarConfig sonar;
   EmergencyConfig emergency;
   PermissionsConfig permissions;
+  PanTiltConfig ptu;
+  GateConfig gate;
+  DoorsConfig doors;
   std::vector<ProcessOverride> processes;    // [process.NAME] tables
   std::optional<std::vector<std::string>> enabled_modules;  // [modules] enabled; none = all
 };

@@ -15,6 +15,10 @@ class SerialModule;
 class UltrasonicModule;
 class EmergencyModule;
 class ExecutorModule;
+class PtuModule;
+class GateModule;
+class DoorsModule;
+class DemoModule;
 
 inline constexpr int kSensors = 24;  // ultrasonic ring sensors, numbered 1..24
 
@@ -141,6 +145,76 @@ struct ModeRequest {
   std::uint32_t seq = 0;        // bumped on every change
 };
 
+// ---- pan-tilt scanner, passage finder, door crossing, demonstration (docs/DOORS.md) ----
+
+inline constexpr int kPanTiltSectors = 72;  // 5° sectors, sector i looking 5i° counter-clockwise from the front
+
+// The robot's odometry posture when a pan-tilt sector was measured.
+struct SectorPose {
+  std::int32_t x = 0;      // 0.1 mm
+  std::int32_t y = 0;      // 0.1 mm
+  std::int32_t theta = 0;  // 0.01 degree
+};
+
+// The pan-tilt's 72-sector scan (seed pt_values, fvalues, dvalues), sector by sector as swept.
+struct PanTiltScan {
+  std::array<std::int32_t, kPanTiltSectors> raw{};          // corrected range from the transducer face, mm (BP)
+  std::array<std::int32_t, kPanTiltSectors> filtered{};     // after the spike filter, mm (BF)
+  std::array<std::int32_t, kPanTiltSectors> differences{};  // filtered[i+1] − filtered[i], mm (BD)
+  std::array<std::uint64_t, kPanTiltSectors> read_tick{};   // tick each sector was fired, 0 = never
+  std::array<SectorPose, kPanTiltSectors> pose{};           // odometry posture at each firing
+  std::uint32_t sweeps = 0;                                 // passes from one end to the other, count
+  std::uint32_t readings = 0;                               // firings read back, count
+  std::uint64_t tick = 0;                                   // tick of the latest reading
+};
+
+// What the pan-tilt, passage-finder or door-crossing module is doing (XD).
+enum class ModeState : std::uint8_t {
+  off,        // not asked for (or ended and reset)
+  starting,   // pan-tilt: start-up sequence; doors: waiting for a fresh scan
+  scanning,   // pan-tilt: sweeping and firing
+  searching,  // gate: stopped, waiting for a fresh scan to find the passage
+  moving,     // gate: manoeuvring to the passage's centre line
+  aligned,    // gate: stopped on the centre line facing the passage (done)
+  crossing,   // doors: moving through
+  waiting,    // doors: blocked on both sides, waiting for fresh readings
+  leaving,    // doors: through; driving on until the body is clear
+  crossed,    // doors: done
+  failed,     // ended without success: see the reason
+  running,    // demonstration: driving the course
+};
+
+// Why a mode failed or ended.
+enum class ModeReason : std::uint8_t {
+  none,
+  no_unit,        // pan-tilt: no port configured or it could not be opened
+  unit_silent,    // pan-tilt: the unit stopped answering
+  unit_garbage,   // pan-tilt: the unit's replies are not the protocol's
+  unit_refused,   // pan-tilt: the unit refused a command ("!")
+  unit_lost,      // pan-tilt: its port went away
+  no_passage,     // gate: no passage locked within the time-out
+  cannot_align,   // gate: no alignment within the allowed manoeuvres
+  cant_cross,     // doors: blocked on both sides for longer than the wait
+  emergency,      // an emergency stopped the robot
+  operator_motion,// a newer motion request from the link took over
+  scanner,        // the pan-tilt failed under the mode
+  cancelled,      // AT / Af (or Ag while a mode needed the scanner)
+  link_lost,      // doors: every command link closed
+  timeout,        // doors: the crossing took longer than its limit
+  shutdown,       // the firmware stopped
+};
+
+// A mode module's report.
+struct ModeStatus {
+  ModeState state = ModeState::off;     // see ModeState
+  ModeReason reason = ModeReason::none; // see ModeReason (none unless failed)
+  std::uint32_t runs = 0;               // times the mode was started, count
+  std::uint64_t since_tick = 0;         // tick the current state began
+  std::int32_t width_mm = 0;            // gate: estimated passage width, mm (0: none)
+  std::uint32_t duration_ticks = 0;     // gate/doors: length of the last run, ticks
+  std::uint64_t tick = 0;               // tick of the report
+};
+
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
 struct Blackboard {
   Topic<Heartbeat, HeartbeatModule> heartbeat;
@@ -162,6 +236,13 @@ struct Blackboard {
   // executor
   Topic<Posture, ExecutorModule> posture;
   Topic<MotionRequest, ExecutorModule> go_to_motion;
+  // pan-tilt scanner, passage finder, door crossing, demonstration (requests through the gate)
+  Topic<PanTiltScan, PtuModule> pan_tilt_scan;
+  Topic<ModeStatus, PtuModule> pan_tilt_status;
+  Topic<MotionRequest, GateModule> gate_motion;
+  Topic<ModeStatus, GateModule> gate_status;
+  Topic<MotionRequest, DoorsModule> doors_motion;
+  Topic<ModeStatus, DoorsModule> doors_status;
 };
 
 }  // namespace robuter

@@ -14,6 +14,9 @@
 #include "modules/emergency/emergency.hpp"
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
+#include "modules/ptu/ptu_module.hpp"
+#include "modules/ptu/ptu_settings.hpp"
+#include "modules/ptu/unit_port.hpp"
 #include "modules/serial/serial_module.hpp"
 #include "modules/us/ultrasonic.hpp"
 
@@ -77,18 +80,27 @@ std::optional<std::string> Firmware::setup() {
     stepper->attach_ptu(std::move(pty));
   }
   stepper->set_ptu_sweep(opt_.ptu_sweep);
+  // The pan-tilt unit's port (after the emulator's pty exists, so its path can be opened).
+  const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.port : opt_.ptu_port;
+  if (!ptu_port.empty()) {
+    auto link = std::make_unique<ptu::UnitPort>(ptu_port, cfg_.ptu.baud);
+    if (!link->error().empty()) return "pan-tilt port: " + link->error();
+    ptu_link_ = std::move(link);
+  }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
     return "--picture " + opt_.picture + ": expected a .png or .svg file";
   auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
   auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
+  auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},
-                                  {"emergency", emergency.get()},  {"executor", executor.get()}};
+                                  {"emergency", emergency.get()},  {"executor", executor.get()},
+                                  {"ptu", ptu.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   processes_.push_back(std::move(stepper));
@@ -97,6 +109,7 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(us));
   processes_.push_back(std::move(emergency));
   processes_.push_back(std::move(executor));
+  processes_.push_back(std::move(ptu));
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
     table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});

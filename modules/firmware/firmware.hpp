@@ -29,6 +29,7 @@ struct FirmwareOptions {
   bool stdio = false;                 // serve a link on standard input/output
   std::uint64_t ticks = 0;            // stop after this many ticks (0 = run until stopped)
   std::string ptu_pty;                // pan-tilt emulator's pty (symbolic link path), empty = none
+  std::string ptu_port;               // the pan-tilt unit's port for the PTU module (overrides [ptu] port)
   bool ptu_sweep = false;             // built-in pan-tilt sweep and channel-7 firing (no PTU module)
   std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
 };
@@ -60,6 +61,7 @@ class Firmware {
   std::unique_ptr<Clock> clock_;
   std::unique_ptr<hal::SimRobot> sim_;
   std::vector<std::unique_ptr<hal::ByteStream>> links_;
+  std::unique_ptr<hal::ByteStream> ptu_link_;        // the pan-tilt unit's port, when configured
   std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
   std::unique_ptr<Kernel> kernel_;
 };

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   app.add_option("--baud", opt.baud, "serial link rate, bit/s");
   app.add_flag("--stdio", opt.stdio, "serve a link on standard input/output");
   app.add_option("--ptu-pty", opt.ptu_pty, "serve the simulated pan-tilt unit (PTU-46 protocol) on a new pty; PATH becomes a symbolic link to it");
+  app.add_option("--ptu-port", opt.ptu_port, "the pan-tilt unit's serial device for the PTU module (overrides [ptu] port); with --sim, the --ptu-pty path");
   app.add_flag("--ptu-sweep", opt.ptu_sweep, "simulator: sweep the pan-tilt between its limits and fire its two sonars every 5° (no PTU module needed)");
   app.add_option("--picture", opt.picture, "simulator: at exit, draw world, robot, trail and the last ring ranges to FILE (.png or .svg)");
   app.add_flag("--stats", stats, "print per-process statistics and tick lateness at exit");

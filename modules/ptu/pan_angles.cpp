@@ -1,6 +1,8 @@
 // The seed's angle arithmetic, reproduced digit for digit (read_pt's last-digit rounding).
 #include "modules/ptu/pan_angles.hpp"
 
+#include <cmath>
+
 namespace robuter::ptu {
 
 int position_to_degrees(std::int32_t position) { return static_cast<int>(position * 185 / 3600); }
@@ -13,6 +15,16 @@ int sector_of_degrees(int degrees) {
   if (last == 4 || last == 9) a += a > 0 ? 1 : -1;
   else if (last == 1 || last == 6) a += a > 0 ? -1 : 1;
   if (a % kSectorDegrees != 0 || a < -90 || a > 85) return -1;
+  return (a + 90) / kSectorDegrees;
+}
+
+double position_to_angle(double position) { return position * 185.0 / 3600.0; }
+
+int sector_near(double degrees, double tolerance_deg) {
+  const double k = std::round(degrees / kSectorDegrees);
+  if (std::abs(degrees - k * kSectorDegrees) > tolerance_deg) return -1;
+  const int a = static_cast<int>(k) * kSectorDegrees;
+  if (a < -90 || a > 85) return -1;
   return (a + 90) / kSectorDegrees;
 }
 

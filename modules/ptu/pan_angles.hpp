@@ -19,6 +19,16 @@ int position_to_degrees(std::int32_t position);
 // the angle is not within 1° of a multiple of 5 or falls outside −90..85°.
 int sector_of_degrees(int degrees);
 
+// The pan angle of a position without truncation, degrees (pos·185/3600 = 0.0514° a position).
+double position_to_angle(double position);
+
+// The firmware's firing rule: the sector (0..35) of the multiple of 5° nearest to `degrees` when
+// within `tolerance_deg` of it and inside −90..85°, else −1. The seed's whole-degree rule above
+// fires within a 3°-wide window that truncation shifts by up to 1° (−71.9° counted as −70°); the
+// same 3° window centred (tolerance 1.5°) keeps every sector at 1500 positions/s (2.3° per 30 ms
+// activation) and halves the worst angle error.
+int sector_near(double degrees, double tolerance_deg);
+
 // The sector of the opposite transducer: the same index plus 36 (seed pt_values[pos + 36]).
 constexpr int opposite_sector(int sector) { return sector + kHalfSectors; }
 

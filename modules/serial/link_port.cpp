@@ -16,6 +16,10 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       ranges_(bb.ranges.reader()),
       timing_(bb.us_timing.reader()),
       emergency_(bb.emergency.reader()),
+      pan_tilt_scan_(bb.pan_tilt_scan.reader()),
+      pan_tilt_status_(bb.pan_tilt_status.reader()),
+      gate_status_(bb.gate_status.reader()),
+      doors_status_(bb.doors_status.reader()),
       cfg_(cfg) {}
 
 void LinkPort::wake_emergency() const {
@@ -46,9 +50,16 @@ void LinkPort::ranges(protocol::Ranges& out) const noexcept {
 
 std::int32_t LinkPort::us_timeout() const noexcept { return static_cast<std::int32_t>(w_.us.current().timeout_ms); }
 
-// The pan-tilt module will own the 72 sectors; until it runs, they read as zeros (no data).
-PortResult LinkPort::pan_tilt(protocol::SectorKind, protocol::Sectors& out) const noexcept {
-  out.fill(0);
+// The pan-tilt module's 72 sectors (zeros before the first sweep); unavailable when the module
+// is not running (a module publishes its status at start-up).
+PortResult LinkPort::pan_tilt(protocol::SectorKind kind, protocol::Sectors& out) const noexcept {
+  if (pan_tilt_status_.generation() == 0) return PortResult::unavailable;
+  const PanTiltScan& s = pan_tilt_scan_.peek();
+  const auto& src = kind == protocol::SectorKind::raw        ? s.raw
+                    : kind == protocol::SectorKind::filtered ? s.filtered
+                                                             : s.differences;
+  static_assert(kPanTiltSectors == protocol::kSectorCount, "BP/BF/BD sector count");
+  std::copy(src.begin(), src.end(), out.begin());
   return PortResult::ok;
 }
 
@@ -127,6 +138,7 @@ PortResult LinkPort::request_shutdown() noexcept {
 }
 
 PortResult LinkPort::set_pan_tilt(bool on) noexcept {
+  if (pan_tilt_status_.generation() == 0) return PortResult::unavailable;
   w_.modes.modify([&](ModeRequest& m) {
     m.pan_tilt = on;
     ++m.seq;
@@ -234,7 +246,69 @@ std::string_view LinkPort::firmware_version() const noexcept { return ROBUTER_VE
 std::uint32_t LinkPort::features() const noexcept {
   std::uint32_t f = protocol::kFeatureGoTo;
   if (cfg_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
+  if (pan_tilt_status_.generation() > 0) f |= protocol::kFeaturePanTilt;
+  if (gate_status_.generation() > 0) f |= protocol::kFeatureGate;
+  if (doors_status_.generation() > 0) f |= protocol::kFeatureDoors;
   return f;
+}
+
+namespace {
+// Stable words of XD (docs/PROTOCOL.md).
+std::string_view state_word(ModeState s) {
+  switch (s) {
+    case ModeState::off: return "off";
+    case ModeState::starting: return "starting";
+    case ModeState::scanning: return "scanning";
+    case ModeState::searching: return "searching";
+    case ModeState::moving: return "moving";
+    case ModeState::aligned: return "aligned";
+    case ModeState::crossing: return "crossing";
+    case ModeState::waiting: return "waiting";
+    case ModeState::leaving: return "leaving";
+    case ModeState::crossed: return "crossed";
+    case ModeState::failed: return "failed";
+    case ModeState::running: return "running";
+  }
+  return "off";
+}
+std::string_view reason_word(ModeReason r) {
+  switch (r) {
+    case ModeReason::none: return "none";
+    case ModeReason::no_unit: return "no-unit";
+    case ModeReason::unit_silent: return "unit-silent";
+    case ModeReason::unit_garbage: return "unit-garbage";
+    case ModeReason::unit_refused: return "unit-refused";
+    case ModeReason::unit_lost: return "unit-lost";
+    case ModeReason::no_passage: return "no-passage";
+    case ModeReason::cannot_align: return "cannot-align";
+    case ModeReason::cant_cross: return "cant-cross";
+    case ModeReason::emergency: return "emergency";
+    case ModeReason::operator_motion: return "operator";
+    case ModeReason::scanner: return "scanner";
+    case ModeReason::cancelled: return "cancelled";
+    case ModeReason::link_lost: return "link-lost";
+    case ModeReason::timeout: return "timeout";
+    case ModeReason::shutdown: return "shutdown";
+  }
+  return "none";
+}
+protocol::ModeWords words(const Reader<ModeStatus>& r) {
+  if (r.generation() == 0) return {"absent", "none"};
+  return {state_word(r.peek().state), reason_word(r.peek().reason)};
+}
+}  // namespace
+
+// XD: a module that is not running reads "absent"; unavailable only when none of them runs.
+PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
+  if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0)
+    return PortResult::unavailable;
+  out.pan_tilt = words(pan_tilt_status_);
+  out.gate = words(gate_status_);
+  out.doors = words(doors_status_);
+  out.sweeps = pan_tilt_scan_.peek().sweeps;
+  out.width_mm = gate_status_.peek().width_mm;
+  out.crossing_ticks = doors_status_.peek().duration_ticks;
+  return PortResult::ok;
 }
 
 }  // namespace robuter

@@ -68,6 +68,8 @@ class LinkPort final : public protocol::RobotPort {
   protocol::KernelFigures kernel_figures() const noexcept override;
   std::string_view firmware_version() const noexcept override;
   std::uint32_t features() const noexcept override;
+  // pan-tilt, passage finder, door crossing (XD)
+  protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
 
  private:
   // True while an emergency is latched: requests to move are refused.
@@ -79,6 +81,10 @@ class LinkPort final : public protocol::RobotPort {
   Reader<UltrasonicRanges> ranges_;
   Reader<UltrasonicTiming> timing_;
   Reader<EmergencyState> emergency_;
+  Reader<PanTiltScan> pan_tilt_scan_;
+  Reader<ModeStatus> pan_tilt_status_;
+  Reader<ModeStatus> gate_status_;
+  Reader<ModeStatus> doors_status_;
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests

@@ -46,6 +46,7 @@ enum class CommandId : std::uint8_t {
   set_verbose_errors,      // XB
   set_checksums,           // XC
   set_terminator,          // XL
+  get_modes,               // XD (pan-tilt, gate, doors)
 };
 
 }  // namespace robuter::protocol

@@ -80,6 +80,7 @@ constexpr std::array kTable = {
                "line checksums off/on"},
     CommandRow{'X', 'L', C::set_terminator, one_of("012"), handle_set_terminator,
                "reply terminator CR/LF/CRLF"},
+    CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate and door-crossing states"},
 };
 
 }  // namespace
@@ -87,7 +88,7 @@ constexpr std::array kTable = {
 // The table as a span, for documentation tools and tests.
 std::span<const CommandRow> command_table() noexcept { return kTable; }
 
-// Linear search: 34 rows of two bytes each is faster than any index worth keeping.
+// Linear search: 35 rows of two bytes each is faster than any index worth keeping.
 const CommandRow* find_command(char category, char type) noexcept {
   for (const CommandRow& row : kTable) {
     if (row.category == category && row.type == type) return &row;

@@ -55,6 +55,9 @@ void handle_set_verbose_errors(const Command&, RobotPort&, ReplyWriter&) noexcep
 void handle_set_checksums(const Command&, RobotPort&, ReplyWriter&) noexcept;       // XC
 void handle_set_terminator(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XL
 
+// X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
+void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD
+
 // The word XE writes for an emergency cause.
 std::string_view emergency_cause_name(EmergencyCause cause) noexcept;
 

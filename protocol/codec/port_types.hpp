@@ -89,6 +89,22 @@ struct KernelFigures {
   std::span<const ProcessFigures> processes;  // at most kMaxKernelProcesses are listed
 };
 
+// One mode's state for XD, as stable words (see docs/PROTOCOL.md, XD).
+struct ModeWords {
+  std::string_view state = "off";   // off, starting, scanning, searching, moving, aligned, crossing, …
+  std::string_view reason = "none"; // none, or why the mode failed (unit-silent, no-passage, cant-cross, …)
+};
+
+// The pan-tilt scanner, passage finder and door crossing for XD.
+struct ModesReport {
+  ModeWords pan_tilt;               // the scanner (Ap / Ag)
+  ModeWords gate;                   // the passage finder (AG / AT)
+  ModeWords doors;                  // the door crossing (Ad / Af)
+  std::int64_t sweeps = 0;          // pan-tilt passes completed since start
+  std::int64_t width_mm = 0;        // passage width the finder estimated, mm (0: none)
+  std::int64_t crossing_ticks = 0;  // length of the last door crossing, ticks (0: none)
+};
+
 // Optional equipment and features of this robot, for XV's capability list.
 inline constexpr std::uint32_t kFeaturePanTilt = 1;      // pan-tilt scanner fitted (Ap, BP, ...)
 inline constexpr std::uint32_t kFeatureGate = 2;         // passage finder (AG/AT)

@@ -57,6 +57,12 @@ class RobotPort {
   virtual KernelFigures kernel_figures() const noexcept = 0;    // XK
   virtual std::string_view firmware_version() const noexcept = 0;  // XV, e.g. "0.1.0"
   virtual std::uint32_t features() const noexcept = 0;          // XV, kFeature* bits
+
+  // ---- extensions (X): pan-tilt, passage finder and door crossing states (XD) ----
+  virtual PortResult modes(ModesReport& out) const noexcept {
+    (void)out;
+    return PortResult::unavailable;
+  }
 };
 
 }  // namespace robuter::protocol

@@ -56,6 +56,23 @@ TEST(PanAngles, ASweepCoversAllSeventyTwoSectors) {
   for (int i = 0; i < kSectors; ++i) EXPECT_TRUE(seen[i]) << i;
 }
 
+// The firing rule: nearest multiple of 5 within the tolerance, by hand.
+TEST(PanAngles, SectorNearAMultipleOfFive) {
+  EXPECT_NEAR(position_to_angle(-1755), -90.1875, 1e-9);
+  EXPECT_NEAR(position_to_angle(1655), 85.0486, 1e-4);
+  EXPECT_EQ(sector_near(-90.1875, 1.5), 0);
+  EXPECT_EQ(sector_near(-71.4, 1.5), 4);   // −70 ± 1.5
+  EXPECT_EQ(sector_near(-71.6, 1.5), -1);
+  EXPECT_EQ(sector_near(1.49, 1.5), 18);
+  EXPECT_EQ(sector_near(3.6, 1.5), 19);
+  EXPECT_EQ(sector_near(3.4, 1.5), -1);
+  EXPECT_EQ(sector_near(85.0486, 1.5), 35);
+  EXPECT_EQ(sector_near(88.6, 1.5), -1);   // nearest is 90: beyond the sweep
+  EXPECT_EQ(sector_near(-91.0, 1.5), 0);
+  EXPECT_EQ(sector_near(4.0, 1.0), 19);
+  EXPECT_EQ(sector_near(3.9, 1.0), -1);
+}
+
 TEST(PanAngles, WrapSector) {
   EXPECT_EQ(wrap_sector(72), 0);
   EXPECT_EQ(wrap_sector(-1), 71);

@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "hal/sitl/sim_stepper.hpp"
+
 namespace robuter::test {
 
-SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOptions sim) {
+SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOptions sim, bool with_ptu) {
   char tmpl[] = "/tmp/robuter-test-XXXXXX";
   dir_ = mkdtemp(tmpl);
   FirmwareOptions opt;
@@ -19,6 +21,7 @@ SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOp
   sim.world_file = world;
   opt.sim_options = sim;
   opt.ptys = {dir_ + "/robuter.pty"};
+  if (with_ptu) opt.ptu_pty = opt.ptu_port = dir_ + "/ptu.pty";
   fw_ = std::make_unique<Firmware>(cfg, opt);
   if (auto err = fw_->setup()) {
     error_ = *err;
@@ -103,6 +106,19 @@ std::optional<std::string> SimFirmware::ask(const std::string& line, int max_tic
     step();
   }
   return std::nullopt;
+}
+
+// Why dup2 over the master: the emulator's PtyLink keeps its descriptor number, but the pty's
+// last master reference goes away, exactly as when a USB adapter is pulled out.
+void SimFirmware::unplug_ptu() {
+  auto* stepper = module<hal::SimStepper>("sim");
+  if (stepper == nullptr || stepper->ptu_port() == nullptr) return;
+  const int fd = stepper->ptu_port()->stream().fd();
+  if (fd < 0) return;
+  const int null = ::open("/dev/null", O_RDWR | O_CLOEXEC);
+  if (null < 0) return;
+  ::dup2(null, fd);
+  ::close(null);
 }
 
 std::string SimFirmware::take_unsolicited() {

@@ -15,8 +15,11 @@ namespace robuter::test {
 
 class SimFirmware {
  public:
-  // Builds and starts the firmware (world file, config); ok() tells whether it did.
-  explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {});
+  // Builds and starts the firmware (world file, config); ok() tells whether it did. With
+  // `with_ptu` the pan-tilt emulator is served on a pty and the PTU module opens it (--ptu-pty
+  // and --ptu-port on the same temporary path).
+  explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {},
+                       bool with_ptu = false);
   ~SimFirmware();
   SimFirmware(const SimFirmware&) = delete;
   SimFirmware& operator=(const SimFirmware&) = delete;
@@ -52,6 +55,9 @@ class SimFirmware {
     const auto i = fw_->kernel().find(name);
     return i ? dynamic_cast<T*>(fw_->kernel().row(*i).process) : nullptr;
   }
+  // Unplugs the emulated pan-tilt unit: its end of the pty is closed, the PTU module's port
+  // hangs up (no-op without with_ptu).
+  void unplug_ptu();
   // Lines that arrived without being asked for (stream lines), since the last call.
   std::string take_unsolicited();
 
