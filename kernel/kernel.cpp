@@ -159,6 +159,9 @@ void Kernel::serve_events_until(Nanos deadline) {
     for (std::size_t s = 0; s < n; ++s) {
       if (pollfds_[s].revents == 0) continue;
       Watch& w = watches_[poll_map_[s]];
+      // Each event activation has its own trigger budget: what it triggers runs now, however
+      // many triggered runs the last tick used.
+      triggered_.fill(0);
       for (std::size_t i = 0; i < count_; ++i) {
         if (rows_[i].process == w.process) { activate(i, true); break; }
       }

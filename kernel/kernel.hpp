@@ -54,7 +54,8 @@ class Kernel {
   void unwatch_fd(int fd);
   // Asks for one more activation of `p` before the current tick ends (after the process now
   // running): a consumer reacts to new data in the same tick instead of at its next period.
-  // At most kMaxTriggersPerTick triggered runs per process per tick.
+  // At most kMaxTriggersPerTick triggered runs per process per tick, and as many again after
+  // each descriptor activation between ticks.
   void trigger(Process* p);
 
   std::uint64_t tick() const { return tick_; }          // the tick being run (or next)

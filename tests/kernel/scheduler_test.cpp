@@ -228,6 +228,51 @@ TEST(Scheduler, TriggersAreBoundedPerTick) {
   EXPECT_EQ(loop.runs, 1 + Kernel::kMaxTriggersPerTick);
 }
 
+// A descriptor activation between ticks gets its own trigger budget: a command that arrives
+// after the tick used up the consumer's triggered runs still reaches it at once.
+TEST(Scheduler, EventActivationsHaveTheirOwnTriggerBudget) {
+  VirtualClock clock;
+  Kernel k(clock, kTick);
+  int p[2];
+  ASSERT_EQ(pipe2(p, O_NONBLOCK), 0);
+  Recorder exec("execute", nullptr);
+  struct Producer : Process {
+    Process* consumer = nullptr;
+    int fd = -1;
+    void run(Kernel& kk) override {
+      char buf[16];
+      bool got = false;
+      while (read(fd, buf, sizeof buf) > 0) got = true;
+      if (got) kk.trigger(consumer);
+    }
+  } link;
+  link.consumer = &exec;
+  link.fd = p[0];
+  // Three producers in one tick each trigger execute once: the third finds the budget used.
+  struct Burner : Process {
+    Process* consumer = nullptr;
+    void run(Kernel& kk) override { kk.trigger(consumer); }
+  } b1, b2, b3;
+  b1.consumer = b2.consumer = b3.consumer = &exec;
+  const ProcessRow rows[] = {{"b1", &b1, 100, 0, 9, 1000},       {"b2", &b2, 100, 0, 8, 1000},
+                             {"b3", &b3, 100, 0, 7, 1000},       {"link", &link, 100, 50, 3, 1000},
+                             {"execute", &exec, 100, 50, 1, 1000}};
+  ASSERT_FALSE(k.set_table(rows));
+  ASSERT_TRUE(k.start());
+  ASSERT_TRUE(k.watch_fd(p[0], &link));
+  k.step();  // tick 0: burner triggers execute up to the budget
+  const auto runs_after_tick = exec.ticks.size();
+  EXPECT_EQ(runs_after_tick, static_cast<std::size_t>(Kernel::kMaxTriggersPerTick));
+  ASSERT_EQ(write(p[1], "AM\r", 3), 3);
+  k.step();  // the event before tick 1 triggers execute: it runs then, not at tick 50
+  ASSERT_GE(exec.ticks.size(), runs_after_tick + 1);
+  EXPECT_EQ(exec.ticks[runs_after_tick], 1u);  // served before tick 1's processes ran
+  EXPECT_EQ(k.stats(4).event_activations, runs_after_tick + 1);
+  k.shutdown();
+  close(p[0]);
+  close(p[1]);
+}
+
 // Each bad row is refused with a message that says what is wrong.
 TEST(Scheduler, TableValidationRefusesBadRows) {
   VirtualClock clock;
