@@ -34,12 +34,14 @@ void HeadingSearch::reserve(int width, int height, int slices) {
   path_.reserve(2 * stored + static_cast<std::size_t>(std::max(slices, 1)));
   const auto k = static_cast<std::size_t>(std::max(slices, 1));
   if (cls_of_.size() < k) cls_of_.resize(k, nullptr);
+  if (turn_of_.size() < k) turn_of_.resize(k, nullptr);
   if (allowed_.size() < k) allowed_.resize(k, 0);
 }
 
 PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                                const HeadingOptions& options, const CostModel& costs,
-                               const CostField* heuristic) {
+                               const CostField* heuristic,
+                               std::span<const PassGrid* const> turn_slices) {
   PlanResult r;
   path_.clear();
   const int k_count = static_cast<int>(slices.size());
@@ -66,9 +68,12 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   const auto cost = costs.table();
   std::uint8_t* allowed = allowed_.data();
   const std::uint8_t** cls_of = cls_of_.data();
+  const std::uint8_t** turn_of = turn_of_.data();
+  const bool own_turns = turn_slices.size() == slices.size();
   for (int k = 0; k < k_count; ++k) {
     allowed[k] = allowed_moves(k, k_count, options.motion);
     cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
+    turn_of[k] = own_turns ? turn_slices[static_cast<std::size_t>(k)]->cls.data() : cls_of[k];
   }
   const int tx = goal.x + 1;
   const int ty = goal.y + 1;
@@ -121,7 +126,8 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
     }
   };
 
-  relax(g0.index(sc), start.slice, 0.0, kNoMove);
+  const std::uint32_t start_index = g0.index(sc);
+  relax(start_index, start.slice, 0.0, kNoMove);
   for (;;) {
     std::uint32_t s;
     if (use_ring) {
@@ -154,8 +160,13 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
     if (k_count > 1) {
       const int up = (k + 1) % k_count;
       const int down = (k + k_count - 1) % k_count;
-      if (cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8);
-      if (down != up && cls_of[down][u] != kBlocked)
+      // The current slice is free at u (tight); turning may ask for more room, except where
+      // the robot already stands: there the body's own room is enough (it may have stopped
+      // close to something, and must be able to turn away).
+      const std::uint8_t* const* room = own_turns && u != start_index ? turn_of : cls_of;
+      const bool here = room[k][u] != kBlocked;
+      if (here && room[up][u] != kBlocked && cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8);
+      if (here && down != up && room[down][u] != kBlocked && cls_of[down][u] != kBlocked)
         relax(u, down, gu + turn, 9);
     }
   }

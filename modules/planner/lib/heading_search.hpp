@@ -45,9 +45,14 @@ class HeadingSearch {
   void reserve(int width, int height, int slices);
 
   // Why: the entry point; `slices` are K grids of one size; the path is then in path().
+  // `turn_slices` (empty, or K grids of the same size): where turning in place needs more room
+  // than translating (a body grown by a clearance), a turn k -> k±1 at a cell needs the cell
+  // free in both of these slices instead — except at the start cell, where the robot already
+  // stands and the body's own room is enough.
   PlanResult find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                   const HeadingOptions& options, const CostModel& costs = {},
-                  const CostField* heuristic = nullptr);
+                  const CostField* heuristic = nullptr,
+                  std::span<const PassGrid* const> turn_slices = {});
 
   const std::vector<CellPose>& path() const { return path_; }
 
@@ -65,6 +70,7 @@ class HeadingSearch {
   std::vector<CellPose> path_; // last path, start first
   std::uint32_t gen_ = 0;      // generation stamp
   std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
+  std::vector<const std::uint8_t*> turn_of_; // per slice: classes checked for turns (this search)
   std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
   BucketRing ring_;            // open list when edge costs allow (else open_)
 };

@@ -21,12 +21,22 @@ void Planner::set_map(const OccupancyMap& map) {
     if (cfg_.footprint == FootprintKind::Disc) masks_.push_back(disc_mask(cfg_.radius, res));
     else masks_ = rectangle_slices(cfg_.rectangle, res, cfg_.heading_slices);
     relaxation_mask_ = disc_mask(inscribed_radius(cfg_.rectangle), res);
+    turn_masks_.clear();
+    if (cfg_.footprint == FootprintKind::Rectangle && cfg_.turn_clearance > 0.0) {
+      RectangleFootprint grown = cfg_.rectangle;
+      grown.margin += cfg_.turn_clearance;
+      turn_masks_ = rectangle_slices(grown, res, cfg_.heading_slices);
+    }
   }
   layers_.resize(masks_.size());
   for (std::size_t k = 0; k < masks_.size(); ++k) layers_[k].build(map_, masks_[k]);
   if (cfg_.footprint == FootprintKind::Rectangle) relaxation_.build(map_, relaxation_mask_);
   slice_grids_.clear();
   for (const CSpaceLayer& l : layers_) slice_grids_.push_back(&l.grid());
+  turn_layers_.resize(turn_masks_.size());
+  for (std::size_t k = 0; k < turn_masks_.size(); ++k) turn_layers_[k].build(map_, turn_masks_[k]);
+  turn_grids_.clear();
+  for (const CSpaceLayer& l : turn_layers_) turn_grids_.push_back(&l.grid());
   const int w = map_.width(), h = map_.height();
   field_changes_.clear();
   field_changes_.reserve(map_.cell_count());
@@ -45,6 +55,7 @@ void Planner::sync() {
   field_changes_.clear();
   for (std::size_t k = 0; k < layers_.size(); ++k)
     layers_[k].update(map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
+  for (CSpaceLayer& l : turn_layers_) l.update(map_, changed, nullptr);
   if (rect) relaxation_.update(map_, changed, &field_changes_);
   if (field_ready_) field_.update(field_changes_);
   map_.clear_changes();
@@ -55,11 +66,27 @@ const PassGrid& Planner::expanded(int slice) const {
   return layers_[static_cast<std::size_t>(k)].grid();
 }
 
+const PassGrid& Planner::turnable(int slice) const {
+  if (turn_layers_.empty()) return expanded(slice);
+  const int k = slice < 0 || slice >= slices() ? 0 : slice;
+  return turn_layers_[static_cast<std::size_t>(k)].grid();
+}
+
 // Why: the cost field is recomputed only when the goal moves; map changes repair it.
 void Planner::ensure_field(const PassGrid& grid, Cell goal) {
   if (field_ready_ && field_.goal() == goal) return;
   field_.compute(grid, goal, costs_);
   field_ready_ = true;
+}
+
+void Planner::prepare(Point2 goal) {
+  sync();
+  const Cell g = map_.cell_of(goal);
+  if (cfg_.footprint == FootprintKind::Rectangle) {
+    if (relaxation_.grid().contains(g)) ensure_field(relaxation_.grid(), g);
+  } else if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && layers_[0].grid().contains(g)) {
+    ensure_field(layers_[0].grid(), g);
+  }
 }
 
 PlanResult Planner::plan(const Pose2& start, Point2 goal) {
@@ -92,7 +119,7 @@ PlanResult Planner::plan(const Pose2& start, Point2 goal) {
   HeadingOptions opt;
   opt.motion = cfg_.motion;
   opt.rotation_step_cost = cfg_.rotation_cost * (kPi / cfg_.heading_slices) / map_.resolution();
-  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h);
+  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h, turn_grids_);
   if (r.found()) fill_waypoints_3d(heading_search_.path());
   return r;
 }

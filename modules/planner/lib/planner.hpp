@@ -30,6 +30,8 @@ struct PlannerConfig {
   int heading_slices = 16;                        // slices over a half turn (Rectangle)
   MotionModel motion = MotionModel::Aligned;      // moves within a slice (Rectangle)
   double rotation_cost = 0.30;                    // m of path per rad turned in place (Rectangle)
+  double turn_clearance = 0.0;                    // m, extra room all round the body needed to
+                                                  // turn in place (Rectangle; 0 = as translating)
   SearchMode mode = SearchMode::Optimal;          // Disc: Optimal or the thesis' Bfs
   double unknown_cost = 1.0;                      // multiplier (>= 1) on unknown cells; 1 = free
   bool incremental = true;                        // Disc+Optimal: keep a cost field to the goal
@@ -58,6 +60,12 @@ class Planner {
   // Why: fold the map's logged changes into the layers and the cost field.
   void sync();
 
+  // Why: a plan's largest fixed cost is the goal's cost field (a Dijkstra over the whole map:
+  // the heuristic of the rectangle search, the path itself for the incremental disc); a caller
+  // with a time budget pays it here, in a step of its own, so that plan() only searches.
+  // Folds pending map changes first. No effect for a goal off the map or a one-shot search.
+  void prepare(Point2 goal);
+
   // Why: plan from a pose to a point (world frame); the path is then in waypoints().
   // PlanResult lengths and costs are in cells (multiply by resolution for metres).
   PlanResult plan(const Pose2& start, Point2 goal);
@@ -65,6 +73,9 @@ class Planner {
   const std::vector<Waypoint>& waypoints() const { return waypoints_; }
   // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
   const PassGrid& expanded(int slice = 0) const;
+  // Why: pictures and the follower ask where turning in place is allowed (the translation
+  // layer when no turn clearance is configured).
+  const PassGrid& turnable(int slice = 0) const;
   int slices() const { return static_cast<int>(layers_.size()); }
   const CostField& field() const { return field_; }
 
@@ -82,6 +93,9 @@ class Planner {
   std::vector<CSpaceLayer> layers_;     // Disc: 1 layer; Rectangle: one per heading slice
   CSpaceLayer relaxation_;              // Rectangle: inscribed-disc layer (heuristic field)
   std::vector<const PassGrid*> slice_grids_;  // pointers to layers_' grids
+  std::vector<FootprintMask> turn_masks_;     // Rectangle with turn_clearance: grown body per slice
+  std::vector<CSpaceLayer> turn_layers_;      // where turning in place is allowed, per slice
+  std::vector<const PassGrid*> turn_grids_;   // pointers to turn_layers_' grids (empty: none)
   std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
   CostField field_;                     // cost to the goal on the field grid
   bool field_ready_ = false;            // field_ matches the current goal and grid
