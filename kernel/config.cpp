@@ -194,11 +194,43 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("doors.emergency_mask", d.emergency_mask, 0, 7);
 }
 
+// The [planner] section, and the map's size against what the planner can hold in memory.
+void bind_planner(Binder& b, PlannerModuleConfig& p) {
+  constexpr long long kFar = 1'000'000;  // mm: 1 km, beyond any room
+  b.integer("planner.map_origin_x_mm", p.map_origin_x_mm, -kFar, kFar);
+  b.integer("planner.map_origin_y_mm", p.map_origin_y_mm, -kFar, kFar);
+  b.integer("planner.map_width_mm", p.map_width_mm, 500, kFar);
+  b.integer("planner.map_height_mm", p.map_height_mm, 500, kFar);
+  b.integer("planner.cell_mm", p.cell_mm, 10, 500);
+  b.string("planner.footprint", p.footprint, {"rectangle", "disc"});
+  b.integer("planner.disc_radius_mm", p.disc_radius_mm, 50, 5000);
+  b.integer("planner.body_center_ahead_mm", p.body_center_ahead_mm, 0, 5000);
+  b.integer("planner.margin_mm", p.margin_mm, 0, 1000);
+  b.integer("planner.turn_clearance_mm", p.turn_clearance_mm, 0, 1000);
+  b.integer("planner.heading_slices", p.heading_slices, 4, 64);
+  b.integer("planner.hit_threshold", p.hit_threshold, 1, 254);
+  b.integer("planner.scan_passes", p.scan_passes, 1, 20);
+  b.integer("planner.beam_range_mm", p.beam_range_mm, 200, 10'000);
+  b.integer("planner.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
+  b.integer("planner.follow_range_mm", p.follow_range_mm, 100, 10'000);
+  b.integer("planner.goal_tolerance_mm", p.goal_tolerance_mm, 10, 5000);
+  b.integer("planner.drive_speed_cm_s", p.drive_speed_cm_s, 1, 100);
+  b.integer("planner.turn_speed_cm_s", p.turn_speed_cm_s, 1, 100);
+  if (b.error()) return;
+  // Memory per cell (docs/PLANNER.md): about 45 B per heading slice plus 60 B for the rectangle,
+  // 130 B for a disc; keep the planner within about 200 MB.
+  const long long cells = static_cast<long long>(p.map_width_mm / p.cell_mm) * (p.map_height_mm / p.cell_mm);
+  const long long limit = p.footprint == "disc" ? 1'000'000 : 200'000'000 / (45LL * p.heading_slices + 60);
+  if (cells > limit)
+    b.fail_key("planner.map_width_mm", fmt::format("a map of {} cells is too large for the {} planner (at most {})",
+                                                   cells, p.footprint, limit));
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
-  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "ptu", "gate", "doors", "process",
-                        "modules"})
+  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
+                        "process", "modules"})
     b.table(t);
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
@@ -230,6 +262,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.boolean("permissions.shutdown", c.permissions.shutdown);
 
   bind_doors(b, c.ptu, c.gate, c.doors);
+
+  bind_planner(b, c.planner);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

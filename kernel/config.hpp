@@ -116,6 +116,29 @@ struct DoorsConfig {
   std::uint32_t emergency_mask = 1;          // detections kept on while crossing (bumper 1)
 };
 
+// The grid planner (modules/planner): its map, robot model, sonar use and motion.
+struct PlannerModuleConfig {
+  std::int32_t map_origin_x_mm = -6000;  // lower-left corner of the map, odometry frame, mm
+  std::int32_t map_origin_y_mm = -6000;  // mm
+  std::uint32_t map_width_mm = 12000;    // map extent along x, mm
+  std::uint32_t map_height_mm = 12000;   // map extent along y, mm
+  std::uint32_t cell_mm = 50;            // cell side, mm (seed 000: 5 cm)
+  std::string footprint = "rectangle";   // "rectangle" (the body, with heading) or "disc"
+  std::uint32_t disc_radius_mm = 780;    // disc footprint radius, mm (axle to a front corner)
+  std::uint32_t body_center_ahead_mm = 183;  // body rectangle centre ahead of the wheel axle, mm
+  std::uint32_t margin_mm = 0;           // clearance added all round the body to translate, mm
+  std::uint32_t turn_clearance_mm = 250; // more clearance needed to turn in place, mm
+  std::uint32_t heading_slices = 16;     // heading slices over a half turn (rectangle)
+  std::uint32_t hit_threshold = 2;       // net sonar hits that make a cell an obstacle
+  std::uint32_t scan_passes = 2;         // full ring passes waited for at each stop
+  std::uint32_t beam_range_mm = 2500;    // readings marked up to this range, mm
+  std::uint32_t beam_half_angle_centideg = 1250;  // ring sonar cone half-angle, 0.01° (0: axis only)
+  std::uint32_t follow_range_mm = 1500;  // the path is followed this far before a new scan, mm
+  std::uint32_t goal_tolerance_mm = 100; // arrived within this distance of the goal, mm
+  std::uint32_t drive_speed_cm_s = 20;   // fastest wheel while driving, cm/s
+  std::uint32_t turn_speed_cm_s = 10;    // fastest wheel while turning in place, cm/s
+};
+
 struct Config {
   std::string source = "(defaults)";         // file the configuration came from
   KernelConfig kernel;
@@ -123,6 +146,7 @@ struct Config {
   SonarConfig sonar;
   EmergencyConfig emergency;
   PermissionsConfig permissions;
+  PlannerModuleConfig planner;
   PanTiltConfig ptu;
   GateConfig gate;
   DoorsConfig doors;

@@ -15,6 +15,8 @@ class SerialModule;
 class UltrasonicModule;
 class EmergencyModule;
 class ExecutorModule;
+class PlannerModule;
+class LinkPort;  // the serial module's protocol view: writes the planner's goal (XG, XH)
 class PtuModule;
 class GateModule;
 class DoorsModule;
@@ -215,6 +217,55 @@ struct ModeStatus {
   std::uint64_t tick = 0;               // tick of the report
 };
 
+// A navigation goal for the grid planner (XG / XH), in the odometry frame.
+struct PlannerGoal {
+  std::int32_t x = 0;           // 0.1 mm
+  std::int32_t y = 0;           // 0.1 mm
+  std::int32_t theta = 0;       // 0.01 degree, final heading when has_theta
+  bool has_theta = false;       // turn to theta once at (x, y)
+  bool active = false;          // false cancels (XH)
+  std::uint32_t seq = 0;        // bumped on every request
+};
+
+// What the grid planner is doing.
+enum class PlannerState : std::uint8_t {
+  idle,         // no goal yet
+  scanning,     // stopped, waiting for fresh ring data
+  planning,     // a plan is due this activation
+  moving,       // following the visible prefix of the path
+  reached,      // at the goal (within the tolerance)
+  unreachable,  // no path to the goal on the current map (or the goal cell is an obstacle)
+  blocked,      // the robot's own place is an obstacle on the map: no plan starts from here
+  outside,      // the robot is off the planner's map
+  stopped,      // an emergency, or another motion source, ended the navigation
+  cancelled,    // XH
+};
+
+// The grid planner's report (XP).
+struct PlannerStatus {
+  PlannerState state = PlannerState::idle;  // see PlannerState
+  std::int32_t goal_x = 0;      // goal being served, 0.1 mm
+  std::int32_t goal_y = 0;      // 0.1 mm
+  std::uint32_t path_mm = 0;    // length of the last path found, mm (0: none)
+  std::uint32_t prefix_mm = 0;  // length of the part being followed, mm
+  std::uint32_t plans = 0;      // plans made for this goal (the first plus the replans)
+  std::uint32_t scans = 0;      // stops to scan for this goal
+  std::uint32_t plan_us = 0;    // execution time of the last plan's search, µs (thread CPU time)
+  std::uint32_t run_us_max = 0; // longest activation of the planner since start, µs (thread CPU time)
+  std::uint32_t goal_seq = 0;   // PlannerGoal.seq being served
+  std::uint64_t tick = 0;       // tick of the report
+};
+
+// Seed 003's text view of the planner's map around the robot (XM).
+struct PlannerMapWindow {
+  static constexpr int kSide = 41;  // cells per side (odd: the robot's cell is the centre)
+  std::array<char, kSide * kSide> cells{};  // '.', '#', ' ', 'P'; row 0 = top (largest y)
+  std::int32_t center_x = 0;    // centre of the robot's cell, 0.1 mm (odometry frame)
+  std::int32_t center_y = 0;    // 0.1 mm
+  std::int32_t cell_mm = 0;     // cell side, mm (0: no map yet)
+  std::uint64_t tick = 0;       // tick of the rendering
+};
+
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
 struct Blackboard {
   Topic<Heartbeat, HeartbeatModule> heartbeat;
@@ -236,6 +287,11 @@ struct Blackboard {
   // executor
   Topic<Posture, ExecutorModule> posture;
   Topic<MotionRequest, ExecutorModule> go_to_motion;
+  // planner (goal from the link; requests, report and map view from the planner)
+  Topic<PlannerGoal, LinkPort> planner_goal;
+  Topic<MotionRequest, PlannerModule> planner_motion;
+  Topic<PlannerStatus, PlannerModule> planner_status;
+  Topic<PlannerMapWindow, PlannerModule> planner_map;
   // pan-tilt scanner, passage finder, door crossing, demonstration (requests through the gate)
   Topic<PanTiltScan, PtuModule> pan_tilt_scan;
   Topic<ModeStatus, PtuModule> pan_tilt_status;

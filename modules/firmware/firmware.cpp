@@ -14,6 +14,7 @@
 #include "modules/emergency/emergency.hpp"
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
+#include "modules/planner/planner_module.hpp"
 #include "modules/ptu/ptu_module.hpp"
 #include "modules/ptu/ptu_settings.hpp"
 #include "modules/ptu/unit_port.hpp"
@@ -92,6 +93,9 @@ std::optional<std::string> Firmware::setup() {
   auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
   auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
+  auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
+  emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
+  planner->set_emergency(emergency.get());
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
   us->set_emergency(emergency.get());
@@ -100,7 +104,7 @@ std::optional<std::string> Firmware::setup() {
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},
                                   {"emergency", emergency.get()},  {"executor", executor.get()},
-                                  {"ptu", ptu.get()}};
+                                  {"planner", planner.get()},      {"ptu", ptu.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   processes_.push_back(std::move(stepper));
@@ -109,6 +113,7 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(us));
   processes_.push_back(std::move(emergency));
   processes_.push_back(std::move(executor));
+  processes_.push_back(std::move(planner));
   processes_.push_back(std::move(ptu));
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));

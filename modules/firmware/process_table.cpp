@@ -18,6 +18,8 @@ constexpr DefaultRow kDefaults[] = {
     {"executor", 10, 2, 4, 2000},   // motors and odometry (seed execute 10, 4, 2)
     {"emergency", 10, 4, 5, 2000},  // watchdog and request-to-move gate (seed emergency 10, 5, 4)
     {"heartbeat", 100, 0, 1, 1000}, // proof of life, once a second
+    {"planner", 10, 3, 0, 20000},   // grid planner: an odd tick (only "sim" runs there), last in it;
+                                    // a plan may take ~10 ms (docs/PLANNER.md, "The module")
     {"ptu", 3, 1, 2, 2000},         // pan-tilt unit and its two sonars (seed ptu: every 30 ms)
 };
 }  // namespace

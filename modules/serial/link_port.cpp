@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "kernel/kernel.hpp"
+#include "modules/planner/map_bounds.hpp"
 
 namespace robuter {
 
@@ -16,6 +17,9 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       ranges_(bb.ranges.reader()),
       timing_(bb.us_timing.reader()),
       emergency_(bb.emergency.reader()),
+      planner_status_(bb.planner_status.reader()),
+      planner_map_(bb.planner_map.reader()),
+      goal_out_(bb.planner_goal.writer()),
       pan_tilt_scan_(bb.pan_tilt_scan.reader()),
       pan_tilt_status_(bb.pan_tilt_status.reader()),
       gate_status_(bb.gate_status.reader()),
@@ -246,10 +250,86 @@ std::string_view LinkPort::firmware_version() const noexcept { return ROBUTER_VE
 std::uint32_t LinkPort::features() const noexcept {
   std::uint32_t f = protocol::kFeatureGoTo;
   if (cfg_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
+  if (planner_running()) f |= protocol::kFeaturePlanner;
   if (pan_tilt_status_.generation() > 0) f |= protocol::kFeaturePanTilt;
   if (gate_status_.generation() > 0) f |= protocol::kFeatureGate;
   if (doors_status_.generation() > 0) f |= protocol::kFeatureDoors;
   return f;
+}
+
+// XG: checked here so that a refused goal changes nothing: the planner must run, the goal must
+// lie on its map, and no emergency may be latched (as AW).
+PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexcept {
+  if (!planner_running()) return PortResult::unavailable;
+  if (with_theta && (g.theta <= -18000 || g.theta > 18000)) return PortResult::out_of_range;
+  if (!planner::goal_on_map(cfg_.planner, g.x, g.y)) return PortResult::out_of_range;
+  if (latched()) return PortResult::refused_emergency;
+  goal_out_.modify([&](PlannerGoal& p) {
+    p.x = g.x;
+    p.y = g.y;
+    p.theta = with_theta ? g.theta : 0;
+    p.has_theta = with_theta;
+    p.active = true;
+    ++p.seq;
+  });
+  return PortResult::ok;
+}
+
+// XH: always accepted while the planner runs (a halt is never refused).
+PortResult LinkPort::cancel_goal() noexcept {
+  if (!planner_running()) return PortResult::unavailable;
+  goal_out_.modify([](PlannerGoal& p) {
+    p.active = false;
+    ++p.seq;
+  });
+  return PortResult::ok;
+}
+
+namespace {
+protocol::PlannerState to_protocol(PlannerState s) {
+  switch (s) {
+    case PlannerState::idle: return protocol::PlannerState::idle;
+    case PlannerState::scanning: return protocol::PlannerState::scanning;
+    case PlannerState::planning: return protocol::PlannerState::planning;
+    case PlannerState::moving: return protocol::PlannerState::moving;
+    case PlannerState::reached: return protocol::PlannerState::reached;
+    case PlannerState::unreachable: return protocol::PlannerState::unreachable;
+    case PlannerState::blocked: return protocol::PlannerState::blocked;
+    case PlannerState::outside: return protocol::PlannerState::outside;
+    case PlannerState::stopped: return protocol::PlannerState::stopped;
+    case PlannerState::cancelled: return protocol::PlannerState::cancelled;
+  }
+  return protocol::PlannerState::idle;
+}
+}  // namespace
+
+PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept {
+  if (!planner_running()) return PortResult::unavailable;
+  const PlannerStatus& s = planner_status_.peek();
+  out.state = to_protocol(s.state);
+  out.goal_x = s.goal_x;
+  out.goal_y = s.goal_y;
+  out.path_mm = s.path_mm;
+  out.prefix_mm = s.prefix_mm;
+  out.replans = s.plans > 0 ? s.plans - 1 : 0;
+  out.scans = s.scans;
+  out.plan_us = s.plan_us;
+  out.max_us = s.run_us_max;
+  return PortResult::ok;
+}
+
+// The window lives in the planner's topic: valid while the line is handled (one thread).
+static_assert(PlannerMapWindow::kSide == protocol::kMapWindowSide, "XM window size");
+
+PortResult LinkPort::planner_map(protocol::MapWindow& out) const noexcept {
+  if (!planner_running() || planner_map_.peek().cell_mm == 0) return PortResult::unavailable;
+  const PlannerMapWindow& w = planner_map_.peek();
+  out.side = PlannerMapWindow::kSide;
+  out.cell_mm = w.cell_mm;
+  out.center_x = w.center_x;
+  out.center_y = w.center_y;
+  out.cells = std::string_view(w.cells.data(), w.cells.size());
+  return PortResult::ok;
 }
 
 namespace {

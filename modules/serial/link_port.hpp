@@ -68,6 +68,11 @@ class LinkPort final : public protocol::RobotPort {
   protocol::KernelFigures kernel_figures() const noexcept override;
   std::string_view firmware_version() const noexcept override;
   std::uint32_t features() const noexcept override;
+  // grid planner (XG, XH, XP, XM)
+  protocol::PortResult set_goal(const protocol::Posture& goal, bool with_theta) noexcept override;
+  protocol::PortResult cancel_goal() noexcept override;
+  protocol::PortResult planner_status(protocol::PlannerReport& out) const noexcept override;
+  protocol::PortResult planner_map(protocol::MapWindow& out) const noexcept override;
   // pan-tilt, passage finder, door crossing (XD)
   protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
 
@@ -75,12 +80,17 @@ class LinkPort final : public protocol::RobotPort {
   // True while an emergency is latched: requests to move are refused.
   bool latched() const;
   std::uint64_t tick() const;
+  // True once the planner module has published (its process row runs).
+  bool planner_running() const { return planner_status_.generation() > 0; }
 
   LinkWriters w_;                          // topics the serial module owns
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<UltrasonicTiming> timing_;
   Reader<EmergencyState> emergency_;
+  Reader<PlannerStatus> planner_status_;
+  Reader<PlannerMapWindow> planner_map_;
+  Writer<PlannerGoal> goal_out_;           // this port owns the planner's goal topic
   Reader<PanTiltScan> pan_tilt_scan_;
   Reader<ModeStatus> pan_tilt_status_;
   Reader<ModeStatus> gate_status_;

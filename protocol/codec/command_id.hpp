@@ -46,6 +46,10 @@ enum class CommandId : std::uint8_t {
   set_verbose_errors,      // XB
   set_checksums,           // XC
   set_terminator,          // XL
+  set_goal,                // XG (grid planner)
+  cancel_goal,             // XH
+  get_planner_status,      // XP
+  get_planner_map,         // XM
   get_modes,               // XD (pan-tilt, gate, doors)
 };
 

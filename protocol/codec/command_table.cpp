@@ -80,6 +80,13 @@ constexpr std::array kTable = {
                "line checksums off/on"},
     CommandRow{'X', 'L', C::set_terminator, one_of("012"), handle_set_terminator,
                "reply terminator CR/LF/CRLF"},
+    CommandRow{'X', 'G', C::set_goal, integers_from(2, kAny, kAny, kTheta), handle_set_goal,
+               "planner goal x y [theta]"},
+    CommandRow{'X', 'H', C::cancel_goal, no_params(), handle_cancel_goal, "planner halt (cancel goal)"},
+    CommandRow{'X', 'P', C::get_planner_status, no_params(), handle_get_planner_status,
+               "planner status"},
+    CommandRow{'X', 'M', C::get_planner_map, no_params(), handle_get_planner_map,
+               "planner map around the robot"},
     CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate and door-crossing states"},
 };
 
@@ -88,7 +95,7 @@ constexpr std::array kTable = {
 // The table as a span, for documentation tools and tests.
 std::span<const CommandRow> command_table() noexcept { return kTable; }
 
-// Linear search: 35 rows of two bytes each is faster than any index worth keeping.
+// Linear search: 39 rows of two bytes each is faster than any index worth keeping.
 const CommandRow* find_command(char category, char type) noexcept {
   for (const CommandRow& row : kTable) {
     if (row.category == category && row.type == type) return &row;

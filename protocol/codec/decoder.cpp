@@ -28,7 +28,8 @@ class Tokens {
   std::size_t pos_ = 0;    // where the next token search starts
 };
 
-// Exactly `count` integers; a wrong count wins over a malformed value.
+// Exactly `count` integers (or min_count..count when the row allows optional ones); a wrong
+// count wins over a malformed value.
 ErrorCode decode_integers(std::string_view params, const Schema& schema, Command& cmd) noexcept {
   Tokens tokens(params);
   std::string_view token;
@@ -40,7 +41,8 @@ ErrorCode decode_integers(std::string_view params, const Schema& schema, Command
     if (e != ErrorCode::none && first_bad == ErrorCode::none) first_bad = e;
     ++n;
   }
-  if (n != schema.count) return ErrorCode::bad_parameter_count;
+  const std::size_t least = schema.min_count > 0 ? schema.min_count : schema.count;
+  if (n < least || n > schema.count) return ErrorCode::bad_parameter_count;
   cmd.int_count = static_cast<std::uint8_t>(n);
   return first_bad;
 }

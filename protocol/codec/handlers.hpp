@@ -55,6 +55,14 @@ void handle_set_verbose_errors(const Command&, RobotPort&, ReplyWriter&) noexcep
 void handle_set_checksums(const Command&, RobotPort&, ReplyWriter&) noexcept;       // XC
 void handle_set_terminator(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XL
 
+// X: the grid planner (handlers_planner.cpp)
+void handle_set_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;            // XG
+void handle_cancel_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XH
+void handle_get_planner_status(const Command&, RobotPort&, ReplyWriter&) noexcept;  // XP
+void handle_get_planner_map(const Command&, RobotPort&, ReplyWriter&) noexcept;     // XM
+// The word XP writes for a planner state.
+std::string_view planner_state_name(PlannerState state) noexcept;
+
 // X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD
 

@@ -72,6 +72,7 @@ void handle_get_version(const Command&, RobotPort& port, ReplyWriter& out) noexc
   if (f & kFeatureDoors) out.raw(",doors");
   if (f & kFeaturePassThrough) out.raw(",passthrough");
   if (f & kFeatureGoTo) out.raw(",goto");
+  if (f & kFeaturePlanner) out.raw(",planner");
 }
 
 // XS<ticks>: 0 stops the stream; otherwise at least kMinStreamPeriod ticks.

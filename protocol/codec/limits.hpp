@@ -10,8 +10,10 @@ inline constexpr std::size_t kMaxLineLength = 200;   // bytes before the termina
 inline constexpr std::size_t kSensorCount = 24;      // ultrasonic ring sensors
 inline constexpr std::size_t kSectorCount = 72;      // pan-tilt sectors of 5 degrees
 inline constexpr std::size_t kMaxIntParams = 3;      // most integers any message takes (AC, AW)
-inline constexpr std::size_t kReplyCapacity = 1024;  // bytes of one reply line, tail included
+inline constexpr std::size_t kReplyCapacity = 2048;  // bytes of one reply line, tail included
+                                                     // (XM's 41 x 41 map window needs ~1.8 kB)
 inline constexpr std::size_t kMaxKernelProcesses = 16;  // processes listed by an XK reply
+inline constexpr int kMapWindowSide = 41;            // cells per side of XM's map window
 inline constexpr std::size_t kMaxTokenLength = 24;   // bytes of one port-supplied word in a reply
 inline constexpr std::uint8_t kStopByte = 0x18;      // CAN: immediate stop, out of band
 inline constexpr int kProtocolVersion = 1;           // reported by XV; 1 = seed + X extensions

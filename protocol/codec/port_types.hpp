@@ -105,11 +105,48 @@ struct ModesReport {
   std::int64_t crossing_ticks = 0;  // length of the last door crossing, ticks (0: none)
 };
 
+// What the grid planner is doing (XP).
+enum class PlannerState : std::uint8_t {
+  idle,         // no goal yet
+  scanning,     // stopped, waiting for fresh ring data
+  planning,     // about to plan
+  moving,       // following the visible part of the path
+  reached,      // at the goal
+  unreachable,  // no path on the current map (or the goal is an obstacle)
+  blocked,      // the robot's own place is an obstacle on the map
+  outside,      // the robot is off the planner's map
+  stopped,      // an emergency or another motion request ended the navigation
+  cancelled,    // XH
+};
+
+// The grid planner's report for XP.
+struct PlannerReport {
+  PlannerState state = PlannerState::idle;  // what it is doing
+  std::int32_t goal_x = 0;        // goal, 0.1 mm
+  std::int32_t goal_y = 0;        // 0.1 mm
+  std::int64_t path_mm = 0;       // length of the last path found, mm (0: none)
+  std::int64_t prefix_mm = 0;     // length of the part being followed, mm
+  std::int64_t replans = 0;       // plans after the first for this goal
+  std::int64_t scans = 0;         // stops to scan for this goal
+  std::int64_t plan_us = 0;       // execution time of the last plan's search, microseconds
+  std::int64_t max_us = 0;        // longest activation of the planner since start, microseconds
+};
+
+// The planner's map around the robot for XM: seed 003's characters, top row first.
+struct MapWindow {
+  std::int32_t side = 0;          // cells per side
+  std::int32_t cell_mm = 0;       // cell side, mm
+  std::int32_t center_x = 0;      // centre of the middle cell (the robot's), 0.1 mm
+  std::int32_t center_y = 0;      // 0.1 mm
+  std::string_view cells;         // side x side of '.', '#', ' ', 'P'; port-owned, valid while handled
+};
+
 // Optional equipment and features of this robot, for XV's capability list.
 inline constexpr std::uint32_t kFeaturePanTilt = 1;      // pan-tilt scanner fitted (Ap, BP, ...)
 inline constexpr std::uint32_t kFeatureGate = 2;         // passage finder (AG/AT)
 inline constexpr std::uint32_t kFeatureDoors = 4;        // door crossing (Ad/Af)
 inline constexpr std::uint32_t kFeaturePassThrough = 8;  // AY enabled by configuration
 inline constexpr std::uint32_t kFeatureGoTo = 16;        // AW go-to-posture
+inline constexpr std::uint32_t kFeaturePlanner = 32;     // XG/XH/XP/XM grid planner running
 
 }  // namespace robuter::protocol

@@ -58,6 +58,23 @@ class RobotPort {
   virtual std::string_view firmware_version() const noexcept = 0;  // XV, e.g. "0.1.0"
   virtual std::uint32_t features() const noexcept = 0;          // XV, kFeature* bits
 
+  // ---- extensions (X): the grid planner; a port without one answers unavailable ----
+  // XG: navigate to goal.x, goal.y (0.1 mm), then turn to goal.theta when `with_theta`.
+  virtual PortResult set_goal(const Posture& goal, bool with_theta) noexcept {
+    (void)goal;
+    (void)with_theta;
+    return PortResult::unavailable;
+  }
+  virtual PortResult cancel_goal() noexcept { return PortResult::unavailable; }  // XH
+  virtual PortResult planner_status(PlannerReport& out) const noexcept {         // XP
+    (void)out;
+    return PortResult::unavailable;
+  }
+  virtual PortResult planner_map(MapWindow& out) const noexcept {                // XM
+    (void)out;
+    return PortResult::unavailable;
+  }
+
   // ---- extensions (X): pan-tilt, passage finder and door crossing states (XD) ----
   virtual PortResult modes(ModesReport& out) const noexcept {
     (void)out;

@@ -31,6 +31,7 @@ struct Schema {
   std::uint8_t count = 0;                          // integers: how many
   std::array<IntRange, kMaxIntParams> ranges{};    // integers: bounds of each
   std::string_view choices{};                      // one_of: the accepted characters
+  std::uint8_t min_count = 0;                      // integers: fewest accepted (0: exactly `count`)
 };
 
 // Schema builders so table rows read like the protocol's table.
@@ -43,6 +44,10 @@ constexpr Schema integers(IntRange a, IntRange b) noexcept {
 }
 constexpr Schema integers(IntRange a, IntRange b, IntRange c) noexcept {
   return Schema{SchemaKind::integers, 3, {a, b, c}, {}};
+}
+// The first `min` integers required, the rest optional (XG: x y, theta optional).
+constexpr Schema integers_from(std::uint8_t min, IntRange a, IntRange b, IntRange c) noexcept {
+  return Schema{SchemaKind::integers, 3, {a, b, c}, {}, min};
 }
 constexpr Schema one_of(std::string_view choices) noexcept {
   return Schema{SchemaKind::one_of, 0, {}, choices};

@@ -35,6 +35,9 @@ class FakeRobotPort final : public RobotPort {
   KernelFigures kernel{1000, 180, 42, {}};   // processes filled in by kernel_figures()
   std::string_view version = "0.1.0";        // firmware version
   std::uint32_t feature_bits = kFeaturePanTilt | kFeatureGate | kFeatureDoors;
+  bool has_planner = true;                   // planner calls answer unavailable when false
+  PlannerReport planner{PlannerState::moving, 150000, 55000, 13950, 1480, 3, 4, 812, 4650};
+  std::array<char, kMapWindowSide * kMapWindowSide> map_cells{};  // XM window, filled by the constructor
 
   // ---- what requests return ----
   PortResult result = PortResult::ok;          // default answer of every request
@@ -59,6 +62,17 @@ class FakeRobotPort final : public RobotPort {
   std::int32_t last_timeout = -1;    // last set_us_timeout, ms
   bool auto_toggle = false;          // last set_auto_toggle
   int reenables = 0;                 // reenable() calls
+  Posture last_planner_goal{};       // last set_goal
+  bool last_goal_theta = false;      // its with_theta
+  int goals = 0;                     // set_goal calls
+  int goal_cancels = 0;              // cancel_goal calls
+
+  // A window of free cells with one obstacle row at the top, the robot in the middle.
+  FakeRobotPort() {
+    map_cells.fill(' ');
+    for (int c = 0; c < kMapWindowSide; ++c) map_cells[static_cast<std::size_t>(c)] = '#';
+    map_cells[static_cast<std::size_t>(kMapWindowSide * kMapWindowSide / 2)] = 'P';
+  }
 
   // The last pass-through text as a view.
   std::string_view passed() const { return {pass_text.data(), pass_length}; }
@@ -129,6 +143,28 @@ class FakeRobotPort final : public RobotPort {
   }
   std::string_view firmware_version() const noexcept override { return version; }
   std::uint32_t features() const noexcept override { return feature_bits; }
+  PortResult set_goal(const Posture& goal, bool with_theta) noexcept override {
+    if (!has_planner) return PortResult::unavailable;
+    ++goals;
+    last_goal_theta = with_theta;
+    return record(last_planner_goal, goal);
+  }
+  PortResult cancel_goal() noexcept override {
+    if (!has_planner) return PortResult::unavailable;
+    ++calls;
+    ++goal_cancels;
+    return result;
+  }
+  PortResult planner_status(PlannerReport& out) const noexcept override {
+    if (!has_planner) return PortResult::unavailable;
+    out = planner;
+    return PortResult::ok;
+  }
+  PortResult planner_map(MapWindow& out) const noexcept override {
+    if (!has_planner) return PortResult::unavailable;
+    out = MapWindow{kMapWindowSide, 50, -12345, 67890, std::string_view(map_cells.data(), map_cells.size())};
+    return PortResult::ok;
+  }
 
  private:
   // Stores a request's argument and returns the scripted answer.

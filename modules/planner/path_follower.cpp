@@ -1,0 +1,76 @@
+// Turn-then-drive legs with proportional control, as the go-to (AW) does, but in both directions.
+#include "modules/planner/path_follower.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace robuter::planner {
+
+namespace {
+// An angle in radians brought into (−π, π].
+double wrap(double a) {
+  a = std::remainder(a, 2.0 * plan::kPi);
+  return a <= -plan::kPi ? a + 2.0 * plan::kPi : a;
+}
+// A speed in cm/s rounded, at least `lo` in magnitude when not zero, at most `hi`.
+std::int32_t shape(double v, std::int32_t lo, std::int32_t hi) {
+  const double m = std::clamp(std::abs(v), static_cast<double>(lo), static_cast<double>(hi));
+  const auto r = static_cast<std::int32_t>(std::lround(m));
+  return v < 0 ? -r : r;
+}
+}  // namespace
+
+void PathFollower::start(std::span<const Leg> legs) {
+  count_ = std::min(legs.size(), legs_.size());
+  std::copy_n(legs.begin(), count_, legs_.begin());
+  index_ = 0;
+  driving_ = false;
+}
+
+// Positive error = counter-clockwise = right wheel forward, left wheel back.
+Wheels PathFollower::turn(double error) const {
+  const double half_base_cm = static_cast<double>(s_.wheel_base_mm) / 20.0;
+  const std::int32_t w = shape(s_.turn_gain * error * half_base_cm, s_.min_cm_s, s_.max_turn_cm_s);
+  return {-w, w};
+}
+
+// The turn uses the unwrapped heading, so a path that turns the long way round is obeyed; the
+// drive steers towards the leg's end (facing it, or facing away when backing) and ends when the
+// end is reached or passed along the leg.
+Wheels PathFollower::step(const plan::Pose2& now) {
+  while (index_ < count_) {
+    const Leg& leg = legs_[index_];
+    if (!driving_) {
+      const double err = leg.heading - now.heading;
+      if (std::abs(err) > s_.angle_tolerance) return turn(err);
+      driving_ = true;
+    }
+    if (!leg.drive) {
+      ++index_;
+      driving_ = false;
+      continue;
+    }
+    const double sign = leg.forward ? 1.0 : -1.0;
+    const double ux = sign * std::cos(leg.heading), uy = sign * std::sin(leg.heading);
+    const double ex = leg.end.x - now.x, ey = leg.end.y - now.y;
+    const double along = ex * ux + ey * uy;  // m left along the leg
+    if (along <= s_.position_tolerance) {
+      ++index_;
+      driving_ = false;
+      continue;
+    }
+    // Face the end (or away from it when backing); a large error stops to turn again.
+    const double facing = std::atan2(ey, ex) + (leg.forward ? 0.0 : plan::kPi);
+    const double err = wrap(facing - now.heading);
+    if (std::abs(err) > s_.reorient_angle && along > 0.05) return turn(err);
+    const double v = sign * std::clamp(s_.drive_gain * along * 100.0, static_cast<double>(s_.min_cm_s),
+                                       static_cast<double>(s_.max_drive_cm_s));  // cm/s
+    const double w = s_.heading_gain * err * static_cast<double>(s_.wheel_base_mm) / 20.0;  // cm/s
+    const double hi = s_.max_drive_cm_s;
+    return {static_cast<std::int32_t>(std::lround(std::clamp(v - w, -hi, hi))),
+            static_cast<std::int32_t>(std::lround(std::clamp(v + w, -hi, hi)))};
+  }
+  return {0, 0};
+}
+
+}  // namespace robuter::planner

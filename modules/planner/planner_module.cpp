@@ -1,0 +1,371 @@
+// Planner process glue: ring → map, goal requests, the scan / plan / follow loop, reports.
+#include "modules/planner/planner_module.hpp"
+
+#include <algorithm>
+#include <time.h>
+
+#include <cmath>
+
+#include "kernel/kernel.hpp"
+#include "kernel/log.hpp"
+#include "modules/planner/map_window.hpp"
+#include "modules/planner/sonar_mapping.hpp"
+
+namespace robuter {
+
+namespace {
+constexpr double kTenthMm = 1e-4;                  // m per 0.1 mm
+constexpr double kCentideg = plan::kPi / 18000.0;  // rad per 0.01°
+constexpr std::uint64_t kScanTimeoutTicks = 600;   // a scan gives up waiting after this (6 s)
+constexpr std::uint64_t kSettleTicks = 20;         // ticks after the drive reports zero speeds
+
+// CPU time of the kernel thread, µs: what an activation costs, without the time other
+// processes of a shared machine took the CPU away (wall clock would count that too).
+std::int64_t cpu_us() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
+}
+
+const char* state_name(PlannerState s) {
+  switch (s) {
+    case PlannerState::idle: return "idle";
+    case PlannerState::scanning: return "scanning";
+    case PlannerState::planning: return "planning";
+    case PlannerState::moving: return "moving";
+    case PlannerState::reached: return "reached";
+    case PlannerState::unreachable: return "unreachable";
+    case PlannerState::blocked: return "blocked";
+    case PlannerState::outside: return "outside";
+    case PlannerState::stopped: return "stopped";
+    case PlannerState::cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+bool navigating(PlannerState s) {
+  return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving;
+}
+
+std::uint32_t to_mm(double m) { return m <= 0.0 ? 0u : static_cast<std::uint32_t>(std::lround(m * 1000.0)); }
+
+planner::FollowerSettings follower_settings(const planner::PlannerSettings& s) {
+  planner::FollowerSettings f;
+  f.max_drive_cm_s = s.drive_cm_s;
+  f.max_turn_cm_s = s.turn_cm_s;
+  f.wheel_base_mm = s.wheel_base_mm;
+  return f;
+}
+}  // namespace
+
+PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
+    : s_(planner::make_settings(cfg)),
+      planner_(s_.planner),
+      follower_(follower_settings(s_)),
+      ring_(planner::default_ring_geometry()),
+      posture_(bb.posture.reader()),
+      ranges_(bb.ranges.reader()),
+      selection_(bb.sonar_selection.reader()),
+      goal_in_(bb.planner_goal.reader()),
+      emergency_(bb.emergency.reader()),
+      link_motion_(bb.link_motion.reader()),
+      go_to_motion_(bb.go_to_motion.reader()),
+      servo_(bb.servo_request.reader()),
+      motion_out_(bb.planner_motion.writer()),
+      status_out_(bb.planner_status.writer()),
+      map_out_(bb.planner_map.writer()) {}
+
+// Everything sized here: the map, the C-space layers, the searches' arrays.
+bool PlannerModule::init(Kernel& k) {
+  planner_.set_map(plan::OccupancyMap(s_.map, s_.hit_threshold));
+  goal_in_.copy();  // goals from before the start are not served
+  seen_link_ = link_motion_.peek().seq;
+  seen_go_to_ = go_to_motion_.peek().seq;
+  seen_servo_ = servo_.peek().seq;
+  for (int i = 0; i < planner::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
+  log::info("planner: map {} x {} cells of {} mm, {} footprint", s_.map.width, s_.map.height,
+            std::lround(s_.map.resolution * 1000.0),
+            s_.planner.footprint == plan::FootprintKind::Disc ? "disc" : "rectangle");
+  const plan::Pose2 p = pose_now();
+  publish_status(k.tick());
+  publish_window(k.tick(), p);
+  return true;
+}
+
+void PlannerModule::close(Kernel& k) {
+  if (navigating(state_)) request(k.tick(), 0, 0);
+}
+
+plan::Pose2 PlannerModule::pose_now() {
+  const Posture& p = posture_.peek();
+  const double theta = p.theta * kCentideg;
+  if (!have_heading_) {
+    heading_ = theta;
+    have_heading_ = true;
+  } else {
+    heading_ += std::remainder(theta - last_theta_, 2.0 * plan::kPi);
+  }
+  last_theta_ = theta;
+  return {p.x * kTenthMm, p.y * kTenthMm, heading_};
+}
+
+// At most one new reading per sensor per activation (a sensor is read every node cycle), so the
+// work is bounded by 24 beams of beam_range and the body's cells.
+void PlannerModule::integrate_ranges(const plan::Pose2& pose) {
+  const UltrasonicRanges& r = ranges_.peek();
+  plan::OccupancyMap& map = planner_.map();
+  for (int i = 0; i < planner::kRingSensors; ++i) {
+    if (r.read_tick[i] == read_tick_[i]) continue;
+    read_tick_[i] = r.read_tick[i];
+    ++fresh_[i];
+    if (r.mm[i] == 0) continue;  // inactive or lost
+    const bool no_echo = (r.no_echo >> i) & 1u;
+    planner::integrate_reading(map, pose, ring_[i], r.mm[i] / 1000.0, no_echo, s_.beam_range, s_.beam_half_angle);
+  }
+  planner::mark_body_free(map, pose, s_.body_length, s_.body_width, s_.body_center_ahead);
+}
+
+void PlannerModule::request(std::uint64_t tick, std::int32_t left, std::int32_t right) {
+  const bool changed = left != last_left_ || right != last_right_;
+  motion_out_.modify([&](MotionRequest& m) {
+    m.left = left;
+    m.right = right;
+    ++m.seq;
+    m.tick = tick;
+  });
+  last_left_ = left;
+  last_right_ = right;
+  if (changed && kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
+}
+
+void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
+  const bool was = navigating(state_);
+  follower_.cancel();
+  if (stop && was) request(tick, 0, 0);
+  if (state != state_) log::info("planner: {} (plans {}, scans {})", state_name(state), plans_, scans_);
+  state_ = state;
+}
+
+void PlannerModule::serve_goal(std::uint64_t tick) {
+  if (!goal_in_.updated()) return;
+  const PlannerGoal g = goal_in_.copy();
+  if (!g.active) {
+    if (navigating(state_) || state_ != PlannerState::idle) finish(tick, PlannerState::cancelled, true);
+    return;
+  }
+  goal_ = g;
+  plans_ = scans_ = 0;
+  path_m_ = prefix_m_ = 0.0;
+  prefix_len_ = leg_count_ = 0;
+  final_turn_ = false;
+  trips_ = emergency_.peek().trips;
+  seen_link_ = link_motion_.peek().seq;
+  seen_go_to_ = go_to_motion_.peek().seq;
+  seen_servo_ = servo_.peek().seq;
+  log::info("planner: goal {} {}{}", g.x, g.y, g.has_theta ? " with heading" : "");
+  begin_scan(tick);
+}
+
+// Like the go-to: a newer link or go-to request, any servo request, or an emergency ends it.
+bool PlannerModule::interrupted(std::uint64_t tick) {
+  bool other = false;
+  if (link_motion_.peek().seq != seen_link_) other = true;
+  if (go_to_motion_.peek().seq != seen_go_to_) other = true;
+  if (servo_.peek().seq != seen_servo_) other = true;
+  seen_link_ = link_motion_.peek().seq;
+  seen_go_to_ = go_to_motion_.peek().seq;
+  seen_servo_ = servo_.peek().seq;
+  const EmergencyState& e = emergency_.peek();
+  const bool emergency = e.latched || e.cause != EmergencyCause::none || e.trips != trips_;
+  if (!navigating(state_) || (!other && !emergency)) return false;
+  log::info("planner: navigation ended by {}", emergency ? "an emergency" : "another motion request");
+  finish(tick, PlannerState::stopped, false);
+  return true;
+}
+
+void PlannerModule::begin_scan(std::uint64_t tick) {
+  follower_.cancel();
+  request(tick, 0, 0);
+  state_ = PlannerState::scanning;
+  settled_ = false;
+  scan_tick_ = tick;
+  ++scans_;
+}
+
+// The first readings after the stop may come from the last centimetres of motion: harmless.
+bool PlannerModule::scan_done(std::uint64_t tick) {
+  const Posture& p = posture_.peek();
+  if (!settled_) {
+    if (p.left == 0 && p.right == 0 && tick >= scan_tick_ + kSettleTicks) {
+      settled_ = true;
+      scan_tick_ = tick;
+      fresh_.fill(0);
+    } else if (tick < scan_tick_ + kScanTimeoutTicks) {
+      return false;
+    }
+  }
+  const std::uint32_t active = selection_.peek().active;
+  bool all = active != 0;
+  for (int i = 0; i < planner::kRingSensors; ++i)
+    if ((active >> i) & 1u) all = all && fresh_[i] >= s_.scan_passes;
+  if (all) return true;
+  if (tick >= scan_tick_ + kScanTimeoutTicks) {
+    log::warn("planner: the ring gave no full scan in {} ticks; planning with what is known", kScanTimeoutTicks);
+    return true;
+  }
+  return false;
+}
+
+bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
+  if (!goal_.has_theta || final_turn_) return false;
+  final_turn_ = true;
+  const double target = pose.heading + std::remainder(goal_.theta * kCentideg - pose.heading, 2.0 * plan::kPi);
+  if (s_.planner.footprint == plan::FootprintKind::Rectangle) {
+    // The turn sweeps the slices between the two headings: each must leave room to turn.
+    const int k = planner_.slices();
+    const plan::Cell c = planner_.map().cell_of({pose.x, pose.y});
+    if (!planner_.map().contains(c)) return false;
+    const double step = plan::kPi / k;
+    const double lo = std::min(pose.heading, target), hi = std::max(pose.heading, target);
+    for (double h = lo; h < hi + step; h += step) {
+      const int slice = plan::slice_of_heading(std::min(h, hi), k);
+      if (planner_.turnable(slice).at(c) == plan::kBlocked) {
+        log::info("planner: no room to turn to the goal's heading");
+        return false;
+      }
+    }
+  }
+  legs_[0] = planner::Leg{{pose.x, pose.y}, target, true, false, 0};
+  leg_count_ = 1;
+  follower_.start({legs_.data(), 1});
+  return true;
+}
+
+void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
+  const plan::Point2 goal{goal_.x * kTenthMm, goal_.y * kTenthMm};
+  if (std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
+    if (add_final_turn(pose)) {
+      state_ = PlannerState::moving;
+      final_prefix_ = true;
+      return;
+    }
+    return finish(tick, PlannerState::reached, true);
+  }
+  const std::int64_t t0 = cpu_us();
+  auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
+  if (prepared_seq_ != goal_.seq) {
+    // A new goal: its cost field (a Dijkstra over the whole map) in this activation, the
+    // search in the next, so no activation carries both (docs/PLANNER.md, "The module").
+    planner_.prepare(goal);
+    prepared_seq_ = goal_.seq;
+    return;
+  }
+  const plan::PlanResult r = planner_.plan(pose, goal);
+  plan_us_ = elapsed_us();
+  ++plans_;
+  switch (r.status) {
+    case plan::PlanStatus::Found: break;
+    case plan::PlanStatus::StartBlocked: return finish(tick, PlannerState::blocked, true);
+    case plan::PlanStatus::StartOutside: return finish(tick, PlannerState::outside, true);
+    default:
+      path_m_ = prefix_m_ = 0.0;
+      prefix_len_ = leg_count_ = 0;
+      return finish(tick, PlannerState::unreachable, true);
+  }
+  const auto& path = planner_.waypoints();
+  path_m_ = planner::chain_length(path);
+  std::size_t n = planner::visible_prefix(planner_.map(), path, {pose.x, pose.y}, s_.follow_range);
+  n = std::min(n, prefix_.size());
+  std::copy_n(path.begin(), n, prefix_.begin());
+  std::size_t used = 0;
+  const int slices = s_.planner.footprint == plan::FootprintKind::Rectangle ? planner_.slices() : 0;
+  leg_count_ = planner::build_legs({prefix_.data(), n}, pose.heading, slices, legs_, used);
+  prefix_len_ = used;
+  final_prefix_ = used == path.size();
+  prefix_m_ = planner::chain_length({prefix_.data(), prefix_len_});
+  log::info("planner: plan {}: path {:.2f} m, following {:.2f} m in {} legs, {} us, {} states", plans_, path_m_,
+            prefix_m_, leg_count_, plan_us_, r.expanded);
+  if (leg_count_ == 0) {  // the path is the robot's own cell: as close as the grid allows
+    if (add_final_turn(pose)) {
+      state_ = PlannerState::moving;
+      return;
+    }
+    return finish(tick, PlannerState::reached, true);
+  }
+  follower_.start({legs_.data(), leg_count_});
+  state_ = PlannerState::moving;
+}
+
+void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
+  // New obstacles on what is left to drive (or where a turn is to happen): stop, scan, replan.
+  // A turn in place under way is finished first, so that the robot stops at a heading the
+  // search can start from (a slice that carries moves), not half-way between two.
+  if (const planner::Leg* leg = follower_.current(); leg != nullptr && leg->drive) {
+    planner_.sync();
+    if (!follower_.turning() && planner::prefix_blocked(planner_, {prefix_.data(), prefix_len_}, leg->first)) {
+      log::info("planner: obstacle on the path, stopping to scan");
+      return begin_scan(tick);
+    }
+  }
+  const planner::Wheels w = follower_.step(pose);
+  if (follower_.active()) return request(tick, w.left, w.right);
+  const plan::Point2 goal{goal_.x * kTenthMm, goal_.y * kTenthMm};
+  if (final_prefix_ && std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
+    if (add_final_turn(pose)) return request(tick, 0, 0);
+    return finish(tick, PlannerState::reached, true);
+  }
+  begin_scan(tick);
+}
+
+void PlannerModule::run(Kernel& k) {
+  const std::int64_t t0 = cpu_us();
+  kernel_ = &k;
+  const std::uint64_t tick = k.tick();
+  const plan::Pose2 pose = pose_now();
+  integrate_ranges(pose);
+  if (!interrupted(tick)) {
+    serve_goal(tick);
+    if (state_ == PlannerState::scanning) {
+      planner_.sync();  // fold the new readings into the layers now: the plan only searches
+      if (scan_done(tick)) state_ = PlannerState::planning;
+    }
+    if (state_ == PlannerState::planning) plan_step(tick, pose);
+    else if (state_ == PlannerState::moving) move_step(tick, pose);
+  } else {
+    serve_goal(tick);  // a new goal in the same tick as the interruption still starts
+  }
+  run_us_max_ = std::max(run_us_max_, static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)));
+  publish_status(tick);
+  publish_window(tick, pose);
+}
+
+void PlannerModule::publish_status(std::uint64_t tick) {
+  PlannerStatus s;
+  s.state = state_;
+  s.goal_x = goal_.x;
+  s.goal_y = goal_.y;
+  s.path_mm = to_mm(path_m_);
+  s.prefix_mm = to_mm(prefix_m_);
+  s.plans = plans_;
+  s.scans = scans_;
+  s.plan_us = plan_us_;
+  s.run_us_max = run_us_max_;
+  s.goal_seq = goal_.seq;
+  s.tick = tick;
+  status_out_.publish(s);
+}
+
+void PlannerModule::publish_window(std::uint64_t tick, const plan::Pose2& pose) {
+  const plan::OccupancyMap& map = planner_.map();
+  const plan::Cell c = map.cell_of({pose.x, pose.y});
+  const plan::Point2 centre = map.center(c);
+  map_out_.modify([&](PlannerMapWindow& w) {
+    planner::render_window(map, c, PlannerMapWindow::kSide, w.cells);
+    w.center_x = static_cast<std::int32_t>(std::lround(centre.x / kTenthMm));
+    w.center_y = static_cast<std::int32_t>(std::lround(centre.y / kTenthMm));
+    w.cell_mm = static_cast<std::int32_t>(std::lround(map.resolution() * 1000.0));
+    w.tick = tick;
+  });
+}
+
+}  // namespace robuter

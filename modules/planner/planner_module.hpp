@@ -1,0 +1,113 @@
+// The grid planner as a kernel process: map from the ring, plan, follow the visible prefix, scan, replan.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "kernel/config.hpp"
+#include "kernel/process.hpp"
+#include "modules/planner/lib/planner.hpp"
+#include "modules/planner/path_follower.hpp"
+#include "modules/planner/planner_settings.hpp"
+#include "modules/planner/ring_geometry.hpp"
+#include "modules/planner/route.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+// Seed 000's loop on the Robuter: with a goal (XG), stop and scan with the ring, mark the map
+// (seed 003's hit counts), plan (rectangle with heading slices by default, seed 004), follow the
+// part of the path within sonar range and in sight, stop, scan, replan, until the goal is
+// reached or shown unreachable. It moves the robot only through its own motion requests, which
+// the emergency module arbitrates like any other source.
+class PlannerModule final : public Process {
+ public:
+  static constexpr std::size_t kMaxPrefix = 512;  // waypoints of the followed prefix kept
+
+  PlannerModule(Blackboard& bb, const Config& cfg);
+  // The emergency module, triggered when the requested speeds change so a stop acts this tick.
+  void set_emergency(Process* p) { emergency_process_ = p; }
+
+  // Sizes the planner for the configured map (the only allocation) and publishes "idle".
+  bool init(Kernel& k) override;
+  void run(Kernel& k) override;
+  // Asks the gate for zero speeds when navigating.
+  void close(Kernel& k) override;
+
+  // For tests and pictures, outside the periodic path.
+  const plan::Planner& planner() const { return planner_; }
+  std::span<const plan::Waypoint> prefix() const { return {prefix_.data(), prefix_len_}; }
+  const planner::PlannerSettings& settings() const { return s_; }
+  PlannerState state() const { return state_; }
+
+ private:
+  // Marks every new ring reading along its beam, and the body's cells free.
+  void integrate_ranges(const plan::Pose2& pose);
+  // A new XG (start) or XH (cancel).
+  void serve_goal(std::uint64_t tick);
+  // True (and the navigation ended) when an emergency or another motion source interrupted it.
+  bool interrupted(std::uint64_t tick);
+  // Enters the scanning state: stop and wait for fresh readings.
+  void begin_scan(std::uint64_t tick);
+  // Scanning: done once every firing sensor was read scan_passes times after the robot stopped.
+  bool scan_done(std::uint64_t tick);
+  // Plans from here, takes the visible prefix, starts following it (or ends the navigation).
+  void plan_step(std::uint64_t tick, const plan::Pose2& pose);
+  // One control step; a new obstacle on the prefix or its end leads to a scan.
+  void move_step(std::uint64_t tick, const plan::Pose2& pose);
+  // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.
+  bool add_final_turn(const plan::Pose2& pose);
+  // Ends the navigation in `state`; `stop` asks the gate for zero speeds.
+  void finish(std::uint64_t tick, PlannerState state, bool stop);
+  // Publishes a wheel-speed request through the emergency gate.
+  void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+  void publish_status(std::uint64_t tick);
+  void publish_window(std::uint64_t tick, const plan::Pose2& pose);
+  // The odometry posture in m and rad, the heading unwrapped (continuous across ±π).
+  plan::Pose2 pose_now();
+
+  planner::PlannerSettings s_;
+  plan::Planner planner_;
+  planner::PathFollower follower_;
+  const planner::RingGeometry& ring_;
+  Reader<Posture> posture_;
+  Reader<UltrasonicRanges> ranges_;
+  Reader<SonarSelection> selection_;
+  Reader<PlannerGoal> goal_in_;
+  Reader<EmergencyState> emergency_;
+  Reader<MotionRequest> link_motion_;    // AM: a newer one ends the navigation
+  Reader<MotionRequest> go_to_motion_;   // AW: likewise
+  Reader<ServoRequest> servo_;           // AS: likewise
+  Writer<MotionRequest> motion_out_;
+  Writer<PlannerStatus> status_out_;
+  Writer<PlannerMapWindow> map_out_;
+  Process* emergency_process_ = nullptr;
+  Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
+
+  PlannerState state_ = PlannerState::idle;
+  PlannerGoal goal_{};                     // goal being served
+  std::array<std::uint64_t, planner::kRingSensors> read_tick_{};  // last reading marked, per sensor
+  std::array<std::uint32_t, planner::kRingSensors> fresh_{};      // readings since the scan's stop
+  std::array<plan::Waypoint, kMaxPrefix> prefix_{};               // the followed prefix
+  std::size_t prefix_len_ = 0;
+  std::array<planner::Leg, planner::PathFollower::kMaxLegs> legs_{};  // legs of the prefix
+  std::size_t leg_count_ = 0;
+  bool final_prefix_ = false;              // the prefix ends at the goal
+  bool final_turn_ = false;                // the goal's heading turn was added
+  bool settled_ = false;                   // scanning: the drive has stopped
+  std::uint64_t scan_tick_ = 0;            // scanning: tick the stop was asked (then: settled)
+  double heading_ = 0.0;                   // rad, unwrapped odometry heading
+  double last_theta_ = 0.0;                // rad, wrapped heading of the previous activation
+  bool have_heading_ = false;
+  std::uint32_t plans_ = 0, scans_ = 0;    // for this goal
+  std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search
+  std::uint32_t run_us_max_ = 0;           // µs, thread CPU time: the longest activation
+  std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
+  double path_m_ = 0.0, prefix_m_ = 0.0;   // m
+  std::uint32_t seen_link_ = 0, seen_go_to_ = 0, seen_servo_ = 0;  // seqs last seen
+  std::uint32_t trips_ = 0;                // EmergencyState.trips when the goal started
+  std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
+};
+
+}  // namespace robuter

@@ -1,0 +1,33 @@
+// The planner module's settings in the units it works in (m, rad), made from the configuration.
+#pragma once
+
+#include <cstdint>
+
+#include "kernel/config.hpp"
+#include "modules/planner/lib/occupancy_map.hpp"
+#include "modules/planner/lib/planner.hpp"
+
+namespace robuter::planner {
+
+// Everything the module needs, converted once at construction.
+struct PlannerSettings {
+  plan::MapGeometry map;               // cells, m per cell, origin (m, odometry frame)
+  std::uint8_t hit_threshold = 2;      // net hits for an obstacle cell
+  plan::PlannerConfig planner;         // footprint, slices, clearances (m)
+  double body_length = 1.025;          // m, body rectangle along the heading
+  double body_width = 0.700;           // m
+  double body_center_ahead = 0.183;    // m, body centre ahead of the wheel axle
+  std::uint32_t scan_passes = 2;       // full ring passes per stop
+  double beam_range = 2.5;             // m, readings marked up to here
+  double beam_half_angle = 0.218;      // rad, the ring sonar's cone half-angle (0: axis only)
+  double follow_range = 1.5;           // m, prefix of the path followed before a new scan
+  double goal_tolerance = 0.10;        // m
+  std::int32_t drive_cm_s = 20;        // cm/s, fastest wheel driving
+  std::int32_t turn_cm_s = 10;         // cm/s, fastest wheel turning in place
+  std::uint32_t wheel_base_mm = 600;   // mm, DBW
+};
+
+// Why: one place turns the configuration's mm and counts into the planner's m and cells.
+PlannerSettings make_settings(const Config& cfg);
+
+}  // namespace robuter::planner

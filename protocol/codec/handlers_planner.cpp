@@ -1,0 +1,84 @@
+// Handlers of the grid planner's X extensions: goal, halt, status and the map window.
+#include "protocol/codec/handlers.hpp"
+
+namespace robuter::protocol {
+
+// Stable words so clients can match on them.
+std::string_view planner_state_name(PlannerState state) noexcept {
+  switch (state) {
+    case PlannerState::idle: return "idle";
+    case PlannerState::scanning: return "scanning";
+    case PlannerState::planning: return "planning";
+    case PlannerState::moving: return "moving";
+    case PlannerState::reached: return "reached";
+    case PlannerState::unreachable: return "unreachable";
+    case PlannerState::blocked: return "blocked";
+    case PlannerState::outside: return "outside";
+    case PlannerState::stopped: return "stopped";
+    case PlannerState::cancelled: return "cancelled";
+  }
+  return "idle";
+}
+
+// XG <x> <y> [<theta>]: the port refuses a goal off the map (out_of_range) or while latched.
+void handle_set_goal(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
+  const bool with_theta = cmd.int_count == 3;
+  reply_result(port.set_goal(Posture{cmd.ints[0], cmd.ints[1], with_theta ? cmd.ints[2] : 0}, with_theta), out);
+}
+
+// XH: stop navigating (ack even when idle).
+void handle_cancel_goal(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
+  reply_result(port.cancel_goal(), out);
+}
+
+// XP → `P <state> <goal-x> <goal-y> <path-mm> <prefix-mm> <replans> <scans> <plan-us>
+// <max-us> <clock>`.
+void handle_get_planner_status(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
+  PlannerReport r;
+  const PortResult res = port.planner_status(r);
+  if (res != PortResult::ok) {
+    out.error(error_for(res));
+    return;
+  }
+  out.open("P");
+  out.raw(" ");
+  out.raw(planner_state_name(r.state));
+  out.field(r.goal_x);
+  out.field(r.goal_y);
+  out.field(r.path_mm);
+  out.field(r.prefix_mm);
+  out.field(r.replans);
+  out.field(r.scans);
+  out.field(r.plan_us);
+  out.field(r.max_us);
+  out.field(port.clock());
+}
+
+// XM → `M <w> <h> <cell-mm> <x> <y> <row1>|<row2>|…|<rowh>`: rows top first, one character a
+// cell, exactly one space before the first row (rows may begin and end with spaces: free cells).
+void handle_get_planner_map(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
+  MapWindow w;
+  const PortResult res = port.planner_map(w);
+  if (res != PortResult::ok) {
+    out.error(error_for(res));
+    return;
+  }
+  const auto side = static_cast<std::size_t>(w.side > 0 ? w.side : 0);
+  if (side == 0 || w.cells.size() != side * side) {
+    out.error(ErrorCode::unavailable);
+    return;
+  }
+  out.open("M");
+  out.field(w.side);
+  out.field(w.side);
+  out.field(w.cell_mm);
+  out.field(w.center_x);
+  out.field(w.center_y);
+  out.raw(" ");
+  for (std::size_t row = 0; row < side; ++row) {
+    if (row > 0) out.raw("|");
+    out.raw(w.cells.substr(row * side, side));
+  }
+}
+
+}  // namespace robuter::protocol

@@ -1,0 +1,41 @@
+// Test support: run a navigation of the whole firmware and record what happened on the way.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string>
+
+#include "modules/planner/planner_module.hpp"
+#include "tests/support/sim_firmware.hpp"
+
+namespace robuter::test {
+
+// What a navigation run did.
+struct NavRecord {
+  PlannerState state = PlannerState::idle;  // final state
+  std::uint32_t plans = 0;      // plans made (first + replans)
+  std::uint32_t scans = 0;      // stops to scan
+  std::uint32_t run_us_max = 0; // longest planner activation, µs (wall clock)
+  double seconds = 0.0;         // simulated time of the navigation, s
+  double travelled = 0.0;       // axle path length, m
+  double min_clearance = 1e9;   // smallest body-to-obstacle distance seen, m (true pose)
+  bool bumper = false;          // the bumper was pressed at some tick
+  std::uint32_t trips = 0;      // emergencies during the run
+  double final_error = 0.0;     // axle to goal at the end, m (world frame)
+  int pictures = 0;             // pictures written (ROBUTER_PLANNER_PICTURES)
+  std::string plan_times;       // every plan's time, µs, space-separated
+};
+
+// The planner module of a running firmware (null if its row is absent).
+PlannerModule* planner_of(SimFirmware& fw);
+
+// Why: smallest distance from the robot's true body to any obstacle edge of the world, m.
+double body_clearance(SimFirmware& fw);
+
+// Why: steps the firmware until the planner leaves its navigating states or `max_ticks` pass,
+// checking the bumper every tick and the clearance every 10 ticks. When the environment variable
+// ROBUTER_PLANNER_PICTURES names a folder, writes `<name>-NN.png` there after every plan
+// (outside the firmware: a test may block). Goal in world metres for final_error.
+NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double goal_y, const std::string& name);
+
+}  // namespace robuter::test

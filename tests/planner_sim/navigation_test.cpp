@@ -1,0 +1,46 @@
+// Seed 000's experiment on the whole firmware: no prior map, the 18 x 10 m lab, a goal 13 m away.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "tests/planner_sim/nav_harness.hpp"
+
+namespace robuter {
+namespace {
+
+// The map covers the lab with half a metre to spare; odometry is set to the world's frame.
+Config lab_config() {
+  Config cfg;
+  cfg.planner.map_origin_x_mm = -500;
+  cfg.planner.map_origin_y_mm = -500;
+  cfg.planner.map_width_mm = 19'000;
+  cfg.planner.map_height_mm = 11'000;
+  return cfg;
+}
+
+// (a) From (2.5, 2.0) to (15.0, 5.5) with nothing known: the robot scans, plans, follows what it
+// can see, and replans until it arrives, never touching anything and never tripping the gate.
+TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config());
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000");
+  std::printf("seed000 lab: state %d, %u plans (%u replans), %u scans, %.1f s simulated, %.2f m driven, "
+              "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures\n",
+              static_cast<int>(r.state), r.plans, r.plans ? r.plans - 1 : 0, r.scans, r.seconds, r.travelled,
+              r.min_clearance, r.final_error, r.run_us_max, r.pictures);
+  std::printf("plan times (us): %s\n", r.plan_times.c_str());
+  EXPECT_EQ(r.state, PlannerState::reached);
+  EXPECT_FALSE(r.bumper);
+  EXPECT_EQ(r.trips, 0u);
+  EXPECT_GT(r.min_clearance, 0.0);
+  EXPECT_LT(r.final_error, 0.15);
+  const auto xp = fw.ask("XP");
+  ASSERT_TRUE(xp);
+  EXPECT_EQ(xp->rfind("P reached 150000 55000 ", 0), 0u) << *xp;
+}
+
+}  // namespace
+}  // namespace robuter

@@ -1,0 +1,46 @@
+// Proves a whole navigation — scans, marks, plans, replans, following, XP/XM queries — allocates
+// nothing in the kernel's thread once the firmware has started.
+#include <gtest/gtest.h>
+
+#include "modules/planner/planner_module.hpp"
+#include "tests/support/alloc_counter.hpp"
+#include "tests/support/sim_firmware.hpp"
+
+namespace robuter {
+namespace {
+
+TEST(PlannerSimNoAlloc, ANavigationInTheSeed000LabAllocatesNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  Config cfg;
+  cfg.planner.map_origin_x_mm = -500;
+  cfg.planner.map_origin_y_mm = -500;
+  cfg.planner.map_width_mm = 19'000;
+  cfg.planner.map_height_mm = 11'000;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  for (const char* l : {"XP", "XM", "XH", "XG 1 2 3 4"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the paths
+  fw.run_ticks(20);
+  fw.count_lines();
+  const auto& status = fw.bb().planner_status.reader().peek();
+  test::AllocCounter counter;
+  fw.send_raw("XG 150000 55000\r");
+  int replies = 0;
+  int ticks = 0;
+  for (; ticks < 20'000 && status.state != PlannerState::reached; ++ticks) {
+    if (ticks % 500 == 250) fw.send_raw(ticks % 1000 == 250 ? "XP\r" : "XM\r");
+    fw.step();
+    replies += fw.count_lines().first;
+  }
+  const auto allocations = counter.count();
+  EXPECT_EQ(allocations, 0u);
+  EXPECT_EQ(status.state, PlannerState::reached);
+  EXPECT_GE(status.plans, 5u);
+  EXPECT_GE(replies, 10);
+#endif
+}
+
+}  // namespace
+}  // namespace robuter

@@ -1,0 +1,71 @@
+// The library's turn clearance (turning in place needs more room than driving) and prepare().
+#include <gtest/gtest.h>
+
+#include "modules/planner/lib/planner.hpp"
+
+namespace robuter::plan {
+namespace {
+
+// A 6 x 6 m room split at y = 3 m by a wall with a 90 cm door (x from 2.5 to 3.4 m): each half
+// is 2.9 m across, room enough to turn with a 25 cm clearance (a 2.24 m circle).
+OccupancyMap door_map() {
+  OccupancyMap map(MapGeometry{120, 120, 0.05, {0.0, 0.0}});
+  for (int x = 0; x < 120; ++x) {
+    map.mark_occupied({x, 0});
+    map.mark_occupied({x, 119});
+    const double cx = map.center({x, 60}).x;
+    if (cx < 2.5 || cx > 3.4) map.mark_occupied({x, 60});
+  }
+  for (int y = 0; y < 120; ++y) {
+    map.mark_occupied({0, y});
+    map.mark_occupied({119, y});
+  }
+  return map;
+}
+
+PlannerConfig robuter(double turn_clearance) {
+  PlannerConfig c;
+  c.footprint = FootprintKind::Rectangle;
+  c.rectangle.center_offset = 0.1825;
+  c.turn_clearance = turn_clearance;
+  return c;
+}
+
+TEST(TurnClearance, TurnsOnlyWhereTheGrownBodyFitsAndTheDoorStillPasses) {
+  Planner p(robuter(0.25));
+  p.set_map(door_map());
+  const PlanResult r = p.plan({1.5, 1.5, 0.0}, {4.5, 4.5});
+  ASSERT_TRUE(r.found()) << to_string(r.status);
+  const auto& w = p.waypoints();
+  int turns = 0;
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    if (w[i].cell.x != w[i - 1].cell.x || w[i].cell.y != w[i - 1].cell.y) continue;
+    ++turns;
+    const Cell c{w[i].cell.x, w[i].cell.y};
+    EXPECT_NE(p.turnable(w[i].cell.slice).at(c), kBlocked);
+    EXPECT_NE(p.turnable(w[i - 1].cell.slice).at(c), kBlocked);
+    EXPECT_GT(std::abs(w[i].pose.y - 3.025), 0.6) << "turned in the doorway";
+  }
+  EXPECT_GT(turns, 0);
+  // Without the clearance the search may turn anywhere the body fits: never a longer path.
+  Planner q(robuter(0.0));
+  q.set_map(door_map());
+  const PlanResult s = q.plan({1.5, 1.5, 0.0}, {4.5, 4.5});
+  ASSERT_TRUE(s.found());
+  EXPECT_LE(s.cost, r.cost + 1e-9);
+}
+
+TEST(TurnClearance, PrepareThenPlanEqualsPlan) {
+  Planner a(robuter(0.25)), b(robuter(0.25));
+  a.set_map(door_map());
+  b.set_map(door_map());
+  a.prepare({4.5, 4.5});
+  const PlanResult ra = a.plan({1.5, 1.5, 0.3}, {4.5, 4.5});
+  const PlanResult rb = b.plan({1.5, 1.5, 0.3}, {4.5, 4.5});
+  ASSERT_TRUE(ra.found());
+  EXPECT_DOUBLE_EQ(ra.cost, rb.cost);
+  EXPECT_EQ(a.waypoints().size(), b.waypoints().size());
+}
+
+}  // namespace
+}  // namespace robuter::plan
