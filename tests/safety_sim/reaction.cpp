@@ -79,6 +79,8 @@ ReactionResult run_trial(const ReactionTrial& t) {
   }
   auto& robot = fw.sim().robot();
   const auto geom = robot.params().geometry;
+  sim::GridScratch scratch;
+  scratch.prepare(fw.sim().world().segments().size());
   Wheels last{};           // the drive's speeds at the end of the previous tick
   bool armed = false;      // the obstacle is there to be found (approach: always; teleport: once placed)
   // The probe: the first watch-dog reading under the safety distance of the speeds the drive
@@ -90,7 +92,8 @@ ReactionResult run_trial(const ReactionTrial& t) {
     if (armed && !last.zero() && out.read_tick == 0) {
       const std::uint32_t safety_mm = safety::safety_distance_mm(last.left, last.right, 220, 10);
       const auto& r = fw.bb().ranges.reader().peek();
-      if (out.appear_tick == 0 && body_clearance(fw.sim().world(), geom, robot.pose()) * 1000.0 <= safety_mm)
+      if (out.appear_tick == 0 &&
+          body_clearance_near(fw.sim().world(), geom, robot.pose(), 1.5, scratch) * 1000.0 <= safety_mm)
         out.appear_tick = tick;
       for (int s : safety::watch_sensors(safety::main_sensor(last.left, last.right, 600))) {
         const auto i = static_cast<std::size_t>(s - 1);

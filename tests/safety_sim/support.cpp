@@ -96,6 +96,32 @@ double body_clearance(const sim::World& world, const sim::RobotGeometry& g, cons
   return best;
 }
 
+double body_clearance_near(const sim::World& world, const sim::RobotGeometry& g, const sim::Pose& pose, double reach,
+                           sim::GridScratch& scratch, sim::Vec2* where) {
+  sim::Vec2 corners[4];
+  sim::footprint_corners(g, pose, corners);
+  sim::Vec2 lo = corners[0], hi = corners[0];
+  for (const auto& c : corners) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  const sim::Vec2 pad = sim::Vec2::Constant(reach);
+  const sim::Box body = g.body();
+  double best = reach;
+  sim::Vec2 at = sim::Vec2::Zero();
+  const auto& segs = world.segments();
+  world.grid().for_each_near(lo - pad, hi + pad, scratch, [&](std::uint32_t i) {
+    sim::Vec2 q = sim::Vec2::Zero();
+    const double d = segment_box_distance(sim::to_local(pose, segs[i].a), sim::to_local(pose, segs[i].b), body, q);
+    if (d < best) {
+      best = d;
+      at = q;
+    }
+  });
+  if (where) *where = at;
+  return best;
+}
+
 std::optional<BoReply> parse_bo(const std::optional<std::string>& reply) {
   if (!reply) return std::nullopt;
   BoReply r;
@@ -122,6 +148,7 @@ Wheels commanded(SimFirmware& fw) {
 void SafetyMonitor::attach(SimFirmware& fw) {
   fw_ = &fw;
   geom_ = fw.sim().robot().params().geometry;
+  scratch_.prepare(fw.sim().world().segments().size());
   fw.set_tick_observer([this] { check(); });
 }
 
@@ -129,6 +156,9 @@ void SafetyMonitor::violation(std::uint64_t& counter, const std::string& what) {
   ++counter;
   if (first_violation.empty()) first_violation = what;
 }
+
+// Clearances beyond this are not told apart (the monitor reports the closest approach), m.
+constexpr double kClearanceReach = 0.5;
 
 // The tick just run is kernel().tick() − 1; everything is read after it ended.
 void SafetyMonitor::check() {
@@ -158,7 +188,7 @@ void SafetyMonitor::check() {
   if (us_on) {
     ++us_on_ticks;
     sim::Vec2 at;
-    const double clear = body_clearance(fw.sim().world(), geom_, robot.pose(), &at);
+    const double clear = body_clearance_near(fw.sim().world(), geom_, robot.pose(), kClearanceReach, scratch_, &at);
     min_clearance_us_on = std::min(min_clearance_us_on, clear);
     if (robot.bumper() && contact_us_on == 0) {
       contact_motion = last_moving_;

@@ -45,6 +45,12 @@ sim::RobotGeometry geometry(const Config& cfg = Config{});
 double body_clearance(const sim::World& world, const sim::RobotGeometry& g, const sim::Pose& pose,
                       sim::Vec2* where = nullptr);
 
+// The same limited to the edges within `reach` metres of the body's bounding box (a grid query,
+// for checks on every tick); `reach` when none is that near. `scratch` must be prepared for the
+// world's edges.
+double body_clearance_near(const sim::World& world, const sim::RobotGeometry& g, const sim::Pose& pose, double reach,
+                           sim::GridScratch& scratch, sim::Vec2* where = nullptr);
+
 // `BO` reply: S <x> <y> <theta> <servo> <clock>.
 struct BoReply {
   int x = 0, y = 0, theta = 0, servo = 0;  // 0.1 mm, 0.01°, 0/1
@@ -102,6 +108,7 @@ class SafetyMonitor {
 
   SimFirmware* fw_ = nullptr;
   sim::RobotGeometry geom_{};
+  sim::GridScratch scratch_;             // grid queries of the clearance
   Wheels last_moving_{};                 // the last non-zero speeds at the drive
   std::uint64_t disagreement_ = 0;       // current run of ticks with the drive not at the verdict
 };
