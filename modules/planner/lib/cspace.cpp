@@ -48,6 +48,7 @@ void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
       const int yy = y + r.dy;
       if (yy < 0 || yy >= h) continue;
       const std::uint32_t* row = prefix.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(w + 1);
+      if (row[w] == 0) continue;  // no obstacle in that row (a fresh, unknown map: every row)
       const int x_in = std::max(0, -r.lo);            // first x with x + lo >= 0
       const int x_out = std::min(w - 1, w - 1 - r.hi);  // last x with x + hi <= w - 1
       auto clamped = [&](int x) {
