@@ -1,5 +1,4 @@
-// Acceptance 7: auto-toggle — only the watch-dog sensors fire while moving, none when stopped; UT
-// OR-ed with the watch set when off; UT stored but not applied while on.
+// Acceptance 7: auto-toggle fires the watch set only (none stopped); UT OR-ed when off, kept when on.
 #include <gtest/gtest.h>
 
 #include <array>

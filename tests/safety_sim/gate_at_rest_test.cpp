@@ -1,5 +1,4 @@
-// The gate's "gone once the robot has stopped" rule on its own: no re-enable and no new motion
-// while a tripped robot still brakes (GateInputs::at_rest), found by the firmware-level tests.
+// The gate alone: no re-enable and no new motion while a tripped robot still brakes (at_rest).
 #include <gtest/gtest.h>
 
 #include "modules/emergency/motion_gate.hpp"

@@ -1,5 +1,4 @@
-// Reaction-time trials on the whole simulated firmware: from the read of a range under the safety
-// distance to zero speed at the drive. Shared by the acceptance test and tools/bench/safety.
+// Reaction-time trials on the whole simulated firmware, shared by the test and tools/bench/safety.
 #pragma once
 
 #include <cstdint>

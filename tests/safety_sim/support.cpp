@@ -14,6 +14,7 @@
 
 namespace robuter::test::safety_sim {
 
+// A private folder per world, so tests running in parallel never share a file.
 TempWorld::TempWorld(const std::string& toml) {
   char tmpl[] = "/tmp/robuter-safety-world-XXXXXX";
   const char* d = mkdtemp(tmpl);
@@ -22,17 +23,20 @@ TempWorld::TempWorld(const std::string& toml) {
   std::ofstream(path_) << toml;
 }
 
+// The folder goes with the world (the firmware read the file at start-up).
 TempWorld::~TempWorld() {
   std::error_code ec;
   if (dir_ != "/tmp") std::filesystem::remove_all(dir_, ec);
 }
 
+// Only the rows the safety core needs; the firmware skips the others (modules.enabled).
 Config core_config() {
   Config c;
   c.enabled_modules = std::vector<std::string>{"sim", "heartbeat", "serial", "us", "emergency", "executor"};
   return c;
 }
 
+// The same conversion as SimRobot, so clearances are measured on the body the simulator moves.
 sim::RobotGeometry geometry(const Config& cfg) {
   sim::RobotGeometry g;
   g.length = cfg.robot.length_mm / 1000.0;
@@ -41,6 +45,7 @@ sim::RobotGeometry geometry(const Config& cfg) {
   return g;
 }
 
+// The loader the firmware uses, so a world accepted here is accepted there.
 std::optional<std::string> check_world(const std::string& toml, const Config& cfg) {
   auto w = sim::parse_world_toml(toml, "generated.toml", geometry(cfg));
   if (!w) return w.error().describe();
@@ -80,6 +85,7 @@ double segment_box_distance(const sim::Vec2& a, const sim::Vec2& b, const sim::B
 }
 }  // namespace
 
+// Every edge, in the robot frame where the body is an axis-aligned box.
 double body_clearance(const sim::World& world, const sim::RobotGeometry& g, const sim::Pose& pose, sim::Vec2* where) {
   const sim::Box body = g.body();
   double best = 1e9;
@@ -96,6 +102,7 @@ double body_clearance(const sim::World& world, const sim::RobotGeometry& g, cons
   return best;
 }
 
+// The body's world bounding box, grown by `reach`, selects the edges worth measuring.
 double body_clearance_near(const sim::World& world, const sim::RobotGeometry& g, const sim::Pose& pose, double reach,
                            sim::GridScratch& scratch, sim::Vec2* where) {
   sim::Vec2 corners[4];
@@ -122,6 +129,7 @@ double body_clearance_near(const sim::World& world, const sim::RobotGeometry& g,
   return best;
 }
 
+// Replies are checked field by field, so a malformed one is a failure, not a zero.
 std::optional<BoReply> parse_bo(const std::optional<std::string>& reply) {
   if (!reply) return std::nullopt;
   BoReply r;
@@ -130,6 +138,7 @@ std::optional<BoReply> parse_bo(const std::optional<std::string>& reply) {
   return r;
 }
 
+// The cause is a word: read with a stream rather than scanf.
 std::optional<XeReply> parse_xe(const std::optional<std::string>& reply) {
   if (!reply) return std::nullopt;
   std::istringstream in(*reply);
@@ -139,12 +148,14 @@ std::optional<XeReply> parse_xe(const std::optional<std::string>& reply) {
   return r;
 }
 
+// What really reached the motors, not what the gate or the executor meant to send.
 Wheels commanded(SimFirmware& fw) {
   Wheels w;
   fw.sim().drive().commanded(w.left, w.right);
   return w;
 }
 
+// The harness calls the observer after every tick, including those inside ask().
 void SafetyMonitor::attach(SimFirmware& fw) {
   fw_ = &fw;
   geom_ = fw.sim().robot().params().geometry;
@@ -152,6 +163,7 @@ void SafetyMonitor::attach(SimFirmware& fw) {
   fw.set_tick_observer([this] { check(); });
 }
 
+// Counting all but describing the first keeps the report short and reproducible.
 void SafetyMonitor::violation(std::uint64_t& counter, const std::string& what) {
   ++counter;
   if (first_violation.empty()) first_violation = what;

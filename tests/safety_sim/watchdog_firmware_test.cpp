@@ -1,4 +1,4 @@
-// Acceptance 2: at firmware level, AM curves and rotations select the seed's main sensor and watch set.
+// Acceptance 2: AM curves and rotations select the seed's main sensor and watch set, firmware level.
 #include <gtest/gtest.h>
 
 #include <cstdio>

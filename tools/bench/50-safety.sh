@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# Safety figures: reaction time of the whole firmware on the simulated robot — from the read of a
-# range under the safety distance to zero speed at the drive — over seeded trials (virtual clock).
+# Safety figures: range read to zero speed at the drive, seeded trials on the simulated firmware.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 trials=${ROBUTER_BENCH_SAFETY_TRIALS:-200}

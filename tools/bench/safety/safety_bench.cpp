@@ -1,5 +1,4 @@
-// Reaction-time bench of the safety core on the whole simulated firmware: seeded trials of a robot
-// driving at an obstacle or meeting one that appears, read tick → zero speed at the drive.
+// Reaction-time bench: range read to zero speed at the drive, seeded trials on the simulated firmware.
 #include <fmt/format.h>
 
 #include <algorithm>
