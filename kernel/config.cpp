@@ -153,6 +153,7 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("ptu.speed", p.speed, 1, 100'000);
   b.integer("ptu.acceleration", p.acceleration, 1, 1'000'000);
   b.integer("ptu.fire_tolerance_centideg", p.fire_tolerance_centideg, 1, 250);
+  b.integer("ptu.poll_period_ticks", p.poll_period_ticks, 1, 1000);
   b.integer("ptu.reply_timeout_ticks", p.reply_timeout_ticks, 1, 10'000);
   b.integer("ptu.max_failures", p.max_failures, 1, 100);
   b.integer("ptu.cap_mm", p.cap_mm, 100, 20'000);
@@ -190,6 +191,7 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("doors.exit_mm", d.exit_mm, 0, 10'000);
   b.integer("doors.max_age_ticks", d.max_age_ticks, 10, 1'000'000);
   b.integer("doors.same_echo_mm", d.same_echo_mm, 0, 1000);
+  b.integer("doors.echo_spread_percent", d.echo_spread_percent, 0, 100);
   b.integer("doors.timeout_ticks", d.timeout_ticks, 0, 100'000'000);
   b.integer("doors.emergency_mask", d.emergency_mask, 0, 7);
 }
@@ -261,9 +263,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.strings("permissions.pass_through_allow", c.permissions.pass_through_allow);
   b.boolean("permissions.shutdown", c.permissions.shutdown);
 
-  bind_doors(b, c.ptu, c.gate, c.doors);
-
   bind_planner(b, c.planner);
+  bind_doors(b, c.ptu, c.gate, c.doors);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

@@ -70,7 +70,8 @@ struct PanTiltConfig {
   std::int32_t max_position = 1655;          // the other end, positions (85.0°)
   std::uint32_t speed = 1500;                // pan speed, positions/s (SPEED)
   std::uint32_t acceleration = 6000;         // pan acceleration, positions/s² (PA6000)
-  std::uint32_t fire_tolerance_centideg = 150;  // fire within this of a multiple of 5°, 0.01°
+  std::uint32_t fire_tolerance_centideg = 100;  // fire within this of a multiple of 5°, 0.01° (seed ±1°)
+  std::uint32_t poll_period_ticks = 3;       // the unit's position is asked this often, ticks (seed 30 ms)
   std::uint32_t reply_timeout_ticks = 20;    // an unanswered command times out after this, ticks
   std::uint32_t max_failures = 3;            // consecutive time-outs or bad replies that fail the unit
   std::uint32_t cap_mm = 2491;               // readings above this (and no echo) count as this, mm (PAN_TIME_OUT_DIST)
@@ -112,6 +113,7 @@ struct DoorsConfig {
   std::uint32_t exit_mm = 400;               // driven on after "through" so the rear clears the door, mm
   std::uint32_t max_age_ticks = 600;         // pan-tilt readings older than this are ignored, ticks
   std::uint32_t same_echo_mm = 20;           // neighbouring sectors this close in range see the same echo, mm
+  std::uint32_t echo_spread_percent = 0;     // an echo is judged over this share of its bearing uncertainty, %
   std::uint32_t timeout_ticks = 30000;       // a crossing longer than this fails, ticks (0: no limit)
   std::uint32_t emergency_mask = 1;          // detections kept on while crossing (bumper 1)
 };

@@ -145,6 +145,9 @@ struct ModeRequest {
   bool gate = false;            // passage finder on
   bool doors = false;           // door crossing on
   std::uint32_t seq = 0;        // bumped on every change
+  std::uint32_t pan_tilt_seq = 0;  // bumped by every Ap / Ag
+  std::uint32_t gate_seq = 0;      // bumped by every AG / AT
+  std::uint32_t doors_seq = 0;     // bumped by every Ad / Af
 };
 
 // ---- pan-tilt scanner, passage finder, door crossing, demonstration (docs/DOORS.md) ----
@@ -165,6 +168,7 @@ struct PanTiltScan {
   std::array<std::int32_t, kPanTiltSectors> differences{};  // filtered[i+1] − filtered[i], mm (BD)
   std::array<std::uint64_t, kPanTiltSectors> read_tick{};   // tick each sector was fired, 0 = never
   std::array<SectorPose, kPanTiltSectors> pose{};           // odometry posture at each firing
+  std::array<std::int32_t, kPanTiltSectors> direction{};    // where each reading looked, 0.01° from forward, counter-clockwise
   std::uint32_t sweeps = 0;                                 // passes from one end to the other, count
   std::uint32_t readings = 0;                               // firings read back, count
   std::uint64_t tick = 0;                                   // tick of the latest reading

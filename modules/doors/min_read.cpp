@@ -49,4 +49,18 @@ double min_read_at(const SideDistances& s, double a) {
   return best;
 }
 
+// Why corners: the boundary rises to each corner of the rectangle and falls past it, so its
+// maximum over an interval is at an end or at a corner inside.
+double min_read_max(const SideDistances& s, double lo, double hi) {
+  double best = std::max(min_read_at(s, lo), min_read_at(s, hi));
+  const double corners[] = {std::atan2(s.left, s.front), std::atan2(s.left, -s.rear), std::atan2(-s.right, -s.rear),
+                            std::atan2(-s.right, s.front)};
+  for (double c : corners)
+    for (double k = -1.0; k <= 1.0; k += 1.0) {
+      const double a = c + k * 2.0 * std::numbers::pi;
+      if (a > lo && a < hi) best = std::max(best, min_read_at(s, a));
+    }
+  return best;
+}
+
 }  // namespace robuter::doors

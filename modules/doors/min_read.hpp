@@ -41,4 +41,8 @@ MinReadTable min_read_table(const BodyGeometry& g);
 // 270..350°). Used for echoes placed between sectors.
 double min_read_at(const SideDistances& s, double angle_rad);
 
+// The largest boundary over the directions [lo, hi] (radians, hi − lo < π): an echo known only
+// to lie somewhere in a beam is judged where the body reaches farthest in it.
+double min_read_max(const SideDistances& s, double lo_rad, double hi_rad);
+
 }  // namespace robuter::doors

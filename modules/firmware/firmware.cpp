@@ -15,6 +15,8 @@
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
 #include "modules/planner/planner_module.hpp"
+#include "modules/doors/doors_module.hpp"
+#include "modules/gate/gate_module.hpp"
 #include "modules/ptu/ptu_module.hpp"
 #include "modules/ptu/ptu_settings.hpp"
 #include "modules/ptu/unit_port.hpp"
@@ -94,9 +96,14 @@ std::optional<std::string> Firmware::setup() {
   auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
+  auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));
+  auto gate = std::make_unique<GateModule>(bb_, cfg_);
+  auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());
+  emergency->add_motion_source(MotionSource::gate, bb_.gate_motion.reader());
+  emergency->add_motion_source(MotionSource::doors, bb_.doors_motion.reader());
+  gate->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
   planner->set_emergency(emergency.get());
-  auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
@@ -104,7 +111,8 @@ std::optional<std::string> Firmware::setup() {
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},
                                   {"emergency", emergency.get()},  {"executor", executor.get()},
-                                  {"planner", planner.get()},      {"ptu", ptu.get()}};
+                                  {"planner", planner.get()},      {"ptu", ptu.get()},
+                                  {"gate", gate.get()},            {"doors", doors.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   processes_.push_back(std::move(stepper));
@@ -115,6 +123,8 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(executor));
   processes_.push_back(std::move(planner));
   processes_.push_back(std::move(ptu));
+  processes_.push_back(std::move(gate));
+  processes_.push_back(std::move(doors));
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
     table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});

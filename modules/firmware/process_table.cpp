@@ -20,7 +20,9 @@ constexpr DefaultRow kDefaults[] = {
     {"heartbeat", 100, 0, 1, 1000}, // proof of life, once a second
     {"planner", 10, 3, 0, 20000},   // grid planner: an odd tick (only "sim" runs there), last in it;
                                     // a plan may take ~10 ms (docs/PLANNER.md, "The module")
-    {"ptu", 3, 1, 2, 2000},         // pan-tilt unit and its two sonars (seed ptu: every 30 ms)
+    {"ptu", 1, 0, 2, 1000},         // pan-tilt unit: polled every 30 ms (seed), each 5° firing at its nearest tick
+    {"gate", 2, 1, 1, 2000},        // passage finder (AG/AT): manoeuvre control every 20 ms
+    {"doors", 5, 3, 1, 2000},       // door crossing (Ad/Af): steering every 50 ms
 };
 }  // namespace
 

@@ -35,9 +35,12 @@ int collect_wall(const PanTiltScan& scan, int edge, int dir, double edge_axis, c
     if (rn <= 0 || rn >= s.max_mm || std::abs(rn - rk) > s.corners.margin_mm) break;
     k = next;
     axis += dir * ptu::kSectorDegrees;
+    // Where this reading really looked (the firing is within a degree of the sector's angle).
+    const double nominal = ptu::kSectorDegrees * k;
+    const double actual = axis + ptu::wrap_deg(scan.direction[static_cast<std::size_t>(k)] * 0.01 - nominal - (axis - nominal));
     if (!past_edge && std::abs(rn - edge_r) <= s.geometry.same_echo_mm) continue;  // still the edge
     past_edge = true;
-    out[static_cast<std::size_t>(n++)] = WallSample{axis, static_cast<double>(rn)};
+    out[static_cast<std::size_t>(n++)] = WallSample{actual, static_cast<double>(rn)};
     ++taken;
   }
   return n;

@@ -61,8 +61,10 @@ void locate_echoes(const PanTiltScan& scan, const SectorPose& now, std::uint64_t
     e.valid = true;
     e.tick = scan.read_tick[i];
     const double r = scan.raw[i];
-    const double axis = kSectorDegrees * k;
+    // The direction the reading really looked along, unwrapped next to the sector's nominal angle.
+    const double axis = kSectorDegrees * k + wrap_deg(scan.direction[i] * 0.01 - kSectorDegrees * k);
     double bearing = axis;
+    e.spread_deg = g.beam_half_deg;
     e.far = scan.raw[i] >= g.far_mm;
     if (!e.far) {
       // Only neighbours of the same pass can describe the same point.
@@ -73,7 +75,12 @@ void locate_echoes(const PanTiltScan& scan, const SectorPose& now, std::uint64_t
         if (mates[j] && (tj > e.tick ? tj - e.tick : e.tick - tj) > g.run_window_ticks) mates[j] = false;
       }
       const BearingInterval b = echo_interval(scan.raw, mates, k, g);
-      if (!b.empty()) bearing = std::clamp(0.5 * (b.low + b.high), axis - g.beam_half_deg, axis + g.beam_half_deg);
+      if (!b.empty()) {
+        // The interval is in nominal sector angles; the firing was within a degree of them.
+        const double nominal = kSectorDegrees * k;
+        bearing = std::clamp(0.5 * (b.low + b.high) + (axis - nominal), axis - g.beam_half_deg, axis + g.beam_half_deg);
+        e.spread_deg = std::min(g.beam_half_deg, 0.5 * (b.high - b.low) + std::abs(axis - nominal));
+      }
     }
     // The point in the robot frame of the firing: from the face on the axis, along the bearing.
     const double fx = g.pivot_x_mm + g.face_mm * std::cos(axis * kRad);

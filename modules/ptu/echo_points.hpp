@@ -26,6 +26,7 @@ struct Echo {
   bool far = false;           // no echo within range (the point is at the reading, along the axis)
   double bearing_deg = 0.0;   // direction from the pan axis, counter-clockwise from forward, (−180, 180]
   double range_mm = 0.0;      // distance from the pan axis minus the face offset (what a sensor looking that way reads), mm
+  double spread_deg = 0.0;    // how far either side of bearing_deg the echo may really be, degrees
   double x_mm = 0.0;          // the point, mm
   double y_mm = 0.0;          // mm
   std::uint64_t tick = 0;     // when it was measured

@@ -19,11 +19,13 @@ void PtuDriver::start(std::uint64_t tick) {
   fault_ = DriverFault::none;
   failures_ = 0;
   have_pos_ = false;
-  velocity_ = 0.0;
+  have_velocity_ = false;
+  velocity_ = accel_ = 0.0;
   reverse_due_ = false;
   echo_pending_ = false;
   last_sector_ = -1;
   lines_.clear();
+  last_send_ = 0;
   if (fault_ == DriverFault::lost) set_up_ = false;  // a replugged unit may have been reset
   // Why not re-run the start-up when resuming: the unit keeps its settings; polling finds it.
   state_ = set_up_ ? DriverState::scanning : DriverState::starting;
@@ -159,18 +161,38 @@ void PtuDriver::handle_line(std::string_view line, bool bad) {
 // Why the tick after sending: the unit answers within a tick (≈ 10 bytes at 9600 bit/s), so
 // that is when the position was true.
 void PtuDriver::on_position(std::int32_t p, std::uint64_t measured_tick) {
-  if (have_pos_ && measured_tick > pos_tick_)
-    velocity_ = static_cast<double>(p - pos_) / static_cast<double>(measured_tick - pos_tick_);
+  if (have_pos_ && measured_tick > pos_tick_) {
+    const double dt = static_cast<double>(measured_tick - pos_tick_);
+    const double avg = static_cast<double>(p - pos_) / dt;  // mean speed over the interval (its middle)
+    const double amax = s_.acceleration * 1e-4;              // positions/tick² (10 ms ticks)
+    accel_ = have_velocity_ ? std::clamp((avg - avg_velocity_) / dt, -amax, amax) : 0.0;
+    velocity_ = avg + 0.5 * accel_ * dt;                     // at the end of the interval
+    avg_velocity_ = avg;
+    have_velocity_ = true;
+  }
   pos_ = p;
   pos_tick_ = measured_tick;
   have_pos_ = true;
   if (std::abs(p - target_) <= s_.end_tolerance) reverse_due_ = true;
 }
 
+// Why step by step: the pan axis accelerates to its speed and no further, and brakes to a stop at
+// an end — a plain v·t would overshoot both.
+double PtuDriver::predict(std::uint64_t tick) const {
+  const double vmax = s_.speed * 1e-2;  // positions/tick
+  double p = pos_, v = velocity_;
+  for (std::uint64_t t = pos_tick_; t < tick; ++t) {
+    v = std::clamp(v + accel_, -vmax, vmax);
+    p += v;
+  }
+  return std::clamp(p, static_cast<double>(s_.min_position), static_cast<double>(s_.max_position));
+}
+
 // The seed's start-up (ED, FT, I, PA6000, then move_ptu: ps1500, pp−1755), then PP every
 // activation, and pp to the other end whenever an end is reached.
 void PtuDriver::next_command(std::uint64_t tick) {
   if (pending_ != Command::none || out_done_ < out_len_) return;
+  if (last_send_ != 0 && tick - last_send_ < s_.poll_period_ticks) return;
   if (state_ == DriverState::starting) {
     switch (init_step_) {
       case 0: return send(Command::echo_off, "ED", std::nullopt, tick);
@@ -195,6 +217,7 @@ void PtuDriver::send(Command c, const char* text, std::optional<std::int32_t> n,
   out_done_ = 0;
   pending_ = c;
   sent_tick_ = tick;
+  last_send_ = tick;
 }
 
 void PtuDriver::flush() {
@@ -205,17 +228,21 @@ void PtuDriver::flush() {
   if (w.closed) fail(DriverFault::lost);
 }
 
-// Why predict: the position is ~2 ticks old when the activation fires (PP answered at the next
-// tick, read at the next activation); at 1500 positions/s that is 1.5°, a sector's tolerance.
+// Why predict: the position is a tick or more old when the activation fires (PP is answered at
+// the next tick), and polls are 30 ms apart, 2.3° at 1500 positions/s; the prediction fires each
+// sector at the tick whose angle is nearest its multiple of 5° (within 0.4° at that speed).
 void PtuDriver::fire_if_due(std::uint64_t tick, const SectorPose& pose) {
   if (echo_pending_ || !have_pos_ || tick - pos_tick_ > s_.stale_ticks) return;
-  const double predicted = std::clamp(static_cast<double>(pos_) + velocity_ * static_cast<double>(tick - pos_tick_),
-                                      static_cast<double>(s_.min_position), static_cast<double>(s_.max_position));
-  const int sector = sector_near(position_to_angle(predicted), s_.fire_tolerance_deg);
+  const double now = predict(tick), next = predict(tick + 1);
+  const double angle = position_to_angle(now);
+  const int sector = sector_near(angle, s_.fire_tolerance_deg);
   if (sector < 0 || sector == last_sector_) return;
-  if (!ring_.fire(hal::kPanTiltChannel, kBothSonars)) return;  // busy: the next activation may still catch it
+  const double target = kSectorDegrees * sector - 90.0;
+  if (std::abs(position_to_angle(next) - target) < std::abs(angle - target)) return;  // the next tick is nearer
+  if (!ring_.fire(hal::kPanTiltChannel, kBothSonars)) return;  // busy: the next tick may still catch it
   echo_pending_ = true;
   fire_sector_ = sector;
+  fire_angle_ = angle;
   fire_tick_ = tick;
   fire_pose_ = pose;
   last_sector_ = sector;
@@ -234,16 +261,17 @@ bool PtuDriver::collect_echo(std::uint64_t tick) {
   }
   echo_pending_ = false;
   // Seed read_pt(): temp[1] at (angle + 90)/5, temp[0] at the opposite sector.
-  store(fire_sector_, r[1]);
-  store(opposite_sector(fire_sector_), r[0]);
+  store(fire_sector_, r[1], fire_angle_ + 90.0);
+  store(opposite_sector(fire_sector_), r[0], fire_angle_ + 270.0);
   spike_filter(scan_.raw, scan_.filtered, s_.filter);
   differences(scan_.filtered, scan_.differences);
   ++scan_.readings;
   return true;
 }
 
-void PtuDriver::store(int sector, std::uint16_t measured_mm) {
+void PtuDriver::store(int sector, std::uint16_t measured_mm, double direction_deg) {
   const auto i = static_cast<std::size_t>(sector);
+  scan_.direction[i] = static_cast<std::int32_t>(std::lround(std::fmod(direction_deg + 360.0, 360.0) * 100.0));
   scan_.raw[i] = correct_range(measured_mm, s_.calibration);
   scan_.read_tick[i] = fire_tick_;
   scan_.pose[i] = fire_pose_;

@@ -23,7 +23,8 @@ struct PtuSettings {
   std::uint32_t echo_timeout_ticks = 10;  // a channel-7 result not back this long is dropped, ticks
   std::int32_t end_tolerance = 2;         // a position this close to the end counts as there, positions
   std::uint32_t stale_ticks = 10;         // no firing from a position older than this, ticks
-  double fire_tolerance_deg = 1.5;        // fire within this of a multiple of 5°, degrees (see sector_near)
+  double fire_tolerance_deg = 1.0;        // fire within this of a multiple of 5°, degrees (seed ±1°)
+  std::uint32_t poll_period_ticks = 3;    // a command (PP) at most this often, ticks (seed: every 30 ms)
   RangeCalibration calibration;           // measured → real range
   SpikeFilter filter;                     // spike filter thresholds
 };
@@ -40,7 +41,9 @@ enum class DriverFault : std::uint8_t {
 
 // The host side of seed ptu.c as a non-blocking state machine: one command in flight at a time,
 // its reply matched in order and timed in ticks; no read ever waits. Each step() does bounded
-// work: at most kMaxReads reads, one command written, one firing and one result.
+// work: at most kMaxReads reads, one command written, one firing and one result. Step it every
+// tick: positions are polled every poll_period_ticks (the seed's 30 ms), and between polls the
+// angle is predicted so that each 5° firing happens at the tick nearest its angle.
 class PtuDriver {
  public:
   static constexpr int kMaxReads = 4;              // reads of the port per step
@@ -83,7 +86,9 @@ class PtuDriver {
   void flush();
   void fire_if_due(std::uint64_t tick, const SectorPose& pose);
   bool collect_echo(std::uint64_t tick);
-  void store(int sector, std::uint16_t measured_mm);
+  // The pan position predicted at `tick` from the last reports (speed and acceleration limited).
+  double predict(std::uint64_t tick) const;
+  void store(int sector, std::uint16_t measured_mm, double direction_deg);
   void clear_scan();
 
   hal::ByteStream* stream_;             // the unit's port (null: none fitted)
@@ -99,16 +104,21 @@ class PtuDriver {
   std::size_t out_done_ = 0;            // bytes of out_ already written
   Command pending_ = Command::none;     // command whose reply is awaited
   std::uint64_t sent_tick_ = 0;         // tick it was sent
+  std::uint64_t last_send_ = 0;         // tick the last command was sent (paces the polling)
   std::uint32_t failures_ = 0;          // consecutive time-outs / bad replies
   std::int32_t target_ = 0;             // end the unit is moving to, positions
   bool reverse_due_ = false;            // the unit reached its end: send it to the other
   bool have_pos_ = false;               // pos_ is valid
   std::int32_t pos_ = 0;                // last reported position, positions
   std::uint64_t pos_tick_ = 0;          // tick it was measured (the tick after PP was sent)
-  double velocity_ = 0.0;               // estimated pan speed, positions/tick
+  double velocity_ = 0.0;               // estimated pan speed at pos_tick_, positions/tick
+  double accel_ = 0.0;                  // estimated pan acceleration, positions/tick²
+  double avg_velocity_ = 0.0;           // mean speed over the last poll interval, positions/tick
+  bool have_velocity_ = false;          // avg_velocity_ is valid
   int last_sector_ = -1;                // sector fired last (never twice in a row)
   bool echo_pending_ = false;           // a firing waits for its result
   int fire_sector_ = 0;                 // sector of that firing (0..35; +36 for the other sonar)
+  double fire_angle_ = 0.0;             // pan angle at that firing, degrees
   std::uint64_t fire_tick_ = 0;         // tick of that firing
   SectorPose fire_pose_{};              // robot posture at that firing
   PanTiltScan scan_{};                  // the 72 sectors

@@ -37,7 +37,7 @@ class PtuModule final : public Process {
   Writer<PanTiltScan> scan_out_;
   Writer<ModeStatus> status_out_;
   bool was_wanted_ = false;  // wanted() at the previous activation
-  std::uint32_t seen_modes_ = 0;  // ModeRequest.seq last acted on
+  std::uint32_t seen_modes_ = 0;  // ModeRequest.pan_tilt_seq last acted on
 };
 
 }  // namespace robuter

@@ -11,6 +11,7 @@ PtuSettings ptu_settings(const PanTiltConfig& c) {
   s.acceleration = static_cast<std::int32_t>(c.acceleration);
   s.fire_tolerance_deg = c.fire_tolerance_centideg / 100.0;
   s.reply_timeout_ticks = c.reply_timeout_ticks;
+  s.poll_period_ticks = c.poll_period_ticks;
   s.max_failures = c.max_failures;
   s.calibration.cap_mm = static_cast<std::int32_t>(c.cap_mm);
   s.calibration.offset_mm = static_cast<std::int32_t>(c.offset_mm);

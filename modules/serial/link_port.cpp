@@ -19,11 +19,11 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       emergency_(bb.emergency.reader()),
       planner_status_(bb.planner_status.reader()),
       planner_map_(bb.planner_map.reader()),
-      goal_out_(bb.planner_goal.writer()),
       pan_tilt_scan_(bb.pan_tilt_scan.reader()),
       pan_tilt_status_(bb.pan_tilt_status.reader()),
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
+      goal_out_(bb.planner_goal.writer()),
       cfg_(cfg) {}
 
 void LinkPort::wake_emergency() const {
@@ -146,24 +146,29 @@ PortResult LinkPort::set_pan_tilt(bool on) noexcept {
   w_.modes.modify([&](ModeRequest& m) {
     m.pan_tilt = on;
     ++m.seq;
+    ++m.pan_tilt_seq;
   });
   return PortResult::ok;
 }
 
 PortResult LinkPort::set_gate_finder(bool on) noexcept {
+  if (gate_status_.generation() == 0) return PortResult::unavailable;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
     m.gate = on;
     ++m.seq;
+    ++m.gate_seq;
   });
   return PortResult::ok;
 }
 
 PortResult LinkPort::set_door_crossing(bool on) noexcept {
+  if (doors_status_.generation() == 0) return PortResult::unavailable;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
     m.doors = on;
     ++m.seq;
+    ++m.doors_seq;
   });
   return PortResult::ok;
 }

@@ -90,11 +90,11 @@ class LinkPort final : public protocol::RobotPort {
   Reader<EmergencyState> emergency_;
   Reader<PlannerStatus> planner_status_;
   Reader<PlannerMapWindow> planner_map_;
-  Writer<PlannerGoal> goal_out_;           // this port owns the planner's goal topic
   Reader<PanTiltScan> pan_tilt_scan_;
   Reader<ModeStatus> pan_tilt_status_;
   Reader<ModeStatus> gate_status_;
   Reader<ModeStatus> doors_status_;
+  Writer<PlannerGoal> goal_out_;           // this port owns the planner's goal topic
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests

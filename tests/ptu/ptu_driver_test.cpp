@@ -32,10 +32,16 @@ class FakePort final : public hal::ByteStream {
   hal::IoResult write(std::span<const std::uint8_t> in) override {
     if (mode == Mode::closed) return {0, true};
     written.append(reinterpret_cast<const char*>(in.data()), in.size());
-    if (mode == Mode::unit) emu_.feed(in);
+    if (mode == Mode::unit) inbox_.append(reinterpret_cast<const char*>(in.data()), in.size());
     if (mode == Mode::garbage) canned_ += "#@%?\r\n";
     if (mode == Mode::refuse) canned_ += "! Illegal Command\r\n";
     return {in.size(), false};
+  }
+  // The unit reads what arrived during the last tick (as the emulator's port is served first in
+  // every tick of the firmware).
+  void deliver() {
+    emu_.feed(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(inbox_.data()), inbox_.size()));
+    inbox_.clear();
   }
   bool reopen() override { return mode != Mode::closed; }
   bool connected() const override { return mode != Mode::closed; }
@@ -46,6 +52,7 @@ class FakePort final : public hal::ByteStream {
  private:
   hal::PtuEmulator& emu_;
   std::string canned_;  // scripted replies waiting to be read
+  std::string inbox_;   // bytes written, not yet read by the unit
 };
 
 // Channel 7 answers with ranges that encode the pan angle at firing: the sensor looking along
@@ -77,7 +84,7 @@ class FakeRing final : public hal::SonarRing {
   double angle_ = 0.0;
 };
 
-// Driver, unit and ring on a 10 ms tick; the driver steps every 3 ticks (30 ms, seed period).
+// Driver, unit and ring on a 10 ms tick; the driver steps every tick (it polls every 3).
 struct Rig {
   hal::PtuEmulator emu;
   FakePort port{emu};
@@ -88,7 +95,8 @@ struct Rig {
   void run(int ticks) {
     for (int i = 0; i < ticks; ++i, ++tick) {
       emu.advance(0.010);
-      if (tick % 3 == 0) driver.step(tick, SectorPose{});
+      port.deliver();
+      driver.step(tick, SectorPose{});
     }
   }
   bool run_until(DriverState s, int max_ticks) {
@@ -96,6 +104,21 @@ struct Rig {
     return driver.state() == s;
   }
 };
+
+// Polls are 30 ms apart (the seed's period) although the driver steps every tick.
+TEST(PtuDriver, PollsEveryThirtyMilliseconds) {
+  Rig r;
+  r.driver.start(r.tick);
+  ASSERT_TRUE(r.run_until(DriverState::scanning, 100));
+  r.run(10);
+  const std::size_t before = r.port.written.size();
+  r.run(300);
+  const std::string polls = r.port.written.substr(before);
+  std::size_t n = 0;
+  for (std::size_t p = polls.find("PP\r"); p != std::string::npos; p = polls.find("PP\r", p + 1)) ++n;
+  EXPECT_GE(n, 95u);   // 300 ticks / 3, less the pp commands at the ends
+  EXPECT_LE(n, 100u);
+}
 
 TEST(PtuDriver, StartUpSequenceIsTheSeeds) {
   Rig r;
@@ -123,9 +146,13 @@ TEST(PtuDriver, SweepsAndFillsEverySectorAtItsAngle) {
     const auto i = static_cast<std::size_t>(k);
     ASSERT_GT(s.read_tick[i], 0u) << k;
     ASSERT_GT(s.read_tick[i + 36], 0u) << k + 36;
-    // raw = 400 + 10·(angle + 90) with angle + 90 = 5k ± 1.5°: ±15 mm (+1 for rounding, truncation)
-    EXPECT_NEAR(s.raw[i], 400 + 50 * k, 17) << "sector " << k;
-    EXPECT_NEAR(s.raw[i + 36], 200 + 50 * k, 17) << "sector " << k + 36;
+    // raw = 400 + 10·(angle + 90): fired at the tick nearest 5k (0.4° at 1500 positions/s,
+    // 0.77° a tick) → ±4 mm, +1 for rounding, +1 for truncation
+    EXPECT_NEAR(s.raw[i], 400 + 50 * k, 6) << "sector " << k;
+    EXPECT_NEAR(s.raw[i + 36], 200 + 50 * k, 6) << "sector " << k + 36;
+    // and where it looked: angle + 90° for the first sonar, angle + 270° for the other
+    EXPECT_NEAR(s.direction[i] / 100.0, 5.0 * k, 0.5) << "sector " << k;
+    EXPECT_NEAR(s.direction[i + 36] / 100.0, 5.0 * k + 180.0, 0.5) << "sector " << k + 36;
   }
   EXPECT_GE(r.ring.fired, 72);
   // One pass takes 3410 positions at 1500/s plus the ramps: about 2.5 s, 250 ticks.

@@ -78,6 +78,7 @@ std::pair<int, int> SimFirmware::count_lines() {
 }
 
 void SimFirmware::send_raw(std::string_view bytes) {
+  if (client_ < 0) return;  // the client went away (close_client)
   std::size_t done = 0;
   while (done < bytes.size()) {
     const ssize_t n = ::write(client_, bytes.data() + done, bytes.size() - done);
@@ -119,6 +120,11 @@ void SimFirmware::unplug_ptu() {
   if (null < 0) return;
   ::dup2(null, fd);
   ::close(null);
+}
+
+void SimFirmware::close_client() {
+  if (client_ >= 0) ::close(client_);
+  client_ = -1;
 }
 
 std::string SimFirmware::take_unsolicited() {

@@ -58,6 +58,8 @@ class SimFirmware {
   // Unplugs the emulated pan-tilt unit: its end of the pty is closed, the PTU module's port
   // hangs up (no-op without with_ptu).
   void unplug_ptu();
+  // The client goes away: its end of the link is closed (ask() fails from then on).
+  void close_client();
   // Lines that arrived without being asked for (stream lines), since the last call.
   std::string take_unsolicited();
 

@@ -1,0 +1,162 @@
+// Stop, scan, estimate, manoeuvre, scan again: the passage finder as a state machine.
+#include "modules/gate/gate_logic.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace robuter::gate {
+
+namespace {
+constexpr double kRad = std::numbers::pi / 180.0;
+
+motion::GoToSettings manoeuvre_settings(const GateSettings& s) {
+  motion::GoToSettings g;
+  g.position_tolerance = 100;  // 1 cm, 0.1 mm
+  g.angle_tolerance = 50;      // 0.5°, 0.01°
+  g.max_drive_cm_s = s.speed_cm_s;
+  g.max_turn_cm_s = s.turn_cm_s;
+  g.min_cm_s = 1;
+  g.wheel_base_mm = s.wheel_base_mm;
+  return g;
+}
+
+// A pose and a robot-frame offset (mm, degrees) composed into odometry units (0.1 mm, 0.01°).
+motion::PostureUnits compose(const SectorPose& p, double x_mm, double y_mm, double dtheta_deg) {
+  const double th = p.theta * 0.01 * kRad;
+  motion::PostureUnits t;
+  t.x = static_cast<std::int32_t>(std::lround(p.x + 10.0 * (x_mm * std::cos(th) - y_mm * std::sin(th))));
+  t.y = static_cast<std::int32_t>(std::lround(p.y + 10.0 * (x_mm * std::sin(th) + y_mm * std::cos(th))));
+  t.theta = motion::wrap_centideg(static_cast<std::int64_t>(std::lround(p.theta + dtheta_deg * 100.0)));
+  return t;
+}
+
+// True when every sector has been read after `since`.
+bool fresh(const PanTiltScan& s, std::uint64_t since) {
+  for (std::uint64_t t : s.read_tick)
+    if (t <= since) return false;
+  return true;
+}
+}  // namespace
+
+GateLogic::GateLogic(const GateSettings& s) : s_(s), go_(manoeuvre_settings(s)) {}
+
+void GateLogic::start(std::uint64_t tick) {
+  phase_ = Phase::settle;
+  phase_tick_ = tick;
+  state_ = ModeState::searching;
+  reason_ = ModeReason::none;
+  unlocked_since_ = 0;
+  manoeuvres_ = 0;
+  estimate_ = DoorEstimate{};
+  go_.cancel();
+}
+
+void GateLogic::fail(ModeReason reason) {
+  if (phase_ == Phase::idle) return;
+  phase_ = Phase::idle;
+  state_ = ModeState::failed;
+  reason_ = reason;
+  go_.cancel();
+}
+
+void GateLogic::stop() {
+  phase_ = Phase::idle;
+  if (state_ != ModeState::aligned && state_ != ModeState::failed) state_ = ModeState::off;
+  go_.cancel();
+}
+
+GateOutput GateLogic::out(std::int32_t l, std::int32_t r) const {
+  GateOutput o;
+  o.left = l;
+  o.right = r;
+  o.request = phase_ != Phase::idle;
+  o.state = state_;
+  o.reason = reason_;
+  o.width_mm = estimate_.ok ? static_cast<std::int32_t>(std::lround(estimate_.width_mm)) : 0;
+  return o;
+}
+
+GateOutput GateLogic::step(const GateInputs& in) {
+  if (phase_ == Phase::idle) return out(0, 0);
+  if (in.scanner_failed) {
+    fail(ModeReason::scanner);
+    return out(0, 0);
+  }
+  switch (phase_) {
+    case Phase::settle:
+      if (in.tick - phase_tick_ >= s_.settle_ticks) {
+        phase_ = Phase::scan;
+        phase_tick_ = in.tick;
+        scan_from_ = in.tick;
+      }
+      return out(0, 0);
+    case Phase::scan:
+      if (fresh(*in.scan, scan_from_)) {
+        evaluate(in);
+        if (phase_ != Phase::move) return out(0, 0);
+        break;
+      }
+      if (in.tick - phase_tick_ > s_.scan_timeout_ticks) fail(ModeReason::scanner);
+      return out(0, 0);
+    default:
+      break;
+  }
+  // Manoeuvring: one controller step from the current odometry.
+  const motion::WheelSpeeds w = go_.step(motion::PostureUnits{in.pose.x, in.pose.y, in.pose.theta});
+  if (!go_.active()) {
+    phase_ = Phase::settle;
+    phase_tick_ = in.tick;
+    state_ = ModeState::searching;
+    return out(0, 0);
+  }
+  return out(w.left, w.right);
+}
+
+// Why a staging pose rather than the seed's reactive turns: one scan from a standstill gives the
+// passage's centre and direction to a few centimetres and a fraction of a degree; a manoeuvre
+// to the centre line followed by a check from there converges in one or two rounds, where the
+// seed's "distances to the corners agree within 300 mm" accepts half a metre off-centre at 1.5 m.
+void GateLogic::evaluate(const GateInputs& in) {
+  const PanTiltScan& scan = *in.scan;
+  ptu::Echoes echoes;
+  ptu::locate_echoes(scan, in.pose, in.tick, in.tick - scan_from_ + 1, s_.door.geometry, echoes);
+  estimate_ = estimate_door(scan, echoes, s_.door);
+  if (!estimate_.ok) {
+    if (unlocked_since_ == 0) unlocked_since_ = in.tick;
+    if (in.tick - unlocked_since_ > s_.timeout_ticks) {
+      fail(ModeReason::no_passage);
+      return;
+    }
+    phase_ = Phase::scan;  // look again (the seed waited, stopped, for a lock)
+    phase_tick_ = in.tick;
+    scan_from_ = in.tick;
+    return;
+  }
+  unlocked_since_ = 0;
+  const DoorEstimate& d = estimate_;
+  const double nx = std::cos(d.normal_deg * kRad), ny = std::sin(d.normal_deg * kRad);
+  // The axle (origin) against the centre line through the passage's centre along the normal.
+  lateral_mm_ = -(-d.center_x * ny + d.center_y * nx);  // + when the axle is left of the line
+  heading_deg_ = -d.normal_deg;                         // + when the robot points left of the passage
+  front_mm_ = d.center_x * nx + d.center_y * ny - s_.axle_to_front_mm;
+  const bool lined_up = std::abs(lateral_mm_) <= s_.lateral_tolerance_mm && std::abs(heading_deg_) <= s_.heading_tolerance_deg;
+  const bool close = d.lock.right_value <= s_.min_mm || d.lock.left_value <= s_.min_mm;  // seed "I'm close!"
+  if ((lined_up && front_mm_ <= s_.stage_mm + s_.distance_tolerance_mm) || close) {
+    phase_ = Phase::idle;
+    state_ = ModeState::aligned;
+    return;
+  }
+  if (manoeuvres_ >= s_.max_manoeuvres) {
+    fail(ModeReason::cannot_align);
+    return;
+  }
+  ++manoeuvres_;
+  // The staging pose: on the centre line, stage_mm (front face) before the passage, facing it.
+  const double back = s_.stage_mm + s_.axle_to_front_mm;
+  go_.start(compose(in.pose, d.center_x - back * nx, d.center_y - back * ny, d.normal_deg));
+  phase_ = Phase::move;
+  phase_tick_ = in.tick;
+  state_ = ModeState::moving;
+}
+
+}  // namespace robuter::gate

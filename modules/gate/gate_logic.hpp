@@ -1,0 +1,86 @@
+// The passage finder's decisions, pure: stop and scan, find the passage, manoeuvre onto its centre
+// line facing it, check again — until aligned, or a reason to give up.
+#pragma once
+
+#include <cstdint>
+
+#include "modules/executor/go_to.hpp"
+#include "modules/gate/door_estimate.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter::gate {
+
+// Everything the passage finder needs, in its own units (mm, ticks, degrees, cm/s).
+struct GateSettings {
+  DoorSettings door;                   // how the passage is read from a scan
+  std::int32_t min_mm = 700;           // a corner this close: close enough, stop (MIN)
+  std::int32_t speed_cm_s = 5;         // driving speed (Va)
+  std::int32_t turn_cm_s = 2;          // turning wheel speed (Va/2)
+  std::uint32_t timeout_ticks = 1000;  // no lock for this long: no passage (TIMEOUT)
+  double stage_mm = 300.0;             // aligned with the front face this far from the passage
+  double lateral_tolerance_mm = 30.0;  // aligned: axle this close to the centre line
+  double heading_tolerance_deg = 2.0;  // aligned: heading this close to the passage's direction
+  double distance_tolerance_mm = 150.0;  // aligned: front face this close to stage_mm (farther: drive on)
+  std::uint32_t max_manoeuvres = 6;    // manoeuvres before giving up
+  double axle_to_front_mm = 695.0;     // wheel axle to the front face (pan_x + pivot_x), mm
+  std::uint32_t settle_ticks = 20;     // still after stopping before a scan counts, ticks
+  std::uint32_t scan_timeout_ticks = 1500;  // a complete fresh scan not in after this: scanner trouble, ticks
+  std::uint32_t wheel_base_mm = 600;   // DBW, for the manoeuvre controller
+};
+
+// One activation's view.
+struct GateInputs {
+  std::uint64_t tick = 0;              // now
+  const PanTiltScan* scan = nullptr;   // the latest scan (never null in use)
+  SectorPose pose{};                   // odometry now
+  bool scanner_failed = false;         // the pan-tilt reports a failure
+};
+
+// One activation's decision.
+struct GateOutput {
+  std::int32_t left = 0;               // wheel speeds to request, cm/s
+  std::int32_t right = 0;              // cm/s
+  bool request = false;                // publish the speeds (false once ended)
+  ModeState state = ModeState::off;    // searching, moving, aligned, failed, off
+  ModeReason reason = ModeReason::none;// why it failed
+  std::int32_t width_mm = 0;           // estimated passage width, mm
+};
+
+class GateLogic {
+ public:
+  explicit GateLogic(const GateSettings& s);
+  // AG: begins from a standstill.
+  void start(std::uint64_t tick);
+  // Ends now with `reason` (AT: cancelled; an emergency, another motion, the scanner…).
+  void fail(ModeReason reason);
+  // Ends without a failure (AT while already done or off).
+  void stop();
+  GateOutput step(const GateInputs& in);
+  bool active() const { return phase_ != Phase::idle; }
+  const DoorEstimate& last_estimate() const { return estimate_; }
+  std::uint32_t manoeuvres() const { return manoeuvres_; }
+  // The last alignment errors measured: lateral (mm, + left of the centre line), heading (degrees).
+  double lateral_error_mm() const { return lateral_mm_; }
+  double heading_error_deg() const { return heading_deg_; }
+  double front_distance_mm() const { return front_mm_; }
+
+ private:
+  enum class Phase : std::uint8_t { idle, settle, scan, move };
+  // Reads the fresh scan: lock, estimate, decide aligned / manoeuvre / wait / give up.
+  void evaluate(const GateInputs& in);
+  GateOutput out(std::int32_t l, std::int32_t r) const;
+
+  GateSettings s_;
+  motion::GoToController go_;          // the manoeuvre to the staging pose
+  Phase phase_ = Phase::idle;
+  ModeState state_ = ModeState::off;   // what is reported
+  ModeReason reason_ = ModeReason::none;
+  std::uint64_t phase_tick_ = 0;       // when the phase began
+  std::uint64_t scan_from_ = 0;        // sectors read after this tick make a fresh scan
+  std::uint64_t unlocked_since_ = 0;   // first evaluation without a lock (0: locked or none yet)
+  std::uint32_t manoeuvres_ = 0;
+  DoorEstimate estimate_{};
+  double lateral_mm_ = 0.0, heading_deg_ = 0.0, front_mm_ = 0.0;
+};
+
+}  // namespace robuter::gate

@@ -1,0 +1,46 @@
+// Passage-finder module (AG / AT): runs GateLogic, asks for motion through the emergency gate.
+#pragma once
+
+#include "kernel/config.hpp"
+#include "kernel/process.hpp"
+#include "modules/gate/gate_logic.hpp"
+#include "modules/ptu/motion_claim.hpp"
+#include "modules/topics.hpp"
+
+namespace robuter {
+
+// Listens to the `modes` topic (AG starts, AT stops), reads the pan-tilt scan and the odometry,
+// and publishes `gate_motion` (a motion source of the emergency module) and `gate_status` (XD).
+// Ends on its own when aligned, or failed: no passage within TIMEOUT, no alignment within the
+// allowed manoeuvres, the pan-tilt failing, an emergency, or another motion request taking over.
+class GateModule final : public Process {
+ public:
+  GateModule(Blackboard& bb, const Config& cfg);
+  // The emergency module, triggered on every request so it is judged in the same tick.
+  void set_emergency(Process* p) { emergency_ = p; }
+
+  bool init(Kernel& k) override;
+  void run(Kernel& k) override;
+  void close(Kernel& k) override;
+
+  const gate::GateLogic& logic() const { return logic_; }
+
+ private:
+  // Publishes the request (when asked for) and the status (on change).
+  void publish(Kernel& k, const gate::GateOutput& o);
+
+  gate::GateLogic logic_;
+  Reader<ModeRequest> modes_;
+  Reader<PanTiltScan> scan_;
+  Reader<ModeStatus> ptu_;
+  Reader<Posture> posture_;
+  MotionClaim claim_;                 // an emergency or another source taking the robot
+  Writer<MotionRequest> motion_out_;
+  Writer<ModeStatus> status_out_;
+  Process* emergency_ = nullptr;
+  std::uint32_t seen_modes_ = 0;      // ModeRequest.gate_seq last acted on
+  std::uint64_t started_ = 0;         // tick of the start
+  bool sent_stop_ = true;             // the last request was zero and the search has ended
+};
+
+}  // namespace robuter

@@ -1,0 +1,43 @@
+// Proves the passage finder, the door crossing and the pan-tilt allocate nothing on the periodic
+// path: a whole AG + Ad run through the 90 cm door with the allocation counter armed.
+#include <gtest/gtest.h>
+
+#include "tests/support/alloc_counter.hpp"
+#include "tests/support/sim_firmware.hpp"
+
+namespace robuter {
+namespace {
+
+TEST(CrossingNoAlloc, AWholeCrossingAllocatesNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/door90.toml", Config{}, {}, true);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  for (const char* l : {"XD", "BP", "AT", "Af"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the reply paths
+  fw.run_ticks(100);
+  fw.count_lines();
+  auto gate = [&] { return fw.bb().gate_status.reader().peek().state; };
+  auto doors = [&] { return fw.bb().doors_status.reader().peek().state; };
+  test::AllocCounter counter;
+  fw.send_raw("AG\r");
+  for (int i = 0; i < 20'000 && gate() != ModeState::aligned && gate() != ModeState::failed; ++i) {
+    fw.step();
+    if (i % 500 == 0) fw.send_raw("XD\r");
+    fw.count_lines();
+  }
+  ASSERT_EQ(gate(), ModeState::aligned);
+  fw.send_raw("Ad\r");
+  for (int i = 0; i < 30'000 && doors() != ModeState::crossed && doors() != ModeState::failed; ++i) {
+    fw.step();
+    if (i % 500 == 0) fw.send_raw("XD\r");
+    fw.count_lines();
+  }
+  const auto allocations = counter.count();
+  EXPECT_EQ(doors(), ModeState::crossed);
+  EXPECT_EQ(allocations, 0u);
+#endif
+}
+
+}  // namespace
+}  // namespace robuter

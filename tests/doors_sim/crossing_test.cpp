@@ -1,0 +1,116 @@
+// Door crossing on the whole simulated firmware, the pan-tilt emulated on its own pty: AG then Ad
+// from seeded starts before the 90 and 100 cm doors (lateral ±40 cm, heading ±20°), the 70 cm
+// gap, and every way out of the crossing giving the emergency mask back.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/doors_sim/crossing_run.hpp"
+
+namespace robuter::test {
+namespace {
+
+const std::string kWorlds = ROBUTER_WORLDS_DIR "/";
+
+// A start that must end through the door: aligned, crossed, never touching, stopped, body
+// beyond the wall, the emergency mask bumper-only while crossing and back to 7 after.
+void expect_crossed(const CrossingSetup& s) {
+  const CrossingResult r = run_crossing(s);
+  ASSERT_TRUE(r.started) << r.log;
+  const std::string where = "start dx " + std::to_string(s.dx_m) + " m, dheading " + std::to_string(s.dheading_deg) + "°\n" + r.log;
+  EXPECT_EQ(r.gate, "aligned") << where;
+  EXPECT_EQ(r.doors, "crossed") << where;
+  EXPECT_FALSE(r.contact) << where;
+  EXPECT_TRUE(r.body_through) << where;
+  EXPECT_TRUE(r.stopped) << where;
+  EXPECT_EQ(r.mask_during, 1) << where;
+  EXPECT_EQ(r.mask_after, 7) << where;
+  EXPECT_LT(r.total_s, 200.0) << where;
+}
+
+TEST(Crossing, Door90FromSeededStarts) {
+  for (std::uint64_t seed : {1, 2, 3, 4}) expect_crossed(seeded_start(kWorlds + "door90.toml", seed));
+}
+
+TEST(Crossing, Door100FromSeededStarts) {
+  for (std::uint64_t seed : {5, 6, 7}) expect_crossed(seeded_start(kWorlds + "door100.toml", seed));
+}
+
+// The worst corners of the start box.
+TEST(Crossing, Door90FromTheCornersOfTheStartBox) {
+  for (double dx : {-0.4, 0.4})
+    for (double dh : {-20.0, 20.0}) {
+      CrossingSetup s;
+      s.world = kWorlds + "door90.toml";
+      s.dx_m = dx;
+      s.dheading_deg = dh;
+      expect_crossed(s);
+    }
+}
+
+// 70 cm is the robot's own width: the finder cannot see through it from 1.5 m, and sent in
+// anyway the crossing stops in front of it, blocked on both sides, and gives up — no contact.
+TEST(Crossing, Gap70EndsInCantCrossWithoutContact) {
+  for (std::uint64_t seed : {1, 2, 3}) {
+    CrossingSetup s = seeded_start(kWorlds + "gap70.toml", seed);
+    s.ad_even_if_gate_failed = true;
+    const CrossingResult r = run_crossing(s);
+    ASSERT_TRUE(r.started) << r.log;
+    EXPECT_EQ(r.gate, "failed no-passage") << r.log;
+    EXPECT_EQ(r.doors, "failed cant-cross") << r.log;
+    EXPECT_FALSE(r.contact) << r.log;
+    EXPECT_TRUE(r.stopped) << r.log;
+    EXPECT_EQ(r.mask_after, 7) << r.log;
+  }
+}
+
+// The unit unplugged in the middle of the crossing: the robot stops, XD says why, the mask is back.
+TEST(Crossing, UnpluggedPanTiltStopsTheCrossingAndRestoresTheMask) {
+  CrossingSetup s;
+  s.world = kWorlds + "door90.toml";
+  s.unplug_after_ticks = 2500;  // 25 s after Ad: moving towards the door
+  const CrossingResult r = run_crossing(s);
+  ASSERT_TRUE(r.started) << r.log;
+  EXPECT_EQ(r.doors, "failed scanner") << r.log;
+  EXPECT_EQ(r.pan_tilt, "failed unit-lost") << r.log;
+  EXPECT_LT(r.crossing_s, 26.0) << r.log;  // ended within a second of the unplugging
+  EXPECT_TRUE(r.stopped);
+  EXPECT_FALSE(r.contact);
+  EXPECT_EQ(r.mask_during, 1);
+  EXPECT_EQ(r.mask_after, 7);
+  EXPECT_NE(r.log.find("failed unit-lost aligned none failed scanner"), std::string::npos) << r.log;
+}
+
+TEST(Crossing, AfStopsTheCrossingAndRestoresTheMask) {
+  CrossingSetup s;
+  s.world = kWorlds + "door90.toml";
+  s.cancel_after_ticks = 2000;
+  const CrossingResult r = run_crossing(s);
+  EXPECT_EQ(r.doors, "failed cancelled") << r.log;
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.mask_after, 7);
+}
+
+// Every link closed: the crossing (comm detection off) must not carry on unattended.
+TEST(Crossing, LinkLossStopsTheCrossingAndRestoresTheMask) {
+  CrossingSetup s;
+  s.world = kWorlds + "door90.toml";
+  s.close_link_after_ticks = 2000;
+  const CrossingResult r = run_crossing(s);
+  EXPECT_EQ(r.doors, "failed link-lost") << r.log;
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.mask_after, 7);
+}
+
+// The firmware stopping in the middle of the crossing (AX, SIGTERM): close() gives the mask back.
+TEST(Crossing, ShutdownRestoresTheMask) {
+  CrossingSetup s;
+  s.world = kWorlds + "door90.toml";
+  s.shutdown_after_ticks = 2000;
+  const CrossingResult r = run_crossing(s);
+  EXPECT_EQ(r.doors, "failed shutdown") << r.log;
+  EXPECT_EQ(r.mask_after, 7);
+}
+
+}  // namespace
+}  // namespace robuter::test
