@@ -23,6 +23,9 @@ std::string ConfigError::message() const {
 
 namespace {
 
+// Serial rates a port may be set to, bit/s (hal/linux/serial_settings.cpp).
+constexpr std::uint32_t kSerialRates[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600};
+
 // Binds TOML keys to config fields, remembering which keys were known so the rest can be
 // reported as unknown. Stops at the first error.
 class Binder {
@@ -90,6 +93,9 @@ class Binder {
     tables_.insert(key);
   }
 
+  // Marks `key` as known and returns its node (null when absent), for keys checked by hand.
+  const toml::node* claim(const std::string& key) { return lookup(key); }
+
   // Reports the first key in the file that no binding claimed.
   void reject_unknown() { walk(root_, ""); }
 
@@ -144,10 +150,71 @@ class Binder {
   std::optional<ConfigError> error_;
 };
 
+// Line settings of a serial port (docs/HARDWARE.md); `prefix` is its section. The rates are
+// the ones hal/linux/serial_settings.cpp can set (kept equal by a unit test).
+void bind_serial_line(Binder& b, const std::string& prefix, std::uint32_t& baud, std::string& parity,
+                      std::uint32_t& stop_bits, std::string& flow, std::uint32_t& retry_ms) {
+  b.integer(prefix + ".baud", baud, 1200, 921'600);
+  bool rate_ok = false;
+  for (const std::uint32_t r : kSerialRates) rate_ok = rate_ok || r == baud;
+  if (!rate_ok)
+    b.fail_key(prefix + ".baud", fmt::format("{} is not a serial rate (1200, 2400, 4800, 9600, 19200, 38400, "
+                                             "57600, 115200, 230400, 460800, 921600)", baud));
+  b.string(prefix + ".parity", parity, {"none", "even", "odd"});
+  b.integer(prefix + ".stop_bits", stop_bits, 1, 2);
+  b.string(prefix + ".flow_control", flow, {"none", "hardware", "software"});
+  b.integer(prefix + ".retry_ms", retry_ms, 10, 60'000);
+}
+
+// [links.serial]: the serial command link.
+void bind_links(Binder& b, LinksConfig& l) {
+  b.table("links.serial");
+  b.string("links.serial.device", l.serial.device);
+  bind_serial_line(b, "links.serial", l.serial.baud, l.serial.parity, l.serial.stop_bits, l.serial.flow_control,
+                   l.serial.retry_ms);
+}
+
+// [hardware.gpio]: bumpers and digital inputs on a GPIO chip. Offsets must be distinct (one
+// request holds each line once) and at most 32 in all (GPIO_V2_LINES_MAX is 64; the bumper mask
+// is 32 bits).
+void bind_gpio(Binder& b, const toml::table& root, GpioConfig& g) {
+  b.table("hardware.gpio");
+  b.string("hardware.gpio.chip", g.chip);
+  if (const toml::node* n = root.at_path("hardware.gpio.chip").node()) g.line = static_cast<int>(n->source().begin.line);
+  b.boolean("hardware.gpio.active_low", g.active_low);
+  b.integer("hardware.gpio.debounce_us", g.debounce_us, 0, 1'000'000);
+  for (auto [key, out] : {std::pair{"hardware.gpio.bumper_lines", &g.bumper_lines},
+                          std::pair{"hardware.gpio.input_lines", &g.input_lines}}) {
+    const toml::node* n = b.claim(key);
+    if (!n || b.error()) continue;
+    const auto* a = n->as_array();
+    if (!a) return b.fail_key(key, "expected an array of line offsets (integers)");
+    out->clear();
+    for (const auto& e : *a) {
+      const auto* v = e.as_integer();
+      if (!v || v->get() < 0 || v->get() > 1023)
+        return b.fail_key(key, "expected line offsets, integers 0..1023");
+      out->push_back(static_cast<std::uint32_t>(v->get()));
+    }
+  }
+  if (b.error()) return;
+  std::vector<std::uint32_t> all = g.bumper_lines;
+  all.insert(all.end(), g.input_lines.begin(), g.input_lines.end());
+  if (all.size() > 32) return b.fail_key("hardware.gpio.input_lines", "more than 32 lines in all");
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (all[i] == all[j])
+        return b.fail_key(i < g.bumper_lines.size() ? "hardware.gpio.bumper_lines" : "hardware.gpio.input_lines",
+                          fmt::format("line {} is listed twice", all[i]));
+  if (g.chip.empty() && !all.empty())
+    return b.fail_key(g.bumper_lines.empty() ? "hardware.gpio.input_lines" : "hardware.gpio.bumper_lines",
+                      "lines given but no hardware.gpio.chip");
+}
+
 // The [ptu], [gate] and [doors] sections (docs/DOORS.md): seed constants as defaults.
 void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.string("ptu.port", p.port);
-  b.integer("ptu.baud", p.baud, 1200, 921'600);
+  bind_serial_line(b, "ptu", p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms);
   b.integer("ptu.min_position", p.min_position, -100'000, 100'000);
   b.integer("ptu.max_position", p.max_position, -100'000, 100'000);
   b.integer("ptu.speed", p.speed, 1, 100'000);
@@ -232,7 +299,7 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "process", "modules"})
+                        "process", "modules", "links", "hardware"})
     b.table(t);
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
@@ -265,6 +332,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 
   bind_planner(b, c.planner);
   bind_doors(b, c.ptu, c.gate, c.doors);
+  bind_links(b, c.links);
+  bind_gpio(b, root, c.gpio);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

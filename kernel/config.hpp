@@ -66,6 +66,10 @@ struct PermissionsConfig {
 struct PanTiltConfig {
   std::string port;                          // the unit's serial device, empty = no unit (robuterd --ptu-port)
   std::uint32_t baud = 9600;                 // its rate, bit/s
+  std::string parity = "none";               // its parity: none, even, odd (docs/HARDWARE.md)
+  std::uint32_t stop_bits = 1;               // its stop bits, 1 or 2
+  std::string flow_control = "none";         // none, hardware (RTS/CTS), software (XON/XOFF)
+  std::uint32_t retry_ms = 500;              // a lost port is looked for this often, ms
   std::int32_t min_position = -1755;         // one end of the sweep, positions (−90.2°)
   std::int32_t max_position = 1655;          // the other end, positions (85.0°)
   std::uint32_t speed = 1500;                // pan speed, positions/s (SPEED)
@@ -141,6 +145,31 @@ struct PlannerModuleConfig {
   std::uint32_t turn_speed_cm_s = 10;    // fastest wheel while turning in place, cm/s
 };
 
+// A serial command link ([links.serial]; docs/HARDWARE.md).
+struct SerialLinkConfig {
+  std::string device;                        // its device, empty = none (robuterd --serial overrides)
+  std::uint32_t baud = 9600;                 // line rate, bit/s (robuterd --baud overrides)
+  std::string parity = "none";               // none, even, odd
+  std::uint32_t stop_bits = 1;               // 1 or 2
+  std::string flow_control = "none";         // none, hardware (RTS/CTS), software (XON/XOFF)
+  std::uint32_t retry_ms = 500;              // a lost device is looked for this often, ms
+};
+
+// Command links configured in the file ([links]).
+struct LinksConfig {
+  SerialLinkConfig serial;                   // [links.serial]
+};
+
+// Digital inputs on the Linux GPIO character device ([hardware.gpio]; docs/HARDWARE.md).
+struct GpioConfig {
+  std::string chip;                          // e.g. /dev/gpiochip0; empty = bumpers from the backend
+  std::vector<std::uint32_t> bumper_lines;   // line offsets of the bumpers; bit i of `pressed` = entry i
+  std::vector<std::uint32_t> input_lines;    // further digital inputs (generic), line offsets
+  bool active_low = true;                    // a line reads 0 (low) when its contact is closed
+  std::uint32_t debounce_us = 0;             // kernel debounce period, µs (0 = none)
+  int line = 0;                              // line of chip in the file, for errors
+};
+
 struct Config {
   std::string source = "(defaults)";         // file the configuration came from
   KernelConfig kernel;
@@ -152,6 +181,8 @@ struct Config {
   PanTiltConfig ptu;
   GateConfig gate;
   DoorsConfig doors;
+  LinksConfig links;                         // [links.serial]
+  GpioConfig gpio;                           // [hardware.gpio]
   std::vector<ProcessOverride> processes;    // [process.NAME] tables
   std::optional<std::vector<std::string>> enabled_modules;  // [modules] enabled; none = all
 };

@@ -137,6 +137,8 @@ struct LinkStatus {
   std::uint32_t stop_seq = 0;           // immediate stop bytes received
   std::uint32_t reenable_seq = 0;       // re-enable requests (XR)
   std::uint32_t links_open = 0;         // links with a client attached
+  std::uint32_t devices_lost = 0;       // serial devices lost (hang-up, I/O error, node removed), count
+  std::uint32_t devices_back = 0;       // serial devices re-opened after a loss, count
 };
 
 // Modes switched from the link (Ap/Ag, AG/AT, Ad/Af).

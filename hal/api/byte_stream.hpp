@@ -29,6 +29,9 @@ class ByteStream {
   virtual bool reopen() = 0;
   // True while a peer is attached and the stream is usable.
   virtual bool connected() const = 0;
+  // Why a device was last lost, for logs ("hung up", "Input/output error"…); null when the
+  // stream has no device that can be lost (a pty client leaving is not a loss).
+  virtual const char* loss_reason() const { return nullptr; }
 };
 
 }  // namespace robuter::hal

@@ -6,8 +6,9 @@
 #include <cstdio>
 
 #include "hal/link/pty_link.hpp"
-#include "hal/link/serial_link.hpp"
 #include "hal/link/stdio_link.hpp"
+#include "hal/linux/gpio_lines.hpp"
+#include "hal/linux/serial_stream.hpp"
 #include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "modules/firmware/process_table.hpp"
@@ -19,7 +20,6 @@
 #include "modules/gate/gate_module.hpp"
 #include "modules/ptu/ptu_module.hpp"
 #include "modules/ptu/ptu_settings.hpp"
-#include "modules/ptu/unit_port.hpp"
 #include "modules/serial/serial_module.hpp"
 #include "modules/us/ultrasonic.hpp"
 
@@ -37,6 +37,17 @@ class TickLimit final : public Process {
  private:
   std::uint64_t ticks_;  // ticks to run, then stop
 };
+// The line settings of a serial port from its (validated) configuration words.
+hal::SerialSettings line_settings(std::uint32_t baud, const std::string& parity, std::uint32_t stop_bits,
+                                  const std::string& flow, std::uint32_t retry_ms) {
+  hal::SerialSettings s;
+  s.baud = baud;
+  hal::parse_parity(parity, s.parity);
+  hal::parse_flow_control(flow, s.flow);
+  s.stop_bits = stop_bits;
+  s.retry_ms = retry_ms;
+  return s;
+}
 }  // namespace
 
 Firmware::Firmware(const Config& cfg, const FirmwareOptions& opt) : cfg_(cfg), opt_(opt) {}
@@ -64,11 +75,16 @@ std::optional<std::string> Firmware::setup() {
     if (pty->error()) return *pty->error();
     links_.push_back(std::move(pty));
   }
-  if (!opt_.serial_device.empty()) {
-    if (!hal::SerialLink::valid_baud(opt_.baud)) return fmt::format("--baud {}: not a supported rate", opt_.baud);
-    auto s = std::make_unique<hal::SerialLink>(opt_.serial_device, opt_.baud);
-    if (s->error()) return *s->error();
-    links_.push_back(std::move(s));
+  // The serial command link: [links.serial], --serial and --baud override (docs/HARDWARE.md).
+  const auto& ls = cfg_.links.serial;
+  const std::string& serial_device = opt_.serial_device.empty() ? ls.device : opt_.serial_device;
+  if (!serial_device.empty()) {
+    hal::SerialSettings s = line_settings(ls.baud, ls.parity, ls.stop_bits, ls.flow_control, ls.retry_ms);
+    if (opt_.baud != 0) s.baud = opt_.baud;
+    if (!hal::valid_baud(s.baud)) return fmt::format("--baud {}: not a supported rate", s.baud);
+    auto l = std::make_unique<hal::SerialStream>(serial_device, s, "serial " + serial_device);
+    if (l->error()) return "serial link: " + *l->error();
+    links_.push_back(std::move(l));
   }
   if (opt_.stdio) links_.push_back(std::make_unique<hal::StdioLink>());
   std::vector<hal::ByteStream*> streams;
@@ -86,14 +102,23 @@ std::optional<std::string> Firmware::setup() {
   // The pan-tilt unit's port (after the emulator's pty exists, so its path can be opened).
   const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.port : opt_.ptu_port;
   if (!ptu_port.empty()) {
-    auto link = std::make_unique<ptu::UnitPort>(ptu_port, cfg_.ptu.baud);
-    if (!link->error().empty()) return "pan-tilt port: " + link->error();
+    const auto& p = cfg_.ptu;
+    auto link = std::make_unique<hal::SerialStream>(
+        ptu_port, line_settings(p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms), "pan-tilt " + ptu_port);
+    if (link->error()) return "pan-tilt port: " + *link->error();
     ptu_link_ = std::move(link);
   }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
     return "--picture " + opt_.picture + ": expected a .png or .svg file";
   auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
-  auto emergency = std::make_unique<EmergencyModule>(bb_, sim_->bumpers(), cfg_.emergency, cfg_.robot);
+  // Bumpers on GPIO lines when [hardware.gpio] names a chip; a missing chip stops start-up.
+  if (!cfg_.gpio.chip.empty()) {
+    gpio_ = std::make_unique<hal::GpioLines>(cfg_.gpio.chip, cfg_.gpio.bumper_lines, cfg_.gpio.input_lines,
+                                             cfg_.gpio.active_low, cfg_.gpio.debounce_us);
+    if (gpio_->error()) return fmt::format("{}:{}: {}", cfg_.source, cfg_.gpio.line, *gpio_->error());
+  }
+  hal::Bumpers& bumpers = gpio_ && !cfg_.gpio.bumper_lines.empty() ? static_cast<hal::Bumpers&>(*gpio_) : sim_->bumpers();
+  auto emergency = std::make_unique<EmergencyModule>(bb_, bumpers, cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));

@@ -14,6 +14,9 @@
 #include "modules/topics.hpp"
 
 namespace robuter {
+namespace hal {
+class GpioLines;
+}
 
 class HeartbeatModule;
 class SerialModule;
@@ -25,7 +28,7 @@ struct FirmwareOptions {
   double speed = 1.0;                 // simulated seconds per second; 0 = as fast as possible
   std::vector<std::string> ptys;      // pty links to create (symbolic link paths)
   std::string serial_device;          // serial link device, empty = none
-  unsigned baud = 9600;               // serial link rate, bit/s
+  unsigned baud = 0;                  // serial link rate, bit/s (0: [links.serial] baud)
   bool stdio = false;                 // serve a link on standard input/output
   std::uint64_t ticks = 0;            // stop after this many ticks (0 = run until stopped)
   std::string ptu_pty;                // pan-tilt emulator's pty (symbolic link path), empty = none
@@ -61,6 +64,7 @@ class Firmware {
   std::unique_ptr<Clock> clock_;
   std::unique_ptr<hal::SimRobot> sim_;
   std::vector<std::unique_ptr<hal::ByteStream>> links_;
+  std::unique_ptr<hal::GpioLines> gpio_;             // bumpers and inputs on GPIO, when configured
   std::unique_ptr<hal::ByteStream> ptu_link_;        // the pan-tilt unit's port, when configured
   std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
   std::unique_ptr<Kernel> kernel_;

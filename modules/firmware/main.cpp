@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
   app.add_flag("--odometry-noise", opt.sim_options.odometry_noise, "simulate encoder noise and wheel slip");
   app.add_flag("--sonar-noise", opt.sim_options.sonar_noise, "simulate sonar noise, drop-outs and spurious echoes");
   app.add_option("--pty", opt.ptys, "serve a link on a new pty; PATH becomes a symbolic link to it (repeatable)");
-  app.add_option("--serial", opt.serial_device, "serve a link on a serial device (8N1)");
-  app.add_option("--baud", opt.baud, "serial link rate, bit/s");
+  app.add_option("--serial", opt.serial_device, "serve a link on a serial device (overrides [links.serial] device; re-opened when it comes back)");
+  app.add_option("--baud", opt.baud, "serial link rate, bit/s (overrides [links.serial] baud, default 9600)");
   app.add_flag("--stdio", opt.stdio, "serve a link on standard input/output");
   app.add_option("--ptu-pty", opt.ptu_pty, "serve the simulated pan-tilt unit (PTU-46 protocol) on a new pty; PATH becomes a symbolic link to it");
   app.add_option("--ptu-port", opt.ptu_port, "the pan-tilt unit's serial device for the PTU module (overrides [ptu] port); with --sim, the --ptu-pty path");

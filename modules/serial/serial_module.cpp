@@ -34,15 +34,36 @@ void SerialModule::flush(Link& l) {
   }
 }
 
+// A device that went away is logged with its reason and counted (LinkStatus), apart from a
+// client that merely left its pty.
+void SerialModule::note_closed(Link& l) {
+  const hal::ByteStream& s = *l.stream;
+  const char* why = s.loss_reason();
+  if (why == nullptr) {
+    log::info("serial: client left {}", s.name());
+    return;
+  }
+  log::warn("serial: {} lost ({}); looking for it again", s.name(), why);
+  writers_.status.modify([](LinkStatus& st) { ++st.devices_lost; });
+  l.lost_device = true;
+}
+
 void SerialModule::serve(Kernel& k, Link& l) {
   hal::ByteStream& s = *l.stream;
   if (!s.connected()) {
-    if (l.watched_fd >= 0) {
+    if (l.watched_fd >= 0) {  // closed while writing
+      note_closed(l);
       k.unwatch_fd(l.watched_fd);
       l.watched_fd = -1;
     }
-    if (!s.reopen()) return;  // cheap for a pty; a serial device rate-limits its own retries
-    log::info("serial: client attached on {}", s.name());
+    if (!s.reopen()) return;  // cheap for a pty; a serial device is looked for off this path
+    if (l.lost_device) {
+      log::info("serial: {} is back", s.name());
+      writers_.status.modify([](LinkStatus& st) { ++st.devices_back; });
+      l.lost_device = false;
+    } else {
+      log::info("serial: client attached on {}", s.name());
+    }
     l.codec.reset();
     l.out.clear();
     l.in_len = l.in_pos = 0;
@@ -55,7 +76,7 @@ void SerialModule::serve(Kernel& k, Link& l) {
     if (l.in_pos == l.in_len) {
       const hal::IoResult r = s.read(l.in);
       if (r.closed) {
-        log::info("serial: client left {}", s.name());
+        note_closed(l);
         k.unwatch_fd(l.watched_fd);
         l.watched_fd = -1;
         return;

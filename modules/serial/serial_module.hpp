@@ -37,10 +37,13 @@ class SerialModule final : public Process {
     std::array<std::uint8_t, kReadChunk> in{};  // bytes read, not yet fed
     std::size_t in_len = 0, in_pos = 0;         // unfed bytes are in[in_pos, in_len)
     int watched_fd = -1;                        // descriptor that wakes the kernel, -1 none
+    bool lost_device = false;                   // the device went away (not a client leaving)
   };
 
   // Serves one link: attach/detach, flush, read, answer, flush.
   void serve(Kernel& k, Link& l);
+  // Logs and counts a link that closed (device lost or client gone).
+  void note_closed(Link& l);
   // Writes queued replies as far as the transport takes them.
   void flush(Link& l);
 
