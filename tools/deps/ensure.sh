@@ -13,8 +13,11 @@ done
 if [[ $(id -u) -eq 0 ]]; then
   echo "deps: installing ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  # A foreign architecture's index that fails to download (mirror sync) must not stop the install.
+  apt-get update -qq || echo "deps: apt-get update reported errors; installing from the indexes there are" >&2
+  # --no-remove: never take away an installed package to make room (a target -dev package that
+  # is not co-installable with the host's, e.g. libserial-dev:arm64, would replace it).
+  apt-get install -y -qq --no-install-recommends --no-remove "${missing[@]}"
 else
   echo "deps: missing Debian packages. Install them with:" >&2
   echo "  sudo apt-get install ${missing[*]}" >&2
