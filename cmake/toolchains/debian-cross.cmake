@@ -22,16 +22,7 @@ set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE BOTH)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
 
 # pkgconf's per-triplet personality looks in /usr/lib/<triplet>/pkgconfig and /usr/share/pkgconfig.
-# A development package Debian does not let us co-install with the host's (libserial-dev has no
-# Multi-Arch) is unpacked by tools/deps/cross.sh into build-<triplet>/cross-root; its .pc files
-# come first.
 set(PKG_CONFIG_EXECUTABLE /usr/bin/${ROBUTER_CROSS_TRIPLET}-pkg-config CACHE FILEPATH "pkg-config for the target")
-if(DEFINED ENV{ROBUTER_CROSS_ROOT})
-  set(ROBUTER_CROSS_ROOT $ENV{ROBUTER_CROSS_ROOT} CACHE PATH "unpacked target -dev packages (tools/deps/cross.sh)")
-endif()
-if(ROBUTER_CROSS_ROOT)
-  set(ENV{PKG_CONFIG_PATH} "${ROBUTER_CROSS_ROOT}/pkgconfig")
-endif()
 
 # qemu-user runs the target's programs with "/" as the prefix: the loader and every library come
 # from the multiarch packages (libc6:<arch> …) the target -dev packages pulled in. Not
