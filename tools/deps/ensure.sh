@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # Installs the missing Debian packages named in the given lists (as root), or says exactly what to install.
 set -euo pipefail
+native=$(dpkg --print-architecture)
 missing=()
 for list in "$@"; do
   while read -r pkg; do
     [[ -z "$pkg" || "$pkg" == \#* ]] && continue
-    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
-    [[ "$status" == "install ok installed" ]] || missing+=("$pkg")
+    # One line per installed architecture: a name without ":arch" is the host's (or an
+    # architecture-independent) package, whatever foreign-architecture copies are installed too.
+    want=$native; [[ "$pkg" == *:* ]] && want=${pkg##*:}
+    dpkg-query -W -f='${Architecture} ${Status}\n' "$pkg" 2>/dev/null |
+      grep -Eq "^($want|all) install ok installed$" || missing+=("$pkg")
   done < "$list"
 done
 [[ ${#missing[@]} -eq 0 ]] && exit 0
