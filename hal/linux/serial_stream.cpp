@@ -2,6 +2,8 @@
 #include "hal/linux/serial_stream.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <termios.h>
 #include <unistd.h>
@@ -126,6 +128,10 @@ bool SerialStream::reopen() {
 // output to drain; neither belongs on the periodic path. One wake-up per retry_ms bounds the
 // rate of open attempts and of path checks.
 void SerialStream::helper() {
+  // Signals (SIGINT/SIGTERM) go to the kernel's thread, whose idle wait they must interrupt.
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, nullptr);
   const auto period = std::chrono::milliseconds(settings_.retry_ms);
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stop_) {

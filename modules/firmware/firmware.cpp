@@ -78,7 +78,7 @@ std::optional<std::string> Firmware::setup() {
   // The serial command link: [links.serial], --serial and --baud override (docs/HARDWARE.md).
   const auto& ls = cfg_.links.serial;
   const std::string& serial_device = opt_.serial_device.empty() ? ls.device : opt_.serial_device;
-  if (!serial_device.empty()) {
+  if (!serial_device.empty() && opt_.open_devices) {
     hal::SerialSettings s = line_settings(ls.baud, ls.parity, ls.stop_bits, ls.flow_control, ls.retry_ms);
     if (opt_.baud != 0) s.baud = opt_.baud;
     if (!hal::valid_baud(s.baud)) return fmt::format("--baud {}: not a supported rate", s.baud);
@@ -101,7 +101,7 @@ std::optional<std::string> Firmware::setup() {
   stepper->set_ptu_sweep(opt_.ptu_sweep);
   // The pan-tilt unit's port (after the emulator's pty exists, so its path can be opened).
   const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.port : opt_.ptu_port;
-  if (!ptu_port.empty()) {
+  if (!ptu_port.empty() && opt_.open_devices) {
     const auto& p = cfg_.ptu;
     auto link = std::make_unique<hal::SerialStream>(
         ptu_port, line_settings(p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms), "pan-tilt " + ptu_port);
@@ -112,7 +112,7 @@ std::optional<std::string> Firmware::setup() {
     return "--picture " + opt_.picture + ": expected a .png or .svg file";
   auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
   // Bumpers on GPIO lines when [hardware.gpio] names a chip; a missing chip stops start-up.
-  if (!cfg_.gpio.chip.empty()) {
+  if (!cfg_.gpio.chip.empty() && opt_.open_devices) {
     gpio_ = std::make_unique<hal::GpioLines>(cfg_.gpio.chip, cfg_.gpio.bumper_lines, cfg_.gpio.input_lines,
                                              cfg_.gpio.active_low, cfg_.gpio.debounce_us);
     if (gpio_->error()) return fmt::format("{}:{}: {}", cfg_.source, cfg_.gpio.line, *gpio_->error());

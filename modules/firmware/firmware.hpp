@@ -35,6 +35,7 @@ struct FirmwareOptions {
   std::string ptu_port;               // the pan-tilt unit's port for the PTU module (overrides [ptu] port)
   bool ptu_sweep = false;             // built-in pan-tilt sweep and channel-7 firing (no PTU module)
   std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
+  bool open_devices = true;           // open serial devices and GPIO chips (false: --check-config)
 };
 
 class Firmware {

@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   }
   log::set_level(level);
   if (check_only) opt.sim = true;  // validate the table as the simulator would compose it
+  if (check_only) opt.open_devices = false;  // a robot's configuration checks on any machine
 
   // Start-up: everything is allocated here, before the periodic path runs.
   Firmware fw(cfg, opt);
