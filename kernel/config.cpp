@@ -295,11 +295,30 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
                                                    cells, p.footprint, limit));
 }
 
+// The [demo] section (docs/DOORS.md): the seed's dem.h constants as defaults.
+void bind_demo(Binder& b, DemoConfig& d) {
+  b.boolean("demo.enabled", d.enabled);
+  b.integer("demo.distx_mm", d.distx_mm, 100, 10'000);
+  b.integer("demo.disty_mm", d.disty_mm, 100, 10'000);
+  b.integer("demo.raio_mm", d.raio_mm, 400, 10'000);
+  b.integer("demo.straight_mm", d.straight_mm, 0, 100'000);
+  b.integer("demo.lane_mm", d.lane_mm, 0, 100'000);
+  b.integer("demo.speed_cm_s", d.speed_cm_s, 1, 100);
+  b.integer("demo.slow_cm_s", d.slow_cm_s, 1, 100);
+  b.integer("demo.align_cm_s", d.align_cm_s, 1, 100);
+  b.integer("demo.sensor_a", d.sensor_a, 1, 24);
+  b.integer("demo.sensor_b", d.sensor_b, 1, 24);
+  b.integer("demo.front_sensor", d.front_sensor, 1, 24);
+  b.integer("demo.align_tolerance_mm", d.align_tolerance_mm, 1, 1000);
+  b.integer("demo.laps", d.laps, 0, 1'000'000);
+  b.integer("demo.calibration_timeout_ticks", d.calibration_timeout_ticks, 0, 10'000'000);
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "process", "modules", "links", "hardware"})
+                        "demo", "process", "modules", "links", "hardware"})
     b.table(t);
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
@@ -334,6 +353,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   bind_doors(b, c.ptu, c.gate, c.doors);
   bind_links(b, c.links);
   bind_gpio(b, root, c.gpio);
+  bind_demo(b, c.demo);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

@@ -170,6 +170,25 @@ struct GpioConfig {
   int line = 0;                              // line of chip in the file, for errors
 };
 
+// The demonstration course (seed dem.c, annex A; docs/DOORS.md).
+struct DemoConfig {
+  bool enabled = false;                      // drive the course from start-up
+  std::uint32_t distx_mm = 1200;             // front sensor to the front box when calibrated (DISTX 12000 × 0.1 mm)
+  std::uint32_t disty_mm = 1000;             // side sensors to the calibration boxes on the lane (DISTY)
+  std::uint32_t raio_mm = 1000;              // radius of the half-circles (RAIO)
+  std::uint32_t straight_mm = 2500;          // the straight leg after the recalibration point
+  std::uint32_t lane_mm = 2100;              // the lane driven back before calibrating
+  std::uint32_t speed_cm_s = 20;             // cruising wheel speed
+  std::uint32_t slow_cm_s = 10;              // approach and calibration circle speed
+  std::uint32_t align_cm_s = 1;              // the turning wheel while aligning
+  std::uint32_t sensor_a = 17;               // side sensors that must read alike (seed text: 17 and 19)
+  std::uint32_t sensor_b = 19;               // the other one (seed text: 19)
+  std::uint32_t front_sensor = 1;            // the sensor that measures DISTX
+  std::uint32_t align_tolerance_mm = 5;      // side readings this close count as alike
+  std::uint32_t laps = 6;                    // laps, then stop (seed: n > 5); 0 = for ever
+  std::uint32_t calibration_timeout_ticks = 6000;  // align + advance longer than this: failed no-landmark, ticks (0: no limit)
+};
+
 struct Config {
   std::string source = "(defaults)";         // file the configuration came from
   KernelConfig kernel;
@@ -183,6 +202,7 @@ struct Config {
   DoorsConfig doors;
   LinksConfig links;                         // [links.serial]
   GpioConfig gpio;                           // [hardware.gpio]
+  DemoConfig demo;
   std::vector<ProcessOverride> processes;    // [process.NAME] tables
   std::optional<std::vector<std::string>> enabled_modules;  // [modules] enabled; none = all
 };

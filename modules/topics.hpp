@@ -190,6 +190,7 @@ enum class ModeState : std::uint8_t {
   crossed,    // doors: done
   failed,     // ended without success: see the reason
   running,    // demonstration: driving the course
+  finished,   // demonstration: every lap driven, stopped (done)
 };
 
 // Why a mode failed or ended.
@@ -210,6 +211,7 @@ enum class ModeReason : std::uint8_t {
   link_lost,      // doors: every command link closed
   timeout,        // doors: the crossing took longer than its limit
   shutdown,       // the firmware stopped
+  no_landmark,    // demonstration: the calibration boxes were not found in time
 };
 
 // A mode module's report.
@@ -272,6 +274,18 @@ struct PlannerMapWindow {
   std::uint64_t tick = 0;       // tick of the rendering
 };
 
+// The demonstration course's report (seed dem.c; [demo] enabled).
+struct DemoStatus {
+  ModeState state = ModeState::off;  // off (not enabled), running, finished, failed
+  ModeReason reason = ModeReason::none;  // why it failed (no_landmark, shutdown), else none
+  std::uint8_t phase = 0;            // demo::Phase as a number (wait, out, turn, lane, align, advance, circle, done, failed)
+  std::uint32_t laps = 0;            // laps completed (each ends at the recalibration point)
+  std::int32_t side_mm = 0;          // last calibration: side sensors to the boxes (ERRO), mm
+  std::int32_t radius_mm = 0;        // the half-circle radius that reading gave, mm
+  std::uint64_t lap_tick = 0;        // tick the last lap ended
+  std::uint64_t tick = 0;            // tick of the report
+};
+
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
 struct Blackboard {
   Topic<Heartbeat, HeartbeatModule> heartbeat;
@@ -305,6 +319,8 @@ struct Blackboard {
   Topic<ModeStatus, GateModule> gate_status;
   Topic<MotionRequest, DoorsModule> doors_motion;
   Topic<ModeStatus, DoorsModule> doors_status;
+  Topic<MotionRequest, DemoModule> demo_motion;
+  Topic<DemoStatus, DemoModule> demo_status;
 };
 
 }  // namespace robuter

@@ -16,6 +16,7 @@
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
 #include "modules/planner/planner_module.hpp"
+#include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/gate/gate_module.hpp"
 #include "modules/ptu/ptu_module.hpp"
@@ -127,6 +128,9 @@ std::optional<std::string> Firmware::setup() {
   emergency->add_motion_source(MotionSource::gate, bb_.gate_motion.reader());
   emergency->add_motion_source(MotionSource::doors, bb_.doors_motion.reader());
   gate->set_emergency(emergency.get());
+  auto demo = std::make_unique<DemoModule>(bb_, cfg_);
+  emergency->add_motion_source(MotionSource::demo, bb_.demo_motion.reader());
+  demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
   planner->set_emergency(emergency.get());
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
@@ -137,7 +141,8 @@ std::optional<std::string> Firmware::setup() {
                                   {"serial", serial.get()},        {"us", us.get()},
                                   {"emergency", emergency.get()},  {"executor", executor.get()},
                                   {"planner", planner.get()},      {"ptu", ptu.get()},
-                                  {"gate", gate.get()},            {"doors", doors.get()}};
+                                  {"gate", gate.get()},            {"doors", doors.get()},
+                                  {"demo", demo.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   processes_.push_back(std::move(stepper));
@@ -150,6 +155,7 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(ptu));
   processes_.push_back(std::move(gate));
   processes_.push_back(std::move(doors));
+  processes_.push_back(std::move(demo));
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
     table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});

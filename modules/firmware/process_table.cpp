@@ -23,6 +23,7 @@ constexpr DefaultRow kDefaults[] = {
     {"ptu", 1, 0, 2, 1000},         // pan-tilt unit: polled every 30 ms (seed), each 5° firing at its nearest tick
     {"gate", 2, 1, 1, 2000},        // passage finder (AG/AT): manoeuvre control every 20 ms
     {"doors", 5, 3, 1, 2000},       // door crossing (Ad/Af): steering every 50 ms
+    {"demo", 5, 4, 1, 1000},        // demonstration course ([demo] enabled): every 50 ms
 };
 }  // namespace
 

@@ -23,6 +23,7 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       pan_tilt_status_(bb.pan_tilt_status.reader()),
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
+      demo_status_(bb.demo_status.reader()),
       goal_out_(bb.planner_goal.writer()),
       cfg_(cfg) {}
 
@@ -353,6 +354,7 @@ std::string_view state_word(ModeState s) {
     case ModeState::crossed: return "crossed";
     case ModeState::failed: return "failed";
     case ModeState::running: return "running";
+    case ModeState::finished: return "finished";
   }
   return "off";
 }
@@ -374,6 +376,7 @@ std::string_view reason_word(ModeReason r) {
     case ModeReason::link_lost: return "link-lost";
     case ModeReason::timeout: return "timeout";
     case ModeReason::shutdown: return "shutdown";
+    case ModeReason::no_landmark: return "no-landmark";
   }
   return "none";
 }
@@ -381,11 +384,17 @@ protocol::ModeWords words(const Reader<ModeStatus>& r) {
   if (r.generation() == 0) return {"absent", "none"};
   return {state_word(r.peek().state), reason_word(r.peek().reason)};
 }
+// The demonstration's phase (demo::Phase as a number) as a stable word.
+std::string_view phase_word(std::uint8_t p) {
+  static constexpr std::string_view kWords[] = {"wait", "out", "turn", "lane", "align", "advance", "circle", "done", "failed"};
+  return p < std::size(kWords) ? kWords[p] : "done";
+}
 }  // namespace
 
 // XD: a module that is not running reads "absent"; unavailable only when none of them runs.
 PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
-  if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0)
+  if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0 &&
+      demo_status_.generation() == 0)
     return PortResult::unavailable;
   out.pan_tilt = words(pan_tilt_status_);
   out.gate = words(gate_status_);
@@ -393,6 +402,15 @@ PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
   out.sweeps = pan_tilt_scan_.peek().sweeps;
   out.width_mm = gate_status_.peek().width_mm;
   out.crossing_ticks = doors_status_.peek().duration_ticks;
+  if (demo_status_.generation() == 0) {
+    out.demo = {"absent", "none"};
+    out.demo_phase = "none";
+  } else {
+    const DemoStatus& d = demo_status_.peek();
+    out.demo = {state_word(d.state), reason_word(d.reason)};
+    out.demo_phase = d.state == ModeState::off ? "none" : phase_word(d.phase);
+    out.demo_laps = d.laps;
+  }
   return PortResult::ok;
 }
 

@@ -73,7 +73,7 @@ class LinkPort final : public protocol::RobotPort {
   protocol::PortResult cancel_goal() noexcept override;
   protocol::PortResult planner_status(protocol::PlannerReport& out) const noexcept override;
   protocol::PortResult planner_map(protocol::MapWindow& out) const noexcept override;
-  // pan-tilt, passage finder, door crossing (XD)
+  // pan-tilt, passage finder, door crossing, demonstration (XD)
   protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
 
  private:
@@ -94,6 +94,7 @@ class LinkPort final : public protocol::RobotPort {
   Reader<ModeStatus> pan_tilt_status_;
   Reader<ModeStatus> gate_status_;
   Reader<ModeStatus> doors_status_;
+  Reader<DemoStatus> demo_status_;
   Writer<PlannerGoal> goal_out_;           // this port owns the planner's goal topic
   const Config& cfg_;
   Kernel* kernel_ = nullptr;

@@ -50,7 +50,7 @@ enum class CommandId : std::uint8_t {
   cancel_goal,             // XH
   get_planner_status,      // XP
   get_planner_map,         // XM
-  get_modes,               // XD (pan-tilt, gate, doors)
+  get_modes,               // XD (pan-tilt, gate, doors, demo)
 };
 
 }  // namespace robuter::protocol

@@ -87,7 +87,7 @@ constexpr std::array kTable = {
                "planner status"},
     CommandRow{'X', 'M', C::get_planner_map, no_params(), handle_get_planner_map,
                "planner map around the robot"},
-    CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate and door-crossing states"},
+    CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate, door-crossing and demonstration states"},
 };
 
 }  // namespace

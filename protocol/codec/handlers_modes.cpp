@@ -1,10 +1,11 @@
-// Handler of XD: the pan-tilt scanner's, passage finder's and door crossing's states.
+// Handler of XD: the pan-tilt scanner's, passage finder's, door crossing's and demonstration's states.
 #include "protocol/codec/handlers.hpp"
 
 namespace robuter::protocol {
 
 // XD → `D <pantilt> <reason> <gate> <reason> <doors> <reason> <sweeps> <width-mm> <cross-ticks>
-// <clock>`: states and reasons are single words from the port.
+// <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words from
+// the port (the demonstration's words come after the older fields, so readers of those keep working).
 void handle_get_modes(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   ModesReport r;
   const PortResult res = port.modes(r);
@@ -20,6 +21,10 @@ void handle_get_modes(const Command&, RobotPort& port, ReplyWriter& out) noexcep
   out.field(r.sweeps);
   out.field(r.width_mm);
   out.field(r.crossing_ticks);
+  out.word(r.demo.state);
+  out.word(r.demo.reason);
+  out.word(r.demo_phase);
+  out.field(r.demo_laps);
   out.field(port.clock());
 }
 

@@ -95,7 +95,7 @@ struct ModeWords {
   std::string_view reason = "none"; // none, or why the mode failed (unit-silent, no-passage, cant-cross, …)
 };
 
-// The pan-tilt scanner, passage finder and door crossing for XD.
+// The pan-tilt scanner, passage finder, door crossing and demonstration for XD.
 struct ModesReport {
   ModeWords pan_tilt;               // the scanner (Ap / Ag)
   ModeWords gate;                   // the passage finder (AG / AT)
@@ -103,6 +103,9 @@ struct ModesReport {
   std::int64_t sweeps = 0;          // pan-tilt passes completed since start
   std::int64_t width_mm = 0;        // passage width the finder estimated, mm (0: none)
   std::int64_t crossing_ticks = 0;  // length of the last door crossing, ticks (0: none)
+  ModeWords demo;                   // the demonstration course ([demo] enabled): off, running, finished, failed
+  std::string_view demo_phase = "none";  // its phase: wait, out, turn, lane, align, advance, circle, done, failed (none: off)
+  std::int64_t demo_laps = 0;       // laps it has completed
 };
 
 // What the grid planner is doing (XP).

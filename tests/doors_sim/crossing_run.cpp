@@ -47,10 +47,10 @@ std::string moved_world(const std::string& file, double dx, double dy, double dh
 // XD's words for a state and a reason.
 std::string words(const ModeStatus& s) {
   static const char* states[] = {"off", "starting", "scanning", "searching", "moving", "aligned", "crossing",
-                                 "waiting", "leaving", "crossed", "failed", "running"};
+                                 "waiting", "leaving", "crossed", "failed", "running", "finished"};
   static const char* reasons[] = {"none", "no-unit", "unit-silent", "unit-garbage", "unit-refused", "unit-lost",
                                   "no-passage", "cannot-align", "cant-cross", "emergency", "operator", "scanner",
-                                  "cancelled", "link-lost", "timeout", "shutdown"};
+                                  "cancelled", "link-lost", "timeout", "shutdown", "no-landmark"};
   std::string w = states[static_cast<int>(s.state)];
   if (s.state == ModeState::failed) w += std::string(" ") + reasons[static_cast<int>(s.reason)];
   return w;
@@ -60,7 +60,7 @@ std::string mode_end(const ModeStatus& s, const char* ok) {
   if (s.state == ModeState::failed) {
     static const char* names[] = {"none", "no-unit", "unit-silent", "unit-garbage", "unit-refused", "unit-lost",
                                   "no-passage", "cannot-align", "cant-cross", "emergency", "operator", "scanner",
-                                  "cancelled", "link-lost", "timeout", "shutdown"};
+                                  "cancelled", "link-lost", "timeout", "shutdown", "no-landmark"};
     return std::string("failed ") + names[static_cast<int>(s.reason)];
   }
   return ok;

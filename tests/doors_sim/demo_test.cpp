@@ -1,0 +1,119 @@
+// The demonstration course on the whole simulated firmware in worlds/seed002_course.toml: laps
+// with their three-phase calibration, odometry noise on; the true pose at every recalibration
+// point against where it should be (5.0 m, 1.6 m, 180°) — the end-of-lap error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "tests/support/sim_firmware.hpp"
+
+namespace robuter {
+namespace {
+
+struct LapError {
+  double position_mm;  // distance from the recalibration point, mm
+  double heading_deg;  // heading error, degrees
+};
+
+// Runs `laps` laps; the error of each lap's end. Contact or an emergency ends the run early.
+// `xd`: the XD reply once the laps are done and the robot has had 1 s to stop.
+std::vector<LapError> run_laps(std::uint32_t laps, bool odometry_noise, std::uint64_t seed, bool* contact, std::string* xd) {
+  Config cfg;
+  cfg.demo.enabled = true;
+  cfg.demo.laps = laps;
+  hal::SimOptions sim;
+  sim.odometry_noise = odometry_noise;
+  sim.seed = seed;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed002_course.toml", cfg, sim);
+  EXPECT_TRUE(fw.ok()) << fw.error();
+  std::vector<LapError> out;
+  *contact = false;
+  fw.set_tick_observer([&] { *contact = *contact || fw.sim().robot().bumper(); });
+  std::uint32_t seen = 0;
+  for (int i = 0; i < 200 * 100 * static_cast<int>(laps) && seen < laps; ++i) {
+    fw.step();
+    if (i % 1000 == 0) fw.ask("BC");  // a client keeps the link alive
+    const DemoStatus& d = fw.bb().demo_status.reader().peek();
+    if (d.laps > seen) {
+      seen = d.laps;
+      const auto& p = fw.sim().robot().pose();
+      const double dh = std::remainder(p.theta * 180.0 / M_PI - 180.0, 360.0);
+      out.push_back({1000.0 * std::hypot(p.x - 5.0, p.y - 1.6), dh});
+      std::printf("lap %u: end (%.3f m, %.3f m, %.1f°): %.0f mm, %.2f° from the recalibration point (side %d mm, circle %d mm)\n",
+                  d.laps, p.x, p.y, p.theta * 180.0 / M_PI, out.back().position_mm, out.back().heading_deg, d.side_mm,
+                  d.radius_mm);
+    }
+    if (fw.bb().emergency.reader().peek().latched) break;
+  }
+  fw.run_ticks(100);
+  *xd = fw.ask("XD").value_or("");
+  EXPECT_EQ(fw.sim().robot().wheel_speeds().left, 0.0);
+  EXPECT_EQ(fw.sim().robot().wheel_speeds().right, 0.0);
+  return out;
+}
+
+// Laps from `seed`: all done without contact, each end within the bounds; prints the figures.
+void check_laps(std::uint32_t laps, bool noise, std::uint64_t seed, double max_mm, double max_deg) {
+  bool contact = false;
+  std::string xd;
+  const std::vector<LapError> e = run_laps(laps, noise, seed, &contact, &xd);
+  ASSERT_EQ(e.size(), laps);
+  EXPECT_FALSE(contact);
+  double worst = 0.0, sum = 0.0, worst_deg = 0.0;
+  for (const LapError& l : e) {
+    worst = std::max(worst, l.position_mm);
+    worst_deg = std::max(worst_deg, std::abs(l.heading_deg));
+    sum += l.position_mm;
+    EXPECT_LT(l.position_mm, max_mm);
+    EXPECT_LT(std::abs(l.heading_deg), max_deg);
+  }
+  EXPECT_NE(xd.find(" finished none done " + std::to_string(laps) + " "), std::string::npos) << xd;
+  std::printf("end-of-lap error%s (seed %llu): mean %.0f mm, worst %.0f mm, worst heading %.1f° over %zu laps\n",
+              noise ? " with odometry noise" : "", static_cast<unsigned long long>(seed), sum / static_cast<double>(e.size()),
+              worst, worst_deg, e.size());
+}
+
+// Five laps (the figure) with encoder noise, slip, scale and wheel-base errors, from two
+// seeds: every lap ends back on the recalibration point, the error does not grow from lap to lap
+// (the calibration resets it), and the module then stops and says so (XD: finished).
+TEST(Demo, FiveLapsWithOdometryNoiseEndOnTheRecalibrationPoint) {
+  check_laps(5, true, 7, 120.0, 5.0);
+  check_laps(5, true, 11, 120.0, 5.0);
+}
+
+TEST(Demo, LapsWithExactOdometry) { check_laps(2, false, 1, 40.0, 2.0); }
+
+// Without the calibration boxes the course cannot calibrate: it stops within the limit, the
+// robot stands still and XD says why.
+TEST(Demo, MissingBoxesEndInNoLandmark) {
+  std::ifstream in(ROBUTER_WORLDS_DIR "/seed002_course.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string w = text.str();
+  for (std::size_t at; (at = w.find("[[box]]")) != std::string::npos;) w.erase(at, w.find("\n\n", at) - at);  // each box table
+  const std::string path = (std::filesystem::temp_directory_path() / ("robuter-demo-" + std::to_string(::getpid()) + ".toml")).string();
+  std::ofstream(path) << w;
+  Config cfg;
+  cfg.demo.enabled = true;
+  cfg.demo.calibration_timeout_ticks = 1500;
+  test::SimFirmware fw(path, cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  std::filesystem::remove(path);
+  const bool ended = fw.run_until([&] { return fw.bb().demo_status.reader().peek().state == ModeState::failed; }, 20000);
+  ASSERT_TRUE(ended);
+  fw.run_ticks(100);
+  EXPECT_EQ(fw.sim().robot().wheel_speeds().left, 0.0);
+  EXPECT_EQ(fw.sim().robot().wheel_speeds().right, 0.0);
+  const std::string xd = *fw.ask("XD");
+  EXPECT_NE(xd.find(" failed no-landmark failed 0 "), std::string::npos) << xd;
+}
+
+}  // namespace
+}  // namespace robuter
