@@ -1,5 +1,6 @@
-// Proves the passage finder, the door crossing and the pan-tilt allocate nothing on the periodic
-// path: a whole AG + Ad run through the 90 cm door with the allocation counter armed.
+// Proves the passage finder, the door crossing, the pan-tilt and the demonstration allocate
+// nothing on the periodic path: a whole AG + Ad run through the 90 cm door, and a whole lap of the
+// demonstration course (calibration included), with the allocation counter armed.
 #include <gtest/gtest.h>
 
 #include "tests/support/alloc_counter.hpp"
@@ -35,6 +36,30 @@ TEST(CrossingNoAlloc, AWholeCrossingAllocatesNothing) {
   }
   const auto allocations = counter.count();
   EXPECT_EQ(doors(), ModeState::crossed);
+  EXPECT_EQ(allocations, 0u);
+#endif
+}
+
+TEST(DemoNoAlloc, AWholeLapAllocatesNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  Config cfg;
+  cfg.demo.enabled = true;
+  cfg.demo.laps = 1;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed002_course.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_TRUE(fw.ask("XD"));  // warm the reply path
+  fw.count_lines();
+  auto demo = [&] { return fw.bb().demo_status.reader().peek().state; };
+  test::AllocCounter counter;
+  for (int i = 0; i < 20'000 && demo() == ModeState::running; ++i) {
+    fw.step();
+    if (i % 500 == 0) fw.send_raw("XD\r");
+    fw.count_lines();
+  }
+  const auto allocations = counter.count();
+  EXPECT_EQ(demo(), ModeState::finished);
   EXPECT_EQ(allocations, 0u);
 #endif
 }

@@ -14,6 +14,7 @@
 #include "hal/sim/rng.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/emergency/emergency.hpp"
+#include "tests/doors_sim/crossing_picture.hpp"
 #include "tests/support/sim_firmware.hpp"
 
 namespace robuter::test {
@@ -92,8 +93,18 @@ CrossingResult run_crossing(const CrossingSetup& s) {
       return r;
     }
     r.started = true;
+    // The picture's scans: the last one the finder saw before it ended (the scanner stops and
+    // clears its scan once no mode wants it), then the last one of the crossing.
+    std::vector<ScanSnapshot> snaps(s.picture.empty() ? 0 : 1);
+    auto snapshot = [&](ScanSnapshot& into, const char* label) {
+      into = ScanSnapshot{fw.bb().pan_tilt_scan.reader().peek(), fw.bb().posture.reader().peek(), fw.sim().robot().pose(), label};
+    };
     fw.set_tick_observer([&] {
       if (fw.sim().robot().bumper()) r.contact = true;
+      const ModeState g = fw.bb().gate_status.reader().peek().state;
+      if (snaps.size() == 1 && (g == ModeState::searching || g == ModeState::moving) &&
+          fw.bb().pan_tilt_scan.reader().peek().sweeps > 0)
+        snapshot(snaps[0], "pan-tilt scan the passage finder ended on");
     });
     auto gate = [&] { return fw.bb().gate_status.reader().peek(); };
     auto doors = [&] { return fw.bb().doors_status.reader().peek(); };
@@ -130,7 +141,7 @@ CrossingResult run_crossing(const CrossingSetup& s) {
                       fw.seconds(), q.x, q.y, q.theta * 180 / M_PI, static_cast<int>(doors().state), v.threats.left,
                       v.threats.right, v.entered, v.clear, fw.bb().posture.reader().peek().left,
                       fw.bb().posture.reader().peek().right, v.opening_mm, v.too_narrow ? " NARROW" : "");
-          if (s.trace_every == 1 || std::getenv("ECHOES")) {
+          if (s.trace_every == 1 || s.trace_echoes) {
             ptu::Echoes e;
             const Posture& po = fw.bb().posture.reader().peek();
             ptu::locate_echoes(fw.bb().pan_tilt_scan.reader().peek(), SectorPose{po.x, po.y, po.theta}, fw.kernel().tick(), 600,
@@ -157,6 +168,15 @@ CrossingResult run_crossing(const CrossingSetup& s) {
       }
       r.doors = mode_end(doors(), ended() ? "crossed" : "running");
       r.crossing_s = fw.seconds() - t1;
+      if (!s.picture.empty()) {
+        snaps.emplace_back();
+        snapshot(snaps.back(), ("last pan-tilt scan of the crossing (" + r.doors + ")").c_str());
+        char title[200];
+        std::snprintf(title, sizeof title, "%s, start dx %+.2f m, %+.1f deg: %s (AG %.0f s, Ad %.0f s)",
+                      std::filesystem::path(s.world).stem().c_str(), s.dx_m, s.dheading_deg, r.doors.c_str(), r.gate_s,
+                      r.crossing_s);
+        if (auto err = write_crossing_picture(fw.sim(), s.config, snaps, title, s.picture)) r.picture_error = *err;
+      }
       fw.run_ticks(20);
       r.mask_after = fw.bb().emergency.reader().peek().enabled;
       if (s.close_link_after_ticks < 0)

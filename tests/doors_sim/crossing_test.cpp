@@ -3,6 +3,10 @@
 // gap, and every way out of the crossing giving the emergency mask back.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tests/doors_sim/crossing_run.hpp"
@@ -39,8 +43,19 @@ constexpr int kSeededStarts = 20;
 
 class SeededStart : public ::testing::TestWithParam<int> {};
 
+// The first start also draws its picture (trail and scans): a PNG file is written.
 TEST_P(SeededStart, Door90IsCrossed) {
-  expect_crossed(seeded_start(kWorlds + "door90.toml", static_cast<std::uint64_t>(GetParam())));
+  CrossingSetup s = seeded_start(kWorlds + "door90.toml", static_cast<std::uint64_t>(GetParam()));
+  const std::string picture = (std::filesystem::temp_directory_path() / ("robuter-crossing-" + std::to_string(::getpid()) + ".png")).string();
+  if (GetParam() == 1) s.picture = picture;
+  expect_crossed(s);
+  if (GetParam() != 1) return;
+  std::ifstream in(picture, std::ios::binary);
+  char magic[8] = {};
+  in.read(magic, sizeof magic);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  EXPECT_GT(std::filesystem::file_size(picture), 10'000u);
+  std::filesystem::remove(picture);
 }
 
 TEST_P(SeededStart, Door100IsCrossed) {

@@ -1,0 +1,100 @@
+// The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook).
+#include "tests/doors_sim/crossing_picture.hpp"
+
+#include <cairo.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "hal/sim/render.hpp"
+
+namespace robuter::test {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr int kNoEchoMm = 2546;  // the corrected cap: no echo (docs/PROTOCOL.md, BP)
+
+// A ray of one sector in the world: from the transducer face to where it reported, m.
+struct Ray {
+  sim::Vec2 from, to;
+  bool echo = false;  // false: nothing within the cap
+};
+
+// Why through the snapshot's odometry/truth pair: the scan's sector poses are odometry; with
+// exact odometry the same rigid transform places every one of them in the world.
+Ray sector_ray(const ScanSnapshot& s, int i, const Config& cfg) {
+  const SectorPose& p = s.scan.pose[static_cast<std::size_t>(i)];
+  const double oth = s.odometry.theta * 0.01 * kPi / 180.0;
+  const double rot = s.truth.theta - oth;
+  auto to_world = [&](double x, double y) {  // odometry frame, m → world, m
+    const double dx = x - s.odometry.x * 1e-4, dy = y - s.odometry.y * 1e-4;
+    return sim::Vec2{s.truth.x + dx * std::cos(rot) - dy * std::sin(rot), s.truth.y + dx * std::sin(rot) + dy * std::cos(rot)};
+  };
+  const double h = p.theta * 0.01 * kPi / 180.0;
+  const double ax = p.x * 1e-4 + cfg.ptu.pivot_x_mm * 1e-3 * std::cos(h), ay = p.y * 1e-4 + cfg.ptu.pivot_x_mm * 1e-3 * std::sin(h);
+  const double a = h + s.scan.direction[static_cast<std::size_t>(i)] * 0.01 * kPi / 180.0;
+  const double face = cfg.doors.box_width_mm * 0.5e-3;
+  const int raw = s.scan.raw[static_cast<std::size_t>(i)];
+  const double range = face + raw * 1e-3;
+  Ray r;
+  r.from = to_world(ax + face * std::cos(a), ay + face * std::sin(a));
+  r.to = to_world(ax + range * std::cos(a), ay + range * std::sin(a));
+  r.echo = raw < kNoEchoMm;
+  return r;
+}
+
+// One colour per snapshot (blue, orange, green, purple).
+void set_colour(cairo_t* cr, std::size_t k, double alpha) {
+  static constexpr double kColours[][3] = {{0.10, 0.35, 0.85}, {0.90, 0.45, 0.05}, {0.10, 0.60, 0.20}, {0.55, 0.20, 0.70}};
+  const auto& c = kColours[k % 4];
+  cairo_set_source_rgba(cr, c[0], c[1], c[2], alpha);
+}
+}  // namespace
+
+// Why an overlay rather than Scene::pan_tilt: several scans, each in its own colour, with a legend.
+std::optional<std::string> write_crossing_picture(const hal::SimRobot& r, const Config& cfg,
+                                                  std::span<const ScanSnapshot> snaps, const std::string& title,
+                                                  const std::string& path) {
+  sim::Scene scene;
+  scene.world = &r.world();
+  scene.geometry = r.robot().params().geometry;
+  scene.robot = r.robot().pose();
+  scene.trail = &r.robot().trail();
+  scene.title = title;
+  scene.overlay = [&](cairo_t* cr, const sim::View& view) {
+    for (std::size_t k = 0; k < snaps.size(); ++k) {
+      cairo_set_line_width(cr, 1.0);
+      for (int i = 0; i < kPanTiltSectors; ++i) {
+        if (snaps[k].scan.read_tick[static_cast<std::size_t>(i)] == 0) continue;
+        const Ray ray = sector_ray(snaps[k], i, cfg);
+        const sim::Vec2 a = view.to_device(ray.from), b = view.to_device(ray.to);
+        set_colour(cr, k, ray.echo ? 0.45 : 0.18);
+        cairo_move_to(cr, a.x(), a.y());
+        cairo_line_to(cr, b.x(), b.y());
+        cairo_stroke(cr);
+        if (ray.echo) {
+          set_colour(cr, k, 1.0);
+          cairo_arc(cr, b.x(), b.y(), 2.5, 0.0, 2.0 * kPi);
+          cairo_fill(cr);
+        }
+      }
+      // Legend, below the caption.
+      const double y = 36.0 + 16.0 * static_cast<double>(k);
+      set_colour(cr, k, 1.0);
+      cairo_rectangle(cr, 10.0, y - 9.0, 10.0, 10.0);
+      cairo_fill(cr);
+      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_set_font_size(cr, 12.0);
+      cairo_move_to(cr, 26.0, y);
+      cairo_show_text(cr, snaps[k].label.c_str());
+    }
+  };
+  sim::RenderOptions options;
+  options.pixels_per_metre = 100.0;  // the doorway's 90 cm over 90 pixels
+  const bool svg = path.size() > 4 && path.substr(path.size() - 4) == ".svg";
+  const sim::Status st = svg ? sim::render_svg(scene, options, path) : sim::render_png(scene, options, path);
+  if (!st) return "picture " + path + ": " + st.error().describe();
+  return std::nullopt;
+}
+
+}  // namespace robuter::test
