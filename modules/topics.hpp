@@ -16,7 +16,6 @@ class UltrasonicModule;
 class EmergencyModule;
 class ExecutorModule;
 class PlannerModule;
-class LinkPort;  // the serial module's protocol view: writes the planner's goal (XG, XH)
 class PtuModule;
 class GateModule;
 class DoorsModule;
@@ -307,8 +306,8 @@ struct Blackboard {
   // executor
   Topic<Posture, ExecutorModule> posture;
   Topic<MotionRequest, ExecutorModule> go_to_motion;
-  // planner (goal from the link; requests, report and map view from the planner)
-  Topic<PlannerGoal, LinkPort> planner_goal;
+  // planner (goal from the link, XG / XH; requests, report and map view from the planner)
+  Topic<PlannerGoal, SerialModule> planner_goal;
   Topic<MotionRequest, PlannerModule> planner_motion;
   Topic<PlannerStatus, PlannerModule> planner_status;
   Topic<PlannerMapWindow, PlannerModule> planner_map;

@@ -24,7 +24,6 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
       demo_status_(bb.demo_status.reader()),
-      goal_out_(bb.planner_goal.writer()),
       cfg_(cfg) {}
 
 void LinkPort::wake_emergency() const {
@@ -270,7 +269,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
   if (with_theta && (g.theta <= -18000 || g.theta > 18000)) return PortResult::out_of_range;
   if (!planner::goal_on_map(cfg_.planner, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
-  goal_out_.modify([&](PlannerGoal& p) {
+  w_.goal.modify([&](PlannerGoal& p) {
     p.x = g.x;
     p.y = g.y;
     p.theta = with_theta ? g.theta : 0;
@@ -284,7 +283,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
 // XH: always accepted while the planner runs (a halt is never refused).
 PortResult LinkPort::cancel_goal() noexcept {
   if (!planner_running()) return PortResult::unavailable;
-  goal_out_.modify([](PlannerGoal& p) {
+  w_.goal.modify([](PlannerGoal& p) {
     p.active = false;
     ++p.seq;
   });

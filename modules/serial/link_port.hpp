@@ -22,6 +22,7 @@ struct LinkWriters {
   Writer<UltrasonicSettings> us;
   Writer<LinkStatus> status;
   Writer<ModeRequest> modes;
+  Writer<PlannerGoal> goal;   // the planner's goal (XG, XH)
 };
 
 class LinkPort final : public protocol::RobotPort {
@@ -95,7 +96,6 @@ class LinkPort final : public protocol::RobotPort {
   Reader<ModeStatus> gate_status_;
   Reader<ModeStatus> doors_status_;
   Reader<DemoStatus> demo_status_;
-  Writer<PlannerGoal> goal_out_;           // this port owns the planner's goal topic
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
