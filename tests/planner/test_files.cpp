@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "modules/planner/lib/map_file.hpp"
+#include "modules/planner/lib/planner.hpp"
 #include "modules/planner/lib/thesis_files.hpp"
 #include "tests/planner/test_util.hpp"
 
@@ -150,6 +151,52 @@ TEST(MapFile, MalformedFilesGiveClearErrors) {
     EXPECT_EQ(r.error().line, c.line) << c.text << " -> " << r.error().text();
     EXPECT_NE(r.error().message.find(c.words), std::string::npos) << r.error().text();
   }
+}
+
+// Every loader reports a broken file as a value and touches nothing: a planner working on the
+// lab keeps its map, its layers and its plan while broken environment, saved-map and parameter
+// files are offered to it (robuter-plan and any caller load first, adopt only on success).
+TEST(Loaders, ABrokenFileChangesNothing) {
+  auto env = load_environment(std::string(PLANNER_TEST_DATA) + "/lab.env");
+  ASSERT_TRUE(env.ok());
+  OccupancyMap lab(MapGeometry{300, 300, 0.05, {}});
+  rasterise_polygons(lab, *env);
+  PlannerConfig cfg;
+  cfg.radius = 0.30;
+  Planner planner(cfg);
+  planner.set_map(lab);
+  const Pose2 start{3.0, 3.0, 0.0};
+  const Point2 goal{5.0, 12.5};
+  const PlanResult before = planner.plan(start, goal);
+  ASSERT_TRUE(before.found());
+  const std::vector<Waypoint> path_before = planner.waypoints();
+  const std::string head = "robuter-map 1\nwidth 2\nheight 2\nresolution 0.05\norigin 0 0\nthreshold 10\ndata\n";
+  const std::string bad_env = test::temp_file("bad.env", "2\n3\n0 0\n1 0\n");          // too few vertices
+  const std::string bad_map = test::temp_file("bad.map", head + "....\n..zz\n");         // bad cell
+  const std::string bad_params = test::temp_file("bad.params", "0.3\n0.2\n0\n1 1\n"); // no goal
+  auto e = load_environment(bad_env);
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().file, bad_env);
+  EXPECT_GT(e.error().line, 0);
+  auto m = load_map(bad_map);
+  ASSERT_FALSE(m.ok());
+  EXPECT_EQ(m.error().text(), bad_map + ":9: bad cell 'zz' at column 1");
+  auto p = load_parameters(bad_params);
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().file, bad_params);
+  auto missing = load_map("/nonexistent/robuter.map");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().text().find("/nonexistent/robuter.map"), std::string::npos);
+  // Nothing changed: the map cell by cell, no change logged, the same plan.
+  ASSERT_EQ(planner.map().cell_count(), lab.cell_count());
+  for (int y = 0; y < 300; ++y)
+    for (int x = 0; x < 300; ++x) ASSERT_EQ(planner.map().count({x, y}), lab.count({x, y}));
+  EXPECT_TRUE(planner.map().changes().empty());
+  const PlanResult after = planner.plan(start, goal);
+  EXPECT_EQ(after.status, before.status);
+  EXPECT_DOUBLE_EQ(after.length, before.length);
+  ASSERT_EQ(planner.waypoints().size(), path_before.size());
+  for (std::size_t i = 0; i < path_before.size(); ++i) EXPECT_EQ(planner.waypoints()[i].cell, path_before[i].cell);
 }
 
 }  // namespace

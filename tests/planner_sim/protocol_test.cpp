@@ -115,6 +115,19 @@ TEST(PlannerSimProtocol, MapWindowAndHalt) {
   ASSERT_TRUE(fw.run_until([&] { return pm->state() == PlannerState::moving && fw.bb().posture.reader().peek().left != 0; },
                            3000))
       << static_cast<int>(pm->state()) << " " << *fw.ask("XP");
+  // A refused goal while navigating changes nothing: the same goal is served, the robot moves on.
+  ASSERT_EQ(fw.ask("XB1"), "ack");
+  const std::uint32_t seq = fw.bb().planner_goal.reader().peek().seq;
+  EXPECT_EQ(fw.ask("XG 900000 0"), "error 4 out-of-range");
+  EXPECT_EQ(fw.ask("XG 1x 0"), "error 3 not-a-number");
+  fw.run_ticks(20);
+  EXPECT_EQ(fw.bb().planner_goal.reader().peek().seq, seq);
+  const PlannerState now = pm->state();
+  EXPECT_TRUE(now == PlannerState::moving || now == PlannerState::scanning || now == PlannerState::planning)
+      << static_cast<int>(now);
+  const auto during = fw.ask("XP");
+  ASSERT_TRUE(during);
+  EXPECT_EQ(during->find(" 20000 0 "), during->find(' ', 2)) << *during;  // goal unchanged
   EXPECT_EQ(fw.ask("XH"), "ack");
   fw.run_ticks(60);
   EXPECT_EQ(pm->state(), PlannerState::cancelled);

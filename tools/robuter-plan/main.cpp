@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "modules/planner/lib/text_render.hpp"
 #include "modules/planner/lib/thesis_files.hpp"
 #include "tools/robuter-plan/picture.hpp"
+#include "tools/robuter-plan/world_map.hpp"
 
 namespace {
 
@@ -24,6 +26,9 @@ struct Options {
   std::string params;                     // -p: thesis parameter file
   std::string environment;                // -a: thesis environment file
   std::string saved;                      // -s: saved map (robuter-map format)
+  std::string world;                      // -w: the project's world file (.toml) or a seed 000 .env
+  std::vector<double> goal;               // --goal X Y (m): overrides the file's goal
+  double radius = 0.78;                   // m, disc radius when no -p gives one (the firmware's default)
   std::string picture;                    // -o: PNG to write
   std::string save_map;                   // --save-map: write the map used
   std::vector<std::string> movingai;      // --movingai MAP SCEN
@@ -65,12 +70,25 @@ int run_movingai(const Options& o) {
   return 0;
 }
 
-// Why: -p / -a (or -s): the thesis' single plan, with a picture.
+// Why: -p / -a (or -s, or -w): the thesis' single plan, with a picture. Every input is read
+// before anything is written, so a bad file leaves no picture and no saved map behind.
 int run_thesis(const Options& o) {
-  auto params = load_parameters(o.params);
-  if (!params) return fail(params.error());
+  std::optional<ThesisParameters> params;
+  if (!o.params.empty()) {
+    auto loaded = load_parameters(o.params);
+    if (!loaded) return fail(loaded.error());
+    params = *loaded;
+  }
   OccupancyMap map;
-  if (!o.saved.empty()) {
+  std::optional<Pose2> world_start;
+  std::optional<Point2> world_goal;
+  if (!o.world.empty()) {
+    auto loaded = tool::load_world_map(o.world, o.resolution);
+    if (!loaded) return fail(loaded.error());
+    map = std::move(loaded->map);
+    world_start = loaded->start;
+    world_goal = loaded->goal;
+  } else if (!o.saved.empty()) {
     auto loaded = load_map(o.saved);
     if (!loaded) return fail(loaded.error());
     map = std::move(*loaded);
@@ -86,12 +104,18 @@ int run_thesis(const Options& o) {
       rasterise_polygons(map, *env);
     }
   }
+  if (!params && (!world_start || (!world_goal && o.goal.empty())))
+    return fail(Error{o.world, 0, "the world has no [start] and [goal]: give them with -p PARAMS"});
+  const Pose2 start = params ? Pose2{params->start.x, params->start.y, params->heading_deg * kPi / 180.0}
+                             : *world_start;
+  Point2 goal_point = params ? params->goal : *world_goal;
+  if (o.goal.size() == 2) goal_point = Point2{o.goal[0], o.goal[1]};
   if (!o.save_map.empty()) {
     if (auto st = save_map(map, o.save_map); !st) return fail(st.error());
   }
   PlannerConfig cfg;
   cfg.footprint = o.footprint == "rectangle" ? FootprintKind::Rectangle : FootprintKind::Disc;
-  cfg.radius = params->radius;
+  cfg.radius = params ? params->radius : o.radius;
   cfg.heading_slices = o.slices;
   cfg.motion = o.motion == "holonomic" ? MotionModel::Holonomic : MotionModel::Aligned;
   cfg.rotation_cost = o.rotation_cost;
@@ -100,11 +124,10 @@ int run_thesis(const Options& o) {
   cfg.incremental = false;
   Planner planner(cfg);
   planner.set_map(map);
-  const Pose2 start{params->start.x, params->start.y, params->heading_deg * kPi / 180.0};
-  const PlanResult r = planner.plan(start, params->goal);
+  const PlanResult r = planner.plan(start, goal_point);
   const double res = map.resolution();
   if (o.text) {
-    std::fputs(render_around(map, map.cell_of(params->start), 30).c_str(), stdout);
+    std::fputs(render_around(map, map.cell_of({start.x, start.y}), 30).c_str(), stdout);
   }
   if (r.found()) {
     std::printf("path found: length %.3f m, cost %.3f, %zu waypoints, %u nodes expanded\n",
@@ -116,7 +139,7 @@ int run_thesis(const Options& o) {
     for (const Waypoint& w : planner.waypoints())
       std::printf("%.3f %.3f %.1f\n", w.pose.x, w.pose.y, w.pose.heading * 180.0 / kPi);
   if (!o.picture.empty()) {
-    if (auto st = tool::write_picture(planner, start, params->goal, o.picture); !st) return fail(st.error());
+    if (auto st = tool::write_picture(planner, start, goal_point, o.picture, &r); !st) return fail(st.error());
   }
   return r.found() ? 0 : 2;
 }
@@ -129,7 +152,15 @@ int main(int argc, char** argv) {
   app.add_option("-p,--params", o.params, "thesis parameter file (radius, speed, heading, start, goal)");
   auto* env = app.add_option("-a,--environment", o.environment, "thesis environment file (obstacle polygons, m)");
   auto* saved = app.add_option("-s,--saved", o.saved, "saved map (robuter-map format) instead of -a");
+  auto* world = app.add_option("-w,--world", o.world,
+                               "the project's world file (.toml; .env as seed 000) instead of -a/-s; "
+                               "start and goal from it unless -p gives them");
   env->excludes(saved);
+  world->excludes(env);
+  world->excludes(saved);
+  app.add_option("--goal", o.goal, "goal X Y, m, instead of the file's")->expected(2);
+  app.add_option("--radius", o.radius, "disc radius, m, when no -p gives one (default 0.78)")
+      ->check(CLI::PositiveNumber);
   app.add_option("-o,--output", o.picture, "write a PNG picture of the plan");
   app.add_option("--save-map", o.save_map, "write the map used (robuter-map format)");
   app.add_option("--movingai", o.movingai, "answer a MovingAI .map and its .scen")->expected(2);
@@ -149,8 +180,8 @@ int main(int argc, char** argv) {
   app.add_flag("--waypoints", o.waypoints, "print the path: x y (m) heading (degrees)");
   CLI11_PARSE(app, argc, argv);
   if (!o.movingai.empty()) return run_movingai(o);
-  if (o.params.empty()) {
-    std::fprintf(stderr, "robuter-plan: give -p PARAMS [-a ENVIRONMENT | -s SAVED], or --movingai MAP SCEN\n");
+  if (o.params.empty() && o.world.empty()) {
+    std::fprintf(stderr, "robuter-plan: give -p PARAMS [-a ENVIRONMENT | -s SAVED], -w WORLD, or --movingai MAP SCEN\n");
     return 1;
   }
   return run_thesis(o);
