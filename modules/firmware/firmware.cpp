@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "hal/link/pty_link.hpp"
 #include "hal/link/stdio_link.hpp"
@@ -15,6 +17,7 @@
 #include "modules/emergency/emergency.hpp"
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
+#include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
@@ -133,6 +136,15 @@ std::optional<std::string> Firmware::setup() {
   demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
   planner->set_emergency(emergency.get());
+  if (!opt_.planner_pictures.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt_.planner_pictures, ec);
+    if (ec || !std::filesystem::is_directory(opt_.planner_pictures, ec))
+      return "--planner-pictures " + opt_.planner_pictures + ": not a folder that can be created";
+    picture_box_ = std::make_unique<planner::PictureMailbox>();
+    picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_);
+    planner->set_pictures(picture_box_.get());
+  }
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
@@ -166,7 +178,9 @@ std::optional<std::string> Firmware::setup() {
 }
 
 int Firmware::run() {
+  if (picture_writer_) picture_writer_->start();
   const int status = kernel_->run();
+  if (picture_writer_) picture_writer_->stop();
   if (opt_.picture.empty()) return status;
   const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
   const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, opt_.picture);

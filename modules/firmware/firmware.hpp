@@ -20,6 +20,10 @@ class GpioLines;
 
 class HeartbeatModule;
 class SerialModule;
+namespace planner {
+class PictureMailbox;
+class PictureWriter;
+}  // namespace planner
 
 // How robuterd was asked to run (command line).
 struct FirmwareOptions {
@@ -36,6 +40,7 @@ struct FirmwareOptions {
   bool ptu_sweep = false;             // built-in pan-tilt sweep and channel-7 firing (no PTU module)
   std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
   bool open_devices = true;           // open serial devices and GPIO chips (false: --check-config)
+  std::string planner_pictures;       // folder for a PNG of every plan (map and path), empty = none
 };
 
 class Firmware {
@@ -57,6 +62,9 @@ class Firmware {
   VirtualClock* virtual_clock() { return dynamic_cast<VirtualClock*>(clock_.get()); }
   // Paths of the pty slaves created, in the order of FirmwareOptions::ptys.
   std::vector<std::string> pty_slaves() const;
+  // The planner's picture writer (--planner-pictures), or null. run() drives it on its own
+  // thread; a harness stepping a virtual clock calls its drain() between ticks.
+  planner::PictureWriter* planner_pictures() { return picture_writer_.get(); }
 
  private:
   Config cfg_;
@@ -69,6 +77,8 @@ class Firmware {
   std::unique_ptr<hal::ByteStream> ptu_link_;        // the pan-tilt unit's port, when configured
   std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
   std::unique_ptr<Kernel> kernel_;
+  std::unique_ptr<planner::PictureMailbox> picture_box_;   // plans handed from the planner
+  std::unique_ptr<planner::PictureWriter> picture_writer_; // draws them outside the kernel
 };
 
 }  // namespace robuter

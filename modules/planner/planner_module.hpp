@@ -9,6 +9,7 @@
 #include "kernel/process.hpp"
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/path_follower.hpp"
+#include "modules/planner/picture_mailbox.hpp"
 #include "modules/planner/planner_settings.hpp"
 #include "modules/planner/ring_geometry.hpp"
 #include "modules/planner/route.hpp"
@@ -24,10 +25,14 @@ namespace robuter {
 class PlannerModule final : public Process {
  public:
   static constexpr std::size_t kMaxPrefix = 512;  // waypoints of the followed prefix kept
+  static constexpr std::size_t kMaxPicturePath = 8192;  // waypoints of a plan kept for its picture
 
   PlannerModule(Blackboard& bb, const Config& cfg);
   // The emergency module, triggered when the requested speeds change so a stop acts this tick.
   void set_emergency(Process* p) { emergency_process_ = p; }
+  // Pictures (robuterd --planner-pictures): every plan is copied into `box` in the activation
+  // that made it, for a writer outside the kernel. Set before init(), which sizes the copy.
+  void set_pictures(planner::PictureMailbox* box) { pictures_ = box; }
 
   // Sizes the planner for the configured map (the only allocation) and publishes "idle".
   bool init(Kernel& k) override;
@@ -42,8 +47,10 @@ class PlannerModule final : public Process {
   PlannerState state() const { return state_; }
 
  private:
-  // Marks every new ring reading along its beam, and the body's cells free.
+  // Marks every new ring and pan-tilt reading along its beam, and the body's cells free.
   void integrate_ranges(const plan::Pose2& pose);
+  // Marks every new pan-tilt reading along its beam, from the posture it was fired at.
+  void integrate_pan_tilt();
   // A new XG (start) or XH (cancel).
   void serve_goal(std::uint64_t tick);
   // True (and the navigation ended) when an emergency or another motion source interrupted it.
@@ -62,6 +69,8 @@ class PlannerModule final : public Process {
   void finish(std::uint64_t tick, PlannerState state, bool stop);
   // Publishes a wheel-speed request through the emergency gate.
   void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+  // Copies the plan just made into the picture mailbox, if pictures are on (no allocation).
+  void picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal);
   void publish_status(std::uint64_t tick);
   void publish_window(std::uint64_t tick, const plan::Pose2& pose);
   // The odometry posture in m and rad, the heading unwrapped (continuous across ±π).
@@ -74,6 +83,7 @@ class PlannerModule final : public Process {
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<SonarSelection> selection_;
+  Reader<PanTiltScan> pan_tilt_;         // the pan-tilt's sectors: more beams for the map
   Reader<PlannerGoal> goal_in_;
   Reader<EmergencyState> emergency_;
   Reader<MotionRequest> link_motion_;    // AM: a newer one ends the navigation
@@ -83,12 +93,14 @@ class PlannerModule final : public Process {
   Writer<PlannerStatus> status_out_;
   Writer<PlannerMapWindow> map_out_;
   Process* emergency_process_ = nullptr;
+  planner::PictureMailbox* pictures_ = nullptr;  // where plans go for pictures (null: off)
   Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
 
   PlannerState state_ = PlannerState::idle;
   PlannerGoal goal_{};                     // goal being served
   std::array<std::uint64_t, planner::kRingSensors> read_tick_{};  // last reading marked, per sensor
   std::array<std::uint32_t, planner::kRingSensors> fresh_{};      // readings since the scan's stop
+  std::array<std::uint64_t, kPanTiltSectors> pan_tick_{};         // last pan-tilt reading marked, per sector
   std::array<plan::Waypoint, kMaxPrefix> prefix_{};               // the followed prefix
   std::size_t prefix_len_ = 0;
   std::array<planner::Leg, planner::PathFollower::kMaxLegs> legs_{};  // legs of the prefix

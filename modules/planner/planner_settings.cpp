@@ -34,6 +34,10 @@ PlannerSettings make_settings(const Config& cfg) {
   s.scan_passes = p.scan_passes;
   s.beam_range = mm(p.beam_range_mm);
   s.beam_half_angle = p.beam_half_angle_centideg * plan::kPi / 18000.0;
+  s.pan_pivot_x = mm(cfg.ptu.pivot_x_mm);
+  s.pan_face = mm(cfg.doors.box_width_mm) / 2.0;
+  s.pan_far = mm(cfg.ptu.cap_mm);
+  s.pan_half_angle = cfg.ptu.beam_half_angle_centideg * plan::kPi / 18000.0;
   s.follow_range = mm(p.follow_range_mm);
   s.goal_tolerance = mm(p.goal_tolerance_mm);
   const auto cap = static_cast<std::int32_t>(std::min<std::uint32_t>(cfg.robot.max_speed_cm_s, 100));

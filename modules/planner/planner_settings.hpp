@@ -20,6 +20,10 @@ struct PlannerSettings {
   std::uint32_t scan_passes = 2;       // full ring passes per stop
   double beam_range = 2.5;             // m, readings marked up to here
   double beam_half_angle = 0.218;      // rad, the ring sonar's cone half-angle (0: axis only)
+  double pan_pivot_x = -0.030;         // m, the pan-tilt's pan axis ahead of the wheel axle
+  double pan_face = 0.050;             // m, pan axis to each transducer face
+  double pan_far = 2.491;              // m, a pan-tilt reading at or beyond this is "no echo"
+  double pan_half_angle = 0.218;       // rad, a pan-tilt sonar's cone half-angle
   double follow_range = 1.5;           // m, prefix of the path followed before a new scan
   double goal_tolerance = 0.10;        // m
   std::int32_t drive_cm_s = 20;        // cm/s, fastest wheel driving

@@ -50,6 +50,10 @@ void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const 
   map.integrate_beam(origin, axis + best_phi, range, beam_range);
 }
 
+SensorMount pan_tilt_mount(double pivot_x, double face, double direction) {
+  return SensorMount{pivot_x + face * std::cos(direction), face * std::sin(direction), direction};
+}
+
 // Cells whose centre lies inside the rectangle (a cell only partly under the body keeps what the
 // sonar said about it: an obstacle may touch the body's edge).
 void mark_body_free(plan::OccupancyMap& map, const plan::Pose2& robot, double length, double width,

@@ -18,6 +18,12 @@ namespace robuter::planner {
 void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const SensorMount& mount,
                        double range, bool no_echo, double beam_range, double half_angle);
 
+// Why: the pan-tilt's two sonars (seed 002) sweep the whole turn in 5° sectors; each reading is
+// one more beam for the map, fired from the transducer face: the face sits `face` m from the pan
+// axis along the beam's `direction` (rad from the robot's heading), the axis `pivot_x` m ahead
+// of the wheel axle. Marked with integrate_reading like a ring sensor.
+SensorMount pan_tilt_mount(double pivot_x, double face, double direction);
+
 // Why: the body stands where it stands, so the cells under it are free: this clears echoes
 // that the cone's width put under the robot and keeps its own cell plannable. The rectangle is
 // `length` × `width` (m), centred `center_ahead` m ahead of the axle.

@@ -46,6 +46,24 @@ TEST(SonarMapping, AnEchoMarksItsCellAndClearsTheWayThere) {
   integrate_reading(m2, robot, front, 0.0, false, 1.0, 0.2);  // no data: nothing
 }
 
+// The pan-tilt's transducer sits on its beam, `face` from the pan axis; the robot's heading at
+// the firing turns everything.
+TEST(SonarMapping, APanTiltReadingMarksFromItsTransducerFace) {
+  const SensorMount ahead = pan_tilt_mount(-0.03, 0.05, 0.0);
+  EXPECT_NEAR(ahead.x, 0.02, 1e-12);
+  EXPECT_NEAR(ahead.y, 0.0, 1e-12);
+  const SensorMount left = pan_tilt_mount(-0.03, 0.05, plan::kPi / 2);
+  EXPECT_NEAR(left.x, -0.03, 1e-12);
+  EXPECT_NEAR(left.y, 0.05, 1e-12);
+  EXPECT_NEAR(left.direction, plan::kPi / 2, 1e-12);
+  plan::OccupancyMap map = small_map();
+  const plan::Pose2 fired{2.5, 2.5, plan::kPi / 2};  // the robot faces +y: "left" looks along -x
+  for (int i = 0; i < 2; ++i) integrate_reading(map, fired, left, 1.2, false, 2.5, 0.0);
+  const plan::Cell hit = map.cell_of({2.5 - 0.05 - 1.2, 2.5 - 0.03});
+  EXPECT_EQ(map.state(hit), plan::CellState::Occupied);
+  EXPECT_EQ(map.state({hit.x + 6, hit.y}), plan::CellState::Free);
+}
+
 TEST(SonarMapping, AnEchoGoesToTheArcCellThatLooksMostLikeAnObstacle) {
   const plan::Pose2 robot{1.0, 2.5, 0.0};
   const SensorMount front = default_ring_geometry()[0];

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "hal/sim/footprint.hpp"
-#include "tools/robuter-plan/picture.hpp"
+#include "modules/planner/picture_writer.hpp"
 
 namespace robuter::test {
 
@@ -43,11 +43,10 @@ double body_clearance(SimFirmware& fw) {
   return best;
 }
 
-NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double goal_y, const std::string& name) {
+NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double goal_y, const std::string& /*label*/) {
   NavRecord rec;
   PlannerModule* pm = planner_of(fw);
   if (pm == nullptr) return rec;
-  const char* dir = std::getenv("ROBUTER_PLANNER_PICTURES");
   const double t0 = fw.seconds(), d0 = fw.sim().robot().travelled();
   const std::uint32_t trips0 = fw.bb().emergency.reader().peek().trips;
   std::uint32_t plans_seen = 0;
@@ -60,19 +59,12 @@ NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double g
     if (i % 10 == 0) rec.min_clearance = std::min(rec.min_clearance, body_clearance(fw));
     const PlannerStatus& st = fw.bb().planner_status.reader().peek();
     if (st.plans != plans_seen) rec.plan_times += std::to_string(st.plan_us) + " ";
-    if (dir != nullptr && st.plans != plans_seen && !pm->planner().waypoints().empty()) {
-      const Posture& p = fw.bb().posture.reader().peek();
-      char file[64];
-      std::snprintf(file, sizeof file, "%s-%02u.png", name.c_str(), st.plans);
-      const auto path = (std::filesystem::path(dir) / file).string();
-      const plan::Pose2 start{p.x * 1e-4, p.y * 1e-4, p.theta * plan::kPi / 18000.0};
-      const plan::Point2 goal{st.goal_x * 1e-4, st.goal_y * 1e-4};
-      if (plan::tool::write_picture(pm->planner(), start, goal, path).ok()) ++rec.pictures;
-    }
     plans_seen = st.plans;
   }
   const PlannerStatus& st = fw.bb().planner_status.reader().peek();
   rec.state = pm->state();
+  fw.step();  // the last plan's picture, if any, is drawn after the tick that made it
+  if (auto* w = fw.firmware().planner_pictures()) rec.pictures = static_cast<int>(w->written());
   rec.plans = st.plans;
   rec.scans = st.scans;
   rec.run_us_max = st.run_us_max;

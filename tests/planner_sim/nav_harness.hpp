@@ -22,7 +22,7 @@ struct NavRecord {
   bool bumper = false;          // the bumper was pressed at some tick
   std::uint32_t trips = 0;      // emergencies during the run
   double final_error = 0.0;     // axle to goal at the end, m (world frame)
-  int pictures = 0;             // pictures written (ROBUTER_PLANNER_PICTURES)
+  int pictures = 0;             // pictures the firmware wrote (--planner-pictures), count
   std::string plan_times;       // every plan's time, µs, space-separated
 };
 
@@ -33,9 +33,9 @@ PlannerModule* planner_of(SimFirmware& fw);
 double body_clearance(SimFirmware& fw);
 
 // Why: steps the firmware until the planner leaves its navigating states or `max_ticks` pass,
-// checking the bumper every tick and the clearance every 10 ticks. When the environment variable
-// ROBUTER_PLANNER_PICTURES names a folder, writes `<name>-NN.png` there after every plan
-// (outside the firmware: a test may block). Goal in world metres for final_error.
-NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double goal_y, const std::string& name);
+// checking the bumper every tick and the clearance every 10 ticks. Goal in world metres for
+// final_error; `label` names the run for the caller. Pictures are the firmware's own
+// (SimFirmware's planner_pictures).
+NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double goal_y, const std::string& label);
 
 }  // namespace robuter::test

@@ -2,6 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "tests/planner_sim/nav_harness.hpp"
 
@@ -20,8 +26,15 @@ Config lab_config() {
 
 // (a) From (2.5, 2.0) to (15.0, 5.5) with nothing known: the robot scans, plans, follows what it
 // can see, and replans until it arrives, never touching anything and never tripping the gate.
+// The firmware's pictures (robuterd --planner-pictures) go to a temporary folder, or to
+// $ROBUTER_PLANNER_PICTURES (kept) to look at them: one PNG per plan, first and replans.
 TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
-  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config());
+  const char* keep = std::getenv("ROBUTER_PLANNER_PICTURES");
+  const std::filesystem::path pictures =
+      keep != nullptr ? std::filesystem::path(keep) : std::filesystem::temp_directory_path() /
+                                             ("robuter-planner-pictures-" + std::to_string(::getpid()));
+  if (keep == nullptr) std::filesystem::remove_all(pictures);
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), {}, false, pictures.string());
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
   fw.run_ticks(5);
@@ -40,6 +53,17 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   const auto xp = fw.ask("XP");
   ASSERT_TRUE(xp);
   EXPECT_EQ(xp->rfind("P reached 150000 55000 ", 0), 0u) << *xp;
+  // A picture of every plan, named by goal and plan number, each a PNG.
+  EXPECT_EQ(r.pictures, static_cast<int>(r.plans));
+  for (std::uint32_t n = 1; n <= r.plans; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "plan-g001-%03u.png", n);
+    std::ifstream png(pictures / name, std::ios::binary);
+    char magic[4] = {};
+    png.read(magic, 4);
+    EXPECT_TRUE(png && magic[1] == 'P' && magic[2] == 'N' && magic[3] == 'G') << name;
+  }
+  if (keep == nullptr) std::filesystem::remove_all(pictures);
 }
 
 }  // namespace

@@ -1,7 +1,14 @@
 // Proves a whole navigation — scans, marks, plans, replans, following, XP/XM queries — allocates
-// nothing in the kernel's thread once the firmware has started.
+// nothing in the kernel's thread once the firmware has started — with the planner's pictures on
+// (each plan copied for its picture in the kernel's thread, drawn by the writer's own thread).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "tests/support/alloc_counter.hpp"
 #include "tests/support/sim_firmware.hpp"
@@ -18,8 +25,12 @@ TEST(PlannerSimNoAlloc, ANavigationInTheSeed000LabAllocatesNothing) {
   cfg.planner.map_origin_y_mm = -500;
   cfg.planner.map_width_mm = 19'000;
   cfg.planner.map_height_mm = 11'000;
-  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg);
+  const auto pictures = std::filesystem::temp_directory_path() / ("robuter-noalloc-pictures-" + std::to_string(::getpid()));
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg, {}, false, pictures.string());
   ASSERT_TRUE(fw.ok()) << fw.error();
+  planner::PictureWriter* writer = fw.firmware().planner_pictures();
+  ASSERT_NE(writer, nullptr);
+  writer->start();  // drawing happens on the writer's thread, as in robuterd
   ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
   for (const char* l : {"XP", "XM", "XH", "XG 1 2 3 4"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the paths
   fw.run_ticks(20);
@@ -35,7 +46,10 @@ TEST(PlannerSimNoAlloc, ANavigationInTheSeed000LabAllocatesNothing) {
     replies += fw.count_lines().first;
   }
   const auto allocations = counter.count();
+  writer->stop();
   EXPECT_EQ(allocations, 0u);
+  EXPECT_GE(writer->written(), 1u);  // the pictures were made (a plan may be dropped while one is drawn)
+  std::filesystem::remove_all(pictures);
   EXPECT_EQ(status.state, PlannerState::reached);
   EXPECT_GE(status.plans, 5u);
   EXPECT_GE(replies, 10);

@@ -9,10 +9,12 @@
 #include <filesystem>
 
 #include "hal/sitl/sim_stepper.hpp"
+#include "modules/planner/picture_writer.hpp"
 
 namespace robuter::test {
 
-SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOptions sim, bool with_ptu) {
+SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOptions sim, bool with_ptu,
+                         const std::string& planner_pictures) {
   char tmpl[] = "/tmp/robuter-test-XXXXXX";
   dir_ = mkdtemp(tmpl);
   FirmwareOptions opt;
@@ -22,6 +24,7 @@ SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOp
   opt.sim_options = sim;
   opt.ptys = {dir_ + "/robuter.pty"};
   if (with_ptu) opt.ptu_pty = opt.ptu_port = dir_ + "/ptu.pty";
+  opt.planner_pictures = planner_pictures;
   fw_ = std::make_unique<Firmware>(cfg, opt);
   if (auto err = fw_->setup()) {
     error_ = *err;
@@ -53,6 +56,9 @@ SimFirmware::~SimFirmware() {
 
 void SimFirmware::step() {
   fw_->kernel().step();
+  // The firmware's non-real-time point for pictures, as robuterd's writer thread (unless that
+  // thread was started): after the tick, outside the kernel's step.
+  if (auto* w = fw_->planner_pictures(); w != nullptr && !w->running()) w->drain();
   if (observer_) observer_();
 }
 

@@ -17,9 +17,10 @@ class SimFirmware {
  public:
   // Builds and starts the firmware (world file, config); ok() tells whether it did. With
   // `with_ptu` the pan-tilt emulator is served on a pty and the PTU module opens it (--ptu-pty
-  // and --ptu-port on the same temporary path).
+  // and --ptu-port on the same temporary path). With `planner_pictures` a folder, the planner's
+  // picture of every plan is written there (robuterd --planner-pictures), drawn between ticks.
   explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {},
-                       bool with_ptu = false);
+                       bool with_ptu = false, const std::string& planner_pictures = "");
   ~SimFirmware();
   SimFirmware(const SimFirmware&) = delete;
   SimFirmware& operator=(const SimFirmware&) = delete;

@@ -1,4 +1,4 @@
-// PNG pictures of a plan (cairo): map, expanded obstacles, path and footprints.
+// The tool's PNG picture of a plan (map, expanded obstacles, path and footprints).
 #pragma once
 
 #include <string>
@@ -8,8 +8,10 @@
 
 namespace robuter::plan::tool {
 
-// Why: the thesis wrote a picture of the map and the path for every plan; so does the tool.
+// Why: the thesis wrote a picture of the map and the path for every plan; so does the tool
+// (drawn by modules/planner/picture, as the firmware's pictures). `result`, when given, is the
+// plan's outcome for the caption.
 Status write_picture(const Planner& planner, const Pose2& start, Point2 goal,
-                     const std::string& path);
+                     const std::string& path, const PlanResult* result = nullptr);
 
 }  // namespace robuter::plan::tool

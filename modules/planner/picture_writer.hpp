@@ -1,0 +1,45 @@
+// The firmware's planner pictures: a thread (outside the kernel) that writes each plan's PNG.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "modules/planner/picture_mailbox.hpp"
+
+namespace robuter::planner {
+
+// Draws every snapshot the planner hands over into `dir`/plan-gGGG-NNN.png (goal sequence,
+// plan number: 001 is the first plan for the goal, then the replans). PNG writing is blocking
+// I/O, so it runs on its own thread at normal priority (robuterd --planner-pictures), or between
+// ticks when a test steps a virtual clock (drain()).
+class PictureWriter {
+ public:
+  PictureWriter(std::string dir, PictureMailbox& box) : dir_(std::move(dir)), box_(box) {}
+  ~PictureWriter() { stop(); }
+  PictureWriter(const PictureWriter&) = delete;
+  PictureWriter& operator=(const PictureWriter&) = delete;
+
+  // Why: writes the waiting snapshot, if any; true if a picture was written.
+  bool drain();
+  // Why: robuterd: drain every 10 ms on a thread of its own until stop().
+  void start();
+  // Why: joins the thread, then writes what is still waiting.
+  void stop();
+  bool running() const { return thread_.joinable(); }
+  std::uint32_t written() const { return written_.load(); }
+  std::uint32_t failed() const { return failed_.load(); }
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;                       // folder of the pictures
+  PictureMailbox& box_;                   // where the planner leaves snapshots
+  std::thread thread_;                    // the writer thread (robuterd), or none (tests)
+  std::atomic<bool> stop_{false};         // asks the thread to end
+  std::atomic<std::uint32_t> written_{0}; // pictures written, count
+  std::atomic<std::uint32_t> failed_{0};  // pictures that could not be written, count
+};
+
+}  // namespace robuter::planner
