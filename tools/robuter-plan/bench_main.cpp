@@ -313,7 +313,7 @@ void bench_replan_cells() {
       fresh_goal = std::min(fresh_goal, ms(t0, Clock::now()));
     }
     if (path.size() < 40) continue;
-    double per_k[5] = {};
+    double per_k[5] = {}, sync_ms[5] = {}, expanded[5] = {};
     const int ks[5] = {1, 5, 20, 100, 400};
     for (int ki = 0; ki < 5; ++ki) {
       const int k = ks[ki];
@@ -336,14 +336,22 @@ void bench_replan_cells() {
             }
           }
         const auto t0 = Clock::now();
-        p.plan(start, goal);
+        p.sync();
+        const auto t1 = Clock::now();
+        const PlanResult rr = p.plan(start, goal);
         total += ms(t0, Clock::now());
+        sync_ms[ki] += ms(t0, t1) / placements;
+        expanded[ki] += static_cast<double>(rr.expanded) / placements;
       }
       per_k[ki] = total / placements;
     }
     std::printf("%-24s %10.2f %10.2f %9.3f %9.3f %9.3f %9.3f %9.3f  %.0fx\n",
                 kind == 0 ? "rectangle, 16 slices" : "disc 0.30 m, incremental", full, fresh_goal, per_k[0],
                 per_k[1], per_k[2], per_k[3], per_k[4], full / per_k[1]);
+    std::printf("%-24s %21s %9.3f %9.3f %9.3f %9.3f %9.3f  (of which layers + field repair, ms)\n", "", "",
+                sync_ms[0], sync_ms[1], sync_ms[2], sync_ms[3], sync_ms[4]);
+    std::printf("%-24s %21s %9.0f %9.0f %9.0f %9.0f %9.0f  (states expanded by the search)\n", "", "", expanded[0],
+                expanded[1], expanded[2], expanded[3], expanded[4]);
   }
   std::printf("(full = every C-space layer rebuilt + cost field + search; field+srch = the same map, a new"
               " goal: no layer built; k = replan after k new cells)\n");
