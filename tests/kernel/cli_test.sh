@@ -26,16 +26,18 @@ check bad-world-env 2 "world: $configs/bad_world.env:2: bad count" "$bin" --sim 
 check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nope.toml --ticks 1
 check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
 
-# SIGINT: clean stop, exit status 0.
+# SIGINT and SIGTERM: clean stop, exit status 0 (sent once robuterd says it is starting: the
+# handlers are installed before that line).
 log=$(mktemp)
 "$bin" --sim --log-level info >"$log" 2>&1 &
 pid=$!
-for _ in $(seq 50); do grep -q starting "$log" && break; sleep 0.1; done
+wait_started() { for _ in $(seq 600); do grep -q starting "$log" && return; sleep 0.05; done; }  # up to 30 s (sanitizers, loaded CI)
+wait_started
 kill -INT $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]] && grep -q "stopped after" "$log"; then pass=$((pass+1)); echo "ok   sigint: exit 0"; else fail=$((fail+1)); echo "FAIL sigint: rc=$rc"; cat "$log"; fi
 "$bin" --sim --log-level info >"$log" 2>&1 &
 pid=$!
-sleep 0.3; kill -TERM $pid; wait $pid; rc=$?
+wait_started; kill -TERM $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]]; then pass=$((pass+1)); echo "ok   sigterm: exit 0"; else fail=$((fail+1)); echo "FAIL sigterm: rc=$rc"; fi
 rm -f "$log"
 echo "$pass passed, $fail failed"
