@@ -206,6 +206,8 @@ void bind_gpio(Binder& b, const toml::table& root, GpioConfig& g) {
       if (all[i] == all[j])
         return b.fail_key(i < g.bumper_lines.size() ? "hardware.gpio.bumper_lines" : "hardware.gpio.input_lines",
                           fmt::format("line {} is listed twice", all[i]));
+  if (!g.chip.empty() && all.empty())
+    return b.fail_key("hardware.gpio.chip", "a chip but no hardware.gpio.bumper_lines or input_lines");
   if (g.chip.empty() && !all.empty())
     return b.fail_key(g.bumper_lines.empty() ? "hardware.gpio.input_lines" : "hardware.gpio.bumper_lines",
                       "lines given but no hardware.gpio.chip");

@@ -119,9 +119,13 @@ bool SerialStream::reopen() {
   if (state_.load(std::memory_order_acquire) != kReady) return false;
   fd_ = handed_fd_.exchange(-1, std::memory_order_relaxed);
   connected_ = fd_ >= 0;
+  if (!connected_) {  // never expected; look again rather than wait forever
+    state_.store(kLost, std::memory_order_release);
+    return false;
+  }
   ++reopens_;
   state_.store(kConnected, std::memory_order_release);
-  return connected_;
+  return true;
 }
 
 // Why a thread: open() of a USB serial device talks to the adapter and close() may wait for

@@ -92,8 +92,10 @@ TEST(SerialConfig, BadValuesNameFileLineAndKey) {
             "robot.toml:2: key 'hardware.gpio.bumper_lines': expected line offsets, integers 0..1023");
   EXPECT_EQ(error_of("[hardware.gpio]\nbumper_lines = [4]\n"),
             "robot.toml:2: key 'hardware.gpio.bumper_lines': lines given but no hardware.gpio.chip");
-  EXPECT_EQ(error_of("[hardware.gpio]\nchip = \"/dev/gpiochip0\"\npins = [4]\n"),
-            "robot.toml:3: key 'hardware.gpio.pins': unknown key");
+  EXPECT_EQ(error_of("[hardware.gpio]\nchip = \"/dev/gpiochip0\"\n"),
+            "robot.toml:2: key 'hardware.gpio.chip': a chip but no hardware.gpio.bumper_lines or input_lines");
+  EXPECT_EQ(error_of("[hardware.gpio]\nchip = \"/dev/gpiochip0\"\nbumper_lines = [1]\npins = [4]\n"),
+            "robot.toml:4: key 'hardware.gpio.pins': unknown key");
 }
 
 TEST(SerialConfig, RatesAgreeWithTheHal) {
