@@ -28,12 +28,12 @@ check not-a-tty 2 "serial link: cannot open /dev/null: Inappropriate ioctl for d
 
 # SIGTERM while a serial link is open (its helper thread must not take the signal): exit 0.
 log=$(mktemp); dir=$(mktemp -d)
-python3 -c 'import os,pty,sys,time; m,s=pty.openpty(); os.symlink(os.ttyname(s), sys.argv[1]); time.sleep(6)' "$dir/dev" &
+python3 -c 'import os,pty,sys,time; m,s=pty.openpty(); os.symlink(os.ttyname(s), sys.argv[1]); time.sleep(120)' "$dir/dev" &
 holder=$!
 for _ in $(seq 50); do [[ -e "$dir/dev" ]] && break; sleep 0.1; done
 "$bin" --sim --serial "$dir/dev" --log-level info >"$log" 2>&1 &
 pid=$!
-for _ in $(seq 50); do grep -q starting "$log" && break; sleep 0.1; done
+for _ in $(seq 600); do grep -q starting "$log" && break; sleep 0.05; done  # up to 30 s (sanitizers, loaded CI)
 kill -TERM $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]] && grep -q "stopped after" "$log"; then pass=$((pass+1)); echo "ok   sigterm-with-serial: exit 0"; else fail=$((fail+1)); echo "FAIL sigterm-with-serial: rc=$rc"; cat "$log"; fi
 kill $holder 2>/dev/null; wait $holder 2>/dev/null

@@ -28,7 +28,7 @@ def plug():
     return master
 
 
-def ask(master, line, timeout=10.0):
+def ask(master, line, timeout=30.0):
     """Sends line (again every second until answered) and returns the first reply line."""
     buf = b""
     deadline = time.time() + timeout
