@@ -9,15 +9,44 @@ PREFIX   ?= /usr/local
 SHELL    := /bin/bash
 RUN_ARGS ?= --sim --pty $(PTY)
 
-.PHONY: all deps build run test test-fast test-san bench fuzz install clean
+# Cross builds (docs/INSTALL.md): CROSS=aarch64-linux-gnu or arm-linux-gnueabihf (aliases arm64,
+# aarch64, armhf) builds into build-$(CROSS) with Debian's cross toolchain; tests run under qemu-user.
+ifeq ($(CROSS),armhf)
+override CROSS := arm-linux-gnueabihf
+endif
+ifneq ($(filter arm64 aarch64,$(CROSS)),)
+override CROSS := aarch64-linux-gnu
+endif
+CROSS_TRIPLET := $(or $(CROSS),aarch64-linux-gnu)
+CROSS_BUILD   := build-$(CROSS_TRIPLET)
+CROSS_CMAKE   := -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/toolchains/$(CROSS_TRIPLET).cmake -DROBUTER_BENCH=OFF
+ifneq ($(CROSS),)
+BUILD := $(CROSS_BUILD)
+endif
+
+.PHONY: all deps build run test test-fast test-san bench fuzz install clean test-cross deb test-package
 
 all: build
 
 deps:
 	@$(DEPS)
 
+ifeq ($(CROSS),)
 $(BUILD)/build.ninja:
 	cmake -S . -B $(BUILD) $(GEN) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+endif
+
+# The cross build folder: target architecture, toolchain, qemu-user and libraries first (as root).
+$(CROSS_BUILD)/build.ninja:
+	tools/deps/cross.sh $(CROSS_TRIPLET)
+	cmake -S . -B $(CROSS_BUILD) $(GEN) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CROSS_CMAKE)
+
+# The pure unit suites (ctest label `unit`) of the cross build, run under qemu-user; only their
+# targets are built. The whole-firmware, pty and tool tests are left to the native `make test`.
+test-cross: $(CROSS_BUILD)/build.ninja
+	tools/deps/cross.sh $(CROSS_TRIPLET)
+	cmake --build $(CROSS_BUILD) -j $(JOBS) --target robuter_unit_tests
+	cd $(CROSS_BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900 -L unit
 
 build: $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
@@ -53,8 +82,27 @@ bench: deps build
 	@tools/deps/ensure.sh tools/deps/bench-packages.txt
 	@ROBUTER_BUILD=$(BUILD) tools/bench/run.sh
 
+# The prefix is set at configure time: the unit and the config paths depend on it (docs/INSTALL.md).
 install: build
-	cmake --install $(BUILD) --prefix $(PREFIX)
+	cmake -S . -B $(BUILD) -DCMAKE_INSTALL_PREFIX=$(PREFIX)
+	cmake --build $(BUILD) -j $(JOBS)
+	cmake --install $(BUILD)
+
+# The Debian package, built with debhelper from a copy of the tree (tests off); the .deb goes to
+# $(DEB_DIR)/robuterd_<version>_<arch>.deb.
+DEB_DIR ?= build-deb
+deb:
+	@tools/deps/ensure.sh tools/deps/debian-packages.txt tools/deps/package-packages.txt
+	rm -rf $(DEB_DIR) && mkdir -p $(DEB_DIR)/src
+	git ls-files -co --exclude-standard -z | tar --null --ignore-failed-read -T - -cf - | tar -xf - -C $(DEB_DIR)/src
+	cd $(DEB_DIR)/src && DEB_BUILD_OPTIONS="nocheck parallel=$(JOBS)" dpkg-buildpackage -b -us -uc
+	@ls -l $(DEB_DIR)/*.deb
+
+# Installs the package on this machine (root), checks it and starts its service as systemd
+# would, talks to robuterd over the service's pty, stops it and purges the package. Minutes, so
+# not part of `make test`.
+test-package: deb
+	tools/test/package_test.py $$(ls $(DEB_DIR)/robuterd_*.deb | grep -v dbgsym)
 
 clean:
 	rm -rf $(BUILD) $(SAN_BUILD) $(BUILD).test.log $(SAN_BUILD).test.log

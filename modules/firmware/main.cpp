@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <string>
+#include <system_error>
 
 #include "kernel/config.hpp"
 #include "kernel/log.hpp"
@@ -13,6 +16,16 @@ namespace {
 constexpr int kExitOk = 0;       // clean stop
 constexpr int kExitRuntime = 1;  // a module could not start
 constexpr int kExitUsage = 2;    // bad command line, configuration or world
+
+// An installed robuterd takes its default world from its own prefix (<bindir>/../share/robuterd,
+// wherever the prefix is); a build-tree one finds none there and keeps the source tree's.
+std::string installed_default_world() {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const auto world = (exe.parent_path() / ROBUTER_BIN_TO_DATA / "worlds" / "default.toml").lexically_normal();
+  return std::filesystem::is_regular_file(world, ec) ? world.string() : std::string{};
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,6 +92,7 @@ int main(int argc, char** argv) {
   log::set_level(level);
   if (check_only) opt.sim = true;  // validate the table as the simulator would compose it
   if (check_only) opt.open_devices = false;  // a robot's configuration checks on any machine
+  if (opt.sim && opt.sim_options.world_file.empty()) opt.sim_options.world_file = installed_default_world();
 
   // Start-up: everything is allocated here, before the periodic path runs.
   Firmware fw(cfg, opt);
