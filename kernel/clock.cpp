@@ -17,6 +17,16 @@ Nanos monotonic_now() {
   return Nanos{ts.tv_sec} * kNanosPerSecond + ts.tv_nsec;
 }
 
+// Splits a non-negative ns count into a timespec. time_t and long are 32 bits on armhf (Debian 12):
+// the seconds of CLOCK_MONOTONIC (time since boot) or of a wait fit for 68 years, and the
+// nanoseconds, below 10^9, always fit, so the narrowing is exact.
+timespec to_timespec(Nanos ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<decltype(ts.tv_sec)>(ns / kNanosPerSecond);
+  ts.tv_nsec = static_cast<decltype(ts.tv_nsec)>(ns % kNanosPerSecond);
+  return ts;
+}
+
 // Polls `fds` without blocking; returns the number with events.
 int poll_now(std::span<pollfd> fds) {
   if (fds.empty()) return 0;
@@ -38,16 +48,12 @@ int RealClock::wait_until(Nanos deadline, std::span<pollfd> fds) {
     const Nanos left = deadline - monotonic_now();
     if (left <= 0) return poll_now(fds);
     if (fds.empty()) {
-      timespec abs{};
-      abs.tv_sec = deadline / kNanosPerSecond;
-      abs.tv_nsec = deadline % kNanosPerSecond;
+      const timespec abs = to_timespec(deadline);
       const int rc = clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &abs, nullptr);
       if (rc == EINTR) return -1;
       continue;
     }
-    timespec rel{};
-    rel.tv_sec = left / kNanosPerSecond;
-    rel.tv_nsec = left % kNanosPerSecond;
+    const timespec rel = to_timespec(left);
     const int n = ::ppoll(fds.data(), fds.size(), &rel, nullptr);
     if (n < 0) return errno == EINTR ? -1 : 0;
     if (n > 0) return n;
