@@ -115,6 +115,10 @@ int main(int argc, char** argv) {
   Kernel::install_signal_handlers();
   log::info("robuterd {} starting: tick {} µs, {} processes{}", ROBUTER_VERSION, cfg.kernel.tick_us,
             fw.kernel().process_count(), opt.sim ? ", simulated robot" : "");
+  if (opt.sim) {
+    log::info("sim: world {}", opt.sim_options.world_file.empty() ? std::string("built-in default (source tree)")
+                                                                   : opt.sim_options.world_file);
+  }
   const int status = fw.run();
   log::info("robuterd stopped after {} ticks", fw.kernel().tick());
   log::stop();

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Installs the robuterd .deb, checks its files, and starts robuterd.service's command as systemd would."""
 # Usage (as root): tools/test/package_test.py build-deb/robuterd_<version>_<arch>.deb
 #
@@ -25,7 +25,7 @@ EXPECTED_FILES = [
     "/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim",
     "/etc/robuterd/robuterd.toml", "/etc/default/robuterd", UNIT,
     "/usr/lib/sysusers.d/robuterd.conf", "/usr/share/robuterd/worlds/default.toml",
-    "/usr/share/robuterd/udev/99-robuterd.rules", "/usr/share/doc/robuterd/INSTALL.md",
+    "/usr/share/robuterd/udev/99-robuterd.rules", "/usr/share/doc/robuterd/INSTALL.md.gz",
 ]
 EXPECTED_CONFFILES = ["/etc/robuterd/robuterd.toml", "/etc/default/robuterd"]
 
@@ -210,8 +210,13 @@ def main():
             reply = s.read_until(b"\r")
             check(re.fullmatch(rb"S -?\d+ -?\d+ -?\d+ [01] \d+\r", reply) is not None, f"BO answered: {reply!r}")
             s.write(b"BC\r")
-            reply = s.read_until(b"\r")
-            check(re.fullmatch(rb"C \d+\r", reply) is not None, f"BC answered: {reply!r}")
+            first = s.read_until(b"\r")
+            check(re.fullmatch(rb"C \d+\r", first) is not None, f"BC answered: {first!r}")
+            time.sleep(1.0)  # the service's kernel keeps ticking on its real-time clock
+            s.write(b"BC\r")
+            later = s.read_until(b"\r")
+            check(re.fullmatch(rb"C \d+\r", later) is not None and int(later[2:]) > int(first[2:]),
+                  f"its clock advances: {first!r} then {later!r} a second later")
 
         # 5. Stop it as systemctl stop does (KillSignal=SIGTERM): a clean exit, which
         # Restart=on-failure does not restart.
@@ -225,6 +230,13 @@ def main():
         log.seek(0)
         text = log.read()
         check("starting" in text and "stopped" in text, "its log shows start and stop")
+        check("sim: world /usr/share/robuterd/worlds/default.toml" in text,
+              "the installed robuterd simulates the installed default world")
+        log.close()
+        if failed == 0:
+            os.unlink(log.name)
+        else:
+            print(f"robuterd's output: {log.name}")
     finally:
         if proc is not None:
             proc.kill()
