@@ -103,8 +103,13 @@ struct SonarSelection {
   std::uint32_t active = 0xFFFFFF;     // bit s-1 = sensor s fires
 };
 
-// Why an emergency holds.
-enum class EmergencyCause : std::uint8_t { none, bumper, obstacle, comm_loss, stop_byte, motion_timeout, drive_fault, other };
+// Why an emergency holds. The last three come from the drives' bus (docs/CAN.md).
+enum class EmergencyCause : std::uint8_t {
+  none, bumper, obstacle, comm_loss, stop_byte, motion_timeout, drive_fault, other,
+  heartbeat_lost,  // a drive stopped sending its heartbeat
+  bus_passive,     // the drives' CAN bus went error-passive
+  bus_off,         // the CAN controller went bus-off
+};
 
 // The emergency module's verdict.
 struct EmergencyState {

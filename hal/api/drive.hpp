@@ -17,7 +17,8 @@ enum class DriveHealth : std::uint8_t {
   ok,          // answering, no fault
   fault,       // the drive reports a fault
   silent,      // the drive stopped answering (heartbeat lost)
-  bus_error,   // the bus to the drive is error-passive or off
+  bus_passive, // the bus to the drive is error-passive (frames may be lost)
+  bus_off,     // the controller is bus-off: nothing reaches the drive
 };
 
 // Only modules/executor holds the Drive: it is the one writer of motor commands.

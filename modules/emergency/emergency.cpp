@@ -1,6 +1,7 @@
 // Emergency process glue: reads the topics, runs the gate, publishes verdict, command and table.
 #include "modules/emergency/emergency.hpp"
 
+#include "hal/api/drive.hpp"
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 
@@ -34,8 +35,22 @@ const char* cause_name(EmergencyCause c) {
     case EmergencyCause::motion_timeout: return "motion-timeout";
     case EmergencyCause::drive_fault: return "drive-fault";
     case EmergencyCause::other: return "other";
+    case EmergencyCause::heartbeat_lost: return "heartbeat-lost";
+    case EmergencyCause::bus_passive: return "bus-error-passive";
+    case EmergencyCause::bus_off: return "bus-off";
   }
   return "?";
+}
+// The executor's Posture.drive_health (a hal::DriveHealth) as the cause the gate reports.
+EmergencyCause drive_cause(std::uint8_t health) {
+  switch (static_cast<hal::DriveHealth>(health)) {
+    case hal::DriveHealth::ok: return EmergencyCause::none;
+    case hal::DriveHealth::silent: return EmergencyCause::heartbeat_lost;
+    case hal::DriveHealth::bus_passive: return EmergencyCause::bus_passive;
+    case hal::DriveHealth::bus_off: return EmergencyCause::bus_off;
+    case hal::DriveHealth::fault: break;
+  }
+  return EmergencyCause::drive_fault;
 }
 }  // namespace
 
@@ -122,6 +137,7 @@ void EmergencyModule::run(Kernel& k) {
   in.bumpers = bumpers_.pressed();
   in.last_message_tick = link.last_message_tick;
   in.drive_fault = posture.drive_health != 0;
+  in.drive_cause = drive_cause(posture.drive_health);
   in.servo_on = posture.servo;
   in.at_rest = at_rest(posture);
   in.ranges = &ranges_.peek();

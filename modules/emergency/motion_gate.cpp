@@ -52,7 +52,7 @@ GateDecision MotionGate::step(const GateInputs& in) {
   const bool moving = has_request_ && (left_ != 0 || right_ != 0);
   EmergencyCause cause = EmergencyCause::none;
   if (in.stop_byte) cause = EmergencyCause::stop_byte;
-  else if (in.drive_fault) cause = EmergencyCause::drive_fault;
+  else if (in.drive_fault) cause = in.drive_cause != EmergencyCause::none ? in.drive_cause : EmergencyCause::drive_fault;
   else if (bumper_now) cause = EmergencyCause::bumper;
   else if (comm_now) cause = EmergencyCause::comm_loss;
   else if (moving && s_.motion_timeout_ticks > 0 && tick - request_tick_ > s_.motion_timeout_ticks)

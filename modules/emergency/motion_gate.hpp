@@ -39,6 +39,7 @@ struct GateInputs {
   std::uint32_t bumpers = 0;                 // bumpers pressed, bit per bumper
   std::uint64_t last_message_tick = 0;       // tick of the link's last well-formed message
   bool drive_fault = false;                  // the drive reports a fault or went silent
+  EmergencyCause drive_cause = EmergencyCause::none;  // which (heartbeat, bus…); none = drive_fault
   bool servo_on = false;                     // the drive's servo is on (executor's posture)
   bool at_rest = true;                       // the robot is not moving (odometry unchanged), whatever its set-points
   const UltrasonicRanges* ranges = nullptr;  // the ring's latest ranges (never null in use)

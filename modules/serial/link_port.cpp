@@ -219,6 +219,9 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
     case EmergencyCause::stop_byte: s.cause = protocol::EmergencyCause::stop_byte; break;
     case EmergencyCause::motion_timeout: s.cause = protocol::EmergencyCause::motion_timeout; break;
     case EmergencyCause::drive_fault: s.cause = protocol::EmergencyCause::drive_fault; break;
+    case EmergencyCause::heartbeat_lost: s.cause = protocol::EmergencyCause::heartbeat_lost; break;
+    case EmergencyCause::bus_passive: s.cause = protocol::EmergencyCause::bus_passive; break;
+    case EmergencyCause::bus_off: s.cause = protocol::EmergencyCause::bus_off; break;
     default: s.cause = protocol::EmergencyCause::other; break;
   }
   return s;

@@ -16,6 +16,9 @@ std::string_view emergency_cause_name(EmergencyCause cause) noexcept {
     case EmergencyCause::motion_timeout: return "motion-timeout";
     case EmergencyCause::drive_fault: return "drive-fault";
     case EmergencyCause::other: return "other";
+    case EmergencyCause::heartbeat_lost: return "heartbeat-lost";
+    case EmergencyCause::bus_passive: return "bus-error-passive";
+    case EmergencyCause::bus_off: return "bus-off";
   }
   return "other";
 }

@@ -56,6 +56,9 @@ enum class EmergencyCause : std::uint8_t {
   motion_timeout,  // moving, and no motion command arrived within the configured freshness time
   drive_fault,     // the motor drive reports a fault or stopped answering
   other,       // anything else (a module fault, ...)
+  heartbeat_lost,  // a motor drive stopped sending its CAN heartbeat
+  bus_passive,     // the drives' CAN bus is error-passive
+  bus_off,         // the CAN controller is bus-off
 };
 
 // Bits of EmergencyStatus::enabled (the seed's emerg.on).

@@ -34,6 +34,9 @@ TEST(Extensions, CauseNames) {
   EXPECT_EQ(emergency_cause_name(EmergencyCause::bumper), "bumper");
   EXPECT_EQ(emergency_cause_name(EmergencyCause::stop_byte), "stop-byte");
   EXPECT_EQ(emergency_cause_name(EmergencyCause::other), "other");
+  EXPECT_EQ(emergency_cause_name(EmergencyCause::heartbeat_lost), "heartbeat-lost");
+  EXPECT_EQ(emergency_cause_name(EmergencyCause::bus_passive), "bus-error-passive");
+  EXPECT_EQ(emergency_cause_name(EmergencyCause::bus_off), "bus-off");
 }
 
 TEST(Extensions, XR) {

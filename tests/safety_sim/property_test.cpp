@@ -106,7 +106,7 @@ struct Totals {
   long longest_disagreement = 0;          // longest such run, ticks
   long contact_sequences = 0;             // sequences with a contact while the sonar watched
   std::string contact_seeds;              // their seeds, main sensor and body point, for the report
-  std::array<long, 8> trips_by_cause{};  // by EmergencyCause of the verdict that tripped
+  std::array<long, 11> trips_by_cause{};  // by EmergencyCause of the verdict that tripped
   long trips = 0;
   double min_clearance_us_on = 1e9;
 };
@@ -281,7 +281,8 @@ Totals run_shard(int shard, bool contacts_fail) {
     run_sequence(seed, tot, report, contacts_fail);
     if (!report.empty() && ++failures <= 3) ADD_FAILURE() << report;
   }
-  const char* causes[] = {"none", "bumper", "obstacle", "comm-loss", "stop-byte", "motion-timeout", "drive-fault", "other"};
+  const char* causes[] = {"none", "bumper", "obstacle", "comm-loss", "stop-byte", "motion-timeout", "drive-fault", "other",
+                          "heartbeat-lost", "bus-error-passive", "bus-off"};
   std::printf("shard %d/%d: %ld sequences, %ld ticks (%.0f simulated s), %ld commands + %ld stop bytes, %ld unanswered\n",
               shard + 1, kShards, tot.sequences, tot.ticks, static_cast<double>(tot.ticks) / 100.0, tot.commands,
               tot.stop_bytes, tot.no_reply);
