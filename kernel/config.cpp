@@ -316,11 +316,42 @@ void bind_demo(Binder& b, DemoConfig& d) {
   b.integer("demo.calibration_timeout_ticks", d.calibration_timeout_ticks, 0, 10'000'000);
 }
 
+// The [hardware] and [can] sections (docs/CAN.md).
+void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
+  b.string("hardware.drive", h.drive, {"none", "can"});
+  b.string("hardware.sonar", h.sonar, {"none", "can"});
+  b.string("can.interface", c.interface);
+  b.integer("can.left_node", c.left_node, 1, 127);
+  b.integer("can.right_node", c.right_node, 1, 127);
+  b.integer("can.sonar_node_base", c.sonar_node_base, 1, 120);
+  b.integer("can.counts_per_rev", c.counts_per_rev, 1, 100'000'000);
+  b.integer("can.wheel_diameter_mm", c.wheel_diameter_mm, 10, 5000);
+  b.boolean("can.left_invert", c.left_invert);
+  b.boolean("can.right_invert", c.right_invert);
+  b.integer("can.heartbeat_ms", c.heartbeat_ms, 10, 10'000);
+  b.integer("can.heartbeat_timeout_ms", c.heartbeat_timeout_ms, 20, 60'000);
+  b.integer("can.sdo_timeout_ms", c.sdo_timeout_ms, 10, 10'000);
+  b.integer("can.fault_reset_ms", c.fault_reset_ms, 10, 60'000);
+  if (b.error()) return;
+  if (c.interface.empty() || c.interface.size() >= 16)
+    return b.fail_key("can.interface", "expected an interface name of 1 to 15 characters");
+  if (c.left_node == c.right_node)
+    return b.fail_key("can.right_node", fmt::format("{} is also can.left_node", c.right_node));
+  for (const std::uint32_t id : {c.left_node, c.right_node})
+    if (id >= c.sonar_node_base && id <= c.sonar_node_base + 7)
+      return b.fail_key("can.sonar_node_base",
+                        fmt::format("ultrasonic nodes {}..{} overlap drive node {}", c.sonar_node_base,
+                                    c.sonar_node_base + 7, id));
+  if (c.heartbeat_timeout_ms <= c.heartbeat_ms)
+    return b.fail_key("can.heartbeat_timeout_ms",
+                      fmt::format("{} must be longer than can.heartbeat_ms {}", c.heartbeat_timeout_ms, c.heartbeat_ms));
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "demo", "process", "modules", "links", "hardware"})
+                        "demo", "process", "modules", "links", "hardware", "can"})
     b.table(t);
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
@@ -356,6 +387,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   bind_links(b, c.links);
   bind_gpio(b, root, c.gpio);
   bind_demo(b, c.demo);
+  bind_can(b, c.hardware, c.can);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

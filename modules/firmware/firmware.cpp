@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "hal/linux/can/can_backend.hpp"
+#include "hal/linux/can/socketcan_transport.hpp"
 #include "hal/link/pty_link.hpp"
 #include "hal/link/stdio_link.hpp"
 #include "hal/linux/gpio_lines.hpp"
@@ -52,6 +54,21 @@ hal::SerialSettings line_settings(std::uint32_t baud, const std::string& parity,
   s.retry_ms = retry_ms;
   return s;
 }
+
+// Bumpers on hardware when [hardware.gpio] names no bumper lines (docs/HARDWARE.md): never pressed.
+class NoBumpers final : public hal::Bumpers {
+ public:
+  std::uint32_t pressed() const override { return 0; }
+};
+
+// A ring when [hardware] sonar = "none": every firing refused, so the ultrasonic watch has no
+// data and the emergency gate holds every motion (ultrasonic detection must be masked off to move).
+class NoSonarRing final : public hal::SonarRing {
+ public:
+  void configure(std::uint32_t, std::uint32_t) override {}
+  bool fire(int, std::uint8_t) override { return false; }
+  bool read(int, hal::NodeRanges&) override { return false; }
+};
 }  // namespace
 
 Firmware::Firmware(const Config& cfg, const FirmwareOptions& opt) : cfg_(cfg), opt_(opt) {}
@@ -65,14 +82,52 @@ std::vector<std::string> Firmware::pty_slaves() const {
   return out;
 }
 
+// Without --sim: the CAN backend when configured (SocketCAN, or the tests' transport); a kernel
+// without AF_CAN ends the start here with the transport's message.
+std::optional<std::string> Firmware::setup_hardware() {
+  const bool can_drive = cfg_.hardware.drive == "can";
+  const bool can_sonar = cfg_.hardware.sonar == "can";
+  if (!can_drive)
+    return std::string("no hardware backend configured ([hardware] drive = \"none\"): run with --sim, or set "
+                       "[hardware] drive = \"can\" (docs/CAN.md)");
+  if (!opt_.ptu_pty.empty()) return std::string("--ptu-pty serves the simulated pan-tilt unit: it needs --sim");
+  if (!opt_.picture.empty()) return std::string("--picture draws the simulated world: it needs --sim");
+  hal::can::FrameTransport* bus = opt_.can_transport;
+  if (bus == nullptr) {
+    std::string err;
+    can_bus_ = hal::can::SocketCanTransport::open(cfg_.can.interface, err);
+    if (!can_bus_) return err;
+    bus = can_bus_.get();
+  }
+  auto backend = std::make_unique<hal::can::CanBackend>(*bus, cfg_.can, cfg_.robot.wheel_base_mm, can_drive, can_sonar);
+  can_ = backend.get();
+  processes_.push_back(std::move(backend));
+  drive_ = can_->drive();
+  if (can_sonar) {
+    ring_ = can_->ring();
+  } else {
+    own_ring_ = std::make_unique<NoSonarRing>();
+    ring_ = own_ring_.get();
+  }
+  own_bumpers_ = std::make_unique<NoBumpers>();
+  bumpers_ = own_bumpers_.get();
+  return std::nullopt;
+}
+
 std::optional<std::string> Firmware::setup() {
-  if (!opt_.sim) return std::string("no hardware backend in this build yet: run with --sim");
   if (opt_.speed == 0.0) clock_ = std::make_unique<VirtualClock>();
   else if (opt_.speed == 1.0) clock_ = std::make_unique<RealClock>();
   else clock_ = std::make_unique<ScaledClock>(opt_.speed);
 
-  sim_ = std::make_unique<hal::SimRobot>(cfg_, opt_.sim_options);
-  if (sim_->error()) return *sim_->error();
+  if (opt_.sim) {
+    sim_ = std::make_unique<hal::SimRobot>(cfg_, opt_.sim_options);
+    if (sim_->error()) return *sim_->error();
+    drive_ = &sim_->drive();
+    ring_ = &sim_->ring();
+    bumpers_ = &sim_->bumpers();
+  } else if (auto err = setup_hardware()) {
+    return err;
+  }
 
   for (const auto& path : opt_.ptys) {
     auto pty = std::make_unique<hal::PtyLink>(path);
@@ -96,13 +151,16 @@ std::optional<std::string> Firmware::setup() {
 
   auto heartbeat = std::make_unique<HeartbeatModule>(bb_);
   auto serial = std::make_unique<SerialModule>(bb_, cfg_, streams);
-  auto stepper = std::make_unique<hal::SimStepper>(*sim_);
-  if (!opt_.ptu_pty.empty()) {  // the pan-tilt emulator on its own pty
-    auto pty = std::make_unique<hal::PtyLink>(opt_.ptu_pty);
-    if (pty->error()) return "--ptu-pty: " + *pty->error();
-    stepper->attach_ptu(std::move(pty));
+  std::unique_ptr<hal::SimStepper> stepper;
+  if (sim_) {
+    stepper = std::make_unique<hal::SimStepper>(*sim_);
+    if (!opt_.ptu_pty.empty()) {  // the pan-tilt emulator on its own pty
+      auto pty = std::make_unique<hal::PtyLink>(opt_.ptu_pty);
+      if (pty->error()) return "--ptu-pty: " + *pty->error();
+      stepper->attach_ptu(std::move(pty));
+    }
+    stepper->set_ptu_sweep(opt_.ptu_sweep);
   }
-  stepper->set_ptu_sweep(opt_.ptu_sweep);
   // The pan-tilt unit's port (after the emulator's pty exists, so its path can be opened).
   const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.port : opt_.ptu_port;
   if (!ptu_port.empty() && opt_.open_devices) {
@@ -114,18 +172,18 @@ std::optional<std::string> Firmware::setup() {
   }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
     return "--picture " + opt_.picture + ": expected a .png or .svg file";
-  auto us = std::make_unique<UltrasonicModule>(bb_, sim_->ring(), cfg_.sonar);
+  auto us = std::make_unique<UltrasonicModule>(bb_, *ring_, cfg_.sonar);
   // Bumpers on GPIO lines when [hardware.gpio] names a chip; a missing chip stops start-up.
   if (!cfg_.gpio.chip.empty() && opt_.open_devices) {
     gpio_ = std::make_unique<hal::GpioLines>(cfg_.gpio.chip, cfg_.gpio.bumper_lines, cfg_.gpio.input_lines,
                                              cfg_.gpio.active_low, cfg_.gpio.debounce_us);
     if (gpio_->error()) return fmt::format("{}:{}: {}", cfg_.source, cfg_.gpio.line, *gpio_->error());
   }
-  hal::Bumpers& bumpers = gpio_ && !cfg_.gpio.bumper_lines.empty() ? static_cast<hal::Bumpers&>(*gpio_) : sim_->bumpers();
+  hal::Bumpers& bumpers = gpio_ && !cfg_.gpio.bumper_lines.empty() ? static_cast<hal::Bumpers&>(*gpio_) : *bumpers_;
   auto emergency = std::make_unique<EmergencyModule>(bb_, bumpers, cfg_.emergency, cfg_.robot);
-  auto executor = std::make_unique<ExecutorModule>(bb_, sim_->drive(), cfg_.robot);
+  auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
-  auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), sim_->ring(), ptu::ptu_settings(cfg_.ptu));
+  auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));
   auto gate = std::make_unique<GateModule>(bb_, cfg_);
   auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());
   emergency->add_motion_source(MotionSource::gate, bb_.gate_motion.reader());
@@ -149,7 +207,8 @@ std::optional<std::string> Firmware::setup() {
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
-  const NamedProcess modules[] = {{"sim", stepper.get()},         {"heartbeat", heartbeat.get()},
+  const NamedProcess modules[] = {{"sim", stepper.get()},         {"can", can_},
+                                  {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},
                                   {"emergency", emergency.get()},  {"executor", executor.get()},
                                   {"planner", planner.get()},      {"ptu", ptu.get()},
@@ -157,7 +216,7 @@ std::optional<std::string> Firmware::setup() {
                                   {"demo", demo.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
-  processes_.push_back(std::move(stepper));
+  if (stepper) processes_.push_back(std::move(stepper));
   processes_.push_back(std::move(heartbeat));
   processes_.push_back(std::move(serial));
   processes_.push_back(std::move(us));
@@ -181,7 +240,7 @@ int Firmware::run() {
   if (picture_writer_) picture_writer_->start();
   const int status = kernel_->run();
   if (picture_writer_) picture_writer_->stop();
-  if (opt_.picture.empty()) return status;
+  if (opt_.picture.empty() || !sim_) return status;
   const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
   const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, opt_.picture);
   hal::release_picture_caches();

@@ -13,6 +13,11 @@
 #include "kernel/kernel.hpp"
 #include "modules/topics.hpp"
 
+namespace robuter::hal::can {
+class FrameTransport;
+class CanBackend;
+}  // namespace robuter::hal::can
+
 namespace robuter {
 namespace hal {
 class GpioLines;
@@ -41,6 +46,7 @@ struct FirmwareOptions {
   std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
   bool open_devices = true;           // open serial devices and GPIO chips (false: --check-config)
   std::string planner_pictures;       // folder for a PNG of every plan (map and path), empty = none
+  hal::can::FrameTransport* can_transport = nullptr;  // tests: the CAN backends use this bus instead of SocketCAN
 };
 
 class Firmware {
@@ -58,6 +64,8 @@ class Firmware {
   Kernel& kernel() { return *kernel_; }
   Blackboard& blackboard() { return bb_; }
   hal::SimRobot* sim() { return sim_.get(); }
+  // The CAN backend process when [hardware] uses CAN (not with --sim), else null.
+  hal::can::CanBackend* can() { return can_; }
   // The virtual clock when running as fast as possible (tests step it), else null.
   VirtualClock* virtual_clock() { return dynamic_cast<VirtualClock*>(clock_.get()); }
   // Paths of the pty slaves created, in the order of FirmwareOptions::ptys.
@@ -71,7 +79,17 @@ class Firmware {
   FirmwareOptions opt_;
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
+  // The robot's hardware without --sim: [hardware] backends (docs/CAN.md).
+  std::optional<std::string> setup_hardware();
+
   std::unique_ptr<hal::SimRobot> sim_;
+  std::unique_ptr<hal::can::FrameTransport> can_bus_;  // the SocketCAN socket, when opened here
+  hal::can::CanBackend* can_ = nullptr;                // the CAN process (owned by processes_)
+  std::unique_ptr<hal::Bumpers> own_bumpers_;          // stand-in when no bumper backend exists
+  std::unique_ptr<hal::SonarRing> own_ring_;           // stand-in when [hardware] sonar = "none"
+  hal::Drive* drive_ = nullptr;                        // the executor's drive
+  hal::SonarRing* ring_ = nullptr;                     // the ultrasonic ring (and pan-tilt channel)
+  hal::Bumpers* bumpers_ = nullptr;                    // the contact bumpers
   std::vector<std::unique_ptr<hal::ByteStream>> links_;
   std::unique_ptr<hal::GpioLines> gpio_;             // bumpers and inputs on GPIO, when configured
   std::unique_ptr<hal::ByteStream> ptu_link_;        // the pan-tilt unit's port, when configured

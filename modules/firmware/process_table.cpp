@@ -13,6 +13,7 @@ namespace {
 // prio 3, execute 10/2 prio 4, emergency 10/4 prio 5 (higher runs first in a shared tick).
 constexpr DefaultRow kDefaults[] = {
     {"sim", 1, 0, 99, 5000},        // simulated world (SITL only): first in every tick
+    {"can", 1, 0, 90, 2000},        // CAN bus (hardware only): frames in, drive/sonar supervision, RPDOs, SYNC
     {"serial", 2, 0, 3, 2000},      // command links (seed serial_spy 2, 3, 0)
     {"us", 4, 2, 2, 2000},          // ultrasonic ring (seed read_sensors 4, 2, 6: offset 6 ≥ period, so 6 mod 4)
     {"executor", 10, 2, 4, 2000},   // motors and odometry (seed execute 10, 4, 2)

@@ -26,6 +26,17 @@ check bad-world-env 2 "world: $configs/bad_world.env:2: bad count" "$bin" --sim 
 check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nope.toml --ticks 1
 check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
 
+# Hardware backends (docs/CAN.md): without AF_CAN in the kernel the CAN backend fails at start-up
+# naming the missing family; with it, the missing interface is named.
+check no-backend 2 "no hardware backend configured" "$bin" --ticks 1
+check can-same-node 2 "can_same_node.toml:3: key 'can.right_node': 3 is also can.left_node" "$bin" --config "$configs/can_same_node.toml"
+check bad-hardware 2 "bad_hardware.toml:2: key 'hardware.drive': 'ethercat' is not one of: none, can" "$bin" --config "$configs/bad_hardware.toml"
+if python3 -c 'import socket; socket.socket(socket.PF_CAN, socket.SOCK_RAW, socket.CAN_RAW)' 2>/dev/null; then
+  check can-no-interface 2 "CAN interface 'robutercan9': if_nametoindex: No such device — no such network interface" "$bin" --config "$configs/can_hardware.toml" --ticks 1
+else
+  check can-no-af-can 2 "CAN interface 'robutercan9': socket(PF_CAN, SOCK_RAW, CAN_RAW): Address family not supported by protocol — this kernel has no SocketCAN (address family AF_CAN/PF_CAN missing)" "$bin" --config "$configs/can_hardware.toml" --ticks 1
+fi
+
 # SIGINT and SIGTERM: clean stop, exit status 0 (sent once robuterd says it is starting: the
 # handlers are installed before that line).
 log=$(mktemp)

@@ -19,12 +19,22 @@ SimFirmware::SimFirmware(const std::string& world, const Config& cfg, hal::SimOp
   dir_ = mkdtemp(tmpl);
   FirmwareOptions opt;
   opt.sim = true;
-  opt.speed = 0.0;  // virtual clock: the test steps time
   sim.world_file = world;
   opt.sim_options = sim;
-  opt.ptys = {dir_ + "/robuter.pty"};
   if (with_ptu) opt.ptu_pty = opt.ptu_port = dir_ + "/ptu.pty";
   opt.planner_pictures = planner_pictures;
+  open(cfg, opt);
+}
+
+SimFirmware::SimFirmware(const Config& cfg, FirmwareOptions opt) {
+  char tmpl[] = "/tmp/robuter-test-XXXXXX";
+  dir_ = mkdtemp(tmpl);
+  open(cfg, opt);
+}
+
+void SimFirmware::open(const Config& cfg, FirmwareOptions opt) {
+  opt.speed = 0.0;  // virtual clock: the test steps time
+  opt.ptys = {dir_ + "/robuter.pty"};
   fw_ = std::make_unique<Firmware>(cfg, opt);
   if (auto err = fw_->setup()) {
     error_ = *err;

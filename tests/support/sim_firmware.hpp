@@ -21,6 +21,9 @@ class SimFirmware {
   // picture of every plan is written there (robuterd --planner-pictures), drawn between ticks.
   explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {},
                        bool with_ptu = false, const std::string& planner_pictures = "");
+  // Builds and starts the firmware from `opt` as given (e.g. hardware backends on a test CAN
+  // bus, opt.sim false), with the harness's virtual clock and pty link added.
+  SimFirmware(const Config& cfg, FirmwareOptions opt);
   ~SimFirmware();
   SimFirmware(const SimFirmware&) = delete;
   SimFirmware& operator=(const SimFirmware&) = delete;
@@ -71,6 +74,9 @@ class SimFirmware {
   double seconds() const;  // simulated time, s
 
  private:
+  // The common start: virtual clock, pty link in a temporary folder, setup, client, kernel start.
+  void open(const Config& cfg, FirmwareOptions opt);
+
   std::string dir_;                 // temporary folder of the pty link
   std::unique_ptr<Firmware> fw_;
   int client_ = -1;                 // the client's end (pty slave)

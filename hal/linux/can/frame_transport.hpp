@@ -1,0 +1,47 @@
+// CAN frame transport: the one interface every CAN frame of robuterd goes through (SocketCAN or loopback).
+#pragma once
+
+#include <linux/can.h>
+
+#include <cstdint>
+
+namespace robuter::hal::can {
+
+// The controller's fault confinement state (ISO 11898-1), as the transport last learnt it.
+enum class BusState : std::uint8_t {
+  active,   // error-active: normal
+  warning,  // an error counter reached 96: still working, reported only
+  passive,  // error-passive (a counter reached 128): frames may be delayed or lost
+  off,      // bus-off (transmit counter reached 256): the controller no longer takes part
+};
+
+// Short stable word for logs and docs ("error-active", "bus-off", …).
+const char* bus_state_name(BusState s);
+
+// Figures of a transport since it opened.
+struct TransportCounters {
+  std::uint64_t sent = 0;          // frames handed to the bus, count
+  std::uint64_t received = 0;      // data frames received, count
+  std::uint64_t send_failed = 0;   // frames not sent (queue full, bus-off, interface down), count
+  std::uint64_t error_frames = 0;  // controller error frames received, count
+};
+
+// Non-blocking send and receive of classic CAN frames (struct can_frame of linux/can.h) plus the
+// bus state. Implementations never block and never allocate after they are open.
+class FrameTransport {
+ public:
+  virtual ~FrameTransport() = default;
+  // A short name for logs ("socketcan can0", "loopback drive-1").
+  virtual const char* name() const = 0;
+  // Descriptor that becomes readable when frames arrive, or -1 when there is none (loopback).
+  virtual int fd() const = 0;
+  // Queues one frame for the bus now; false when it could not (bus-off, queue full, down).
+  virtual bool send(const can_frame& f) = 0;
+  // Takes the next received data frame; false when none is waiting. Error frames are consumed
+  // here too: they update bus_state() and are never returned.
+  virtual bool receive(can_frame& out) = 0;
+  virtual BusState bus_state() const = 0;
+  virtual const TransportCounters& counters() const = 0;
+};
+
+}  // namespace robuter::hal::can
