@@ -42,17 +42,15 @@ void CanBackend::start(std::int64_t now_us) {
   if (ring_) ring_->start(now_us);
 }
 
+// The socket is polled every tick, not watched: the drives answer the SYNC within the tick, and
+// an event activation between ticks would either send another SYNC (a feedback loop with the
+// drives' answers) or leave the frames for the modules that only run on their own periods anyway.
 bool CanBackend::init(Kernel& k) {
   start(micros(k));
-  if (bus_.fd() >= 0) watching_ = k.watch_fd(bus_.fd(), this);
   log::info("can: {} up{}{}", bus_.name(), drive_ ? ", drives" : "", ring_ ? ", ultrasonic nodes" : "");
   return true;
 }
 
-void CanBackend::close(Kernel& k) {
-  if (watching_) k.unwatch_fd(bus_.fd());
-  watching_ = false;
-}
 
 void CanBackend::run(Kernel& k) { service(micros(k)); }
 

@@ -35,7 +35,6 @@ class CanBackend final : public Process {
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
-  void close(Kernel& k) override;
 
  private:
   // Logs what changed since the last activation (transitions only).
@@ -47,7 +46,6 @@ class CanBackend final : public Process {
   BusState last_bus_ = BusState::active;        // for transition logs
   DriveHealth last_health_ = DriveHealth::silent;
   std::uint64_t unknown_ = 0;                    // frames no one took, count
-  bool watching_ = false;                        // the transport's fd is watched
 };
 
 }  // namespace robuter::hal::can
