@@ -58,8 +58,8 @@ class BucketRing {
   }
   // Why: take a node from the lowest non-empty bucket (the ring must not be empty).
   std::uint32_t pop() {
-    while (head_[cur_ & mask_] == kNil) ++cur_;
-    const std::uint32_t v = head_[cur_ & mask_];
+    while (head_[slot(cur_)] == kNil) ++cur_;
+    const std::uint32_t v = head_[slot(cur_)];
     unlink(v, cur_);
     --size_;
     return v;
@@ -67,8 +67,11 @@ class BucketRing {
 
  private:
   std::uint64_t bucket(double f) const { return static_cast<std::uint64_t>(f * inv_width_); }
+  // Why: a bucket's place in the ring. Below 4096 (reset()), so exact where size_t has 32 bits (armhf);
+  // the absolute bucket index itself stays 64-bit.
+  std::size_t slot(std::uint64_t b) const { return static_cast<std::size_t>(b & mask_); }
   void link(std::uint32_t v, std::uint64_t b) {
-    std::uint32_t& h = head_[b & mask_];
+    std::uint32_t& h = head_[slot(b)];
     next_[v] = h;
     prev_[v] = kNil;
     if (h != kNil) prev_[h] = v;
@@ -77,7 +80,7 @@ class BucketRing {
   void unlink(std::uint32_t v, std::uint64_t b) {
     const std::uint32_t p = prev_[v], n = next_[v];
     if (p != kNil) next_[p] = n;
-    else head_[b & mask_] = n;
+    else head_[slot(b)] = n;
     if (n != kNil) prev_[n] = p;
   }
 
