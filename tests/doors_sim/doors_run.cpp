@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "hal/sim/render.hpp"
 #include "tests/doors_sim/crossing_run.hpp"
 
 int main(int argc, char** argv) {
@@ -53,5 +54,6 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  robuter::sim::release_render_caches();
   return failures == 0 ? 0 : 1;
 }
