@@ -19,6 +19,7 @@ struct PlanSnapshot {
 
   MapGeometry geometry;                  // cells, m per cell, origin (m)
   std::vector<std::uint8_t> cells;       // width × height, row y = 0 first (see above)
+  std::vector<std::uint16_t> blocked;    // scratch of capture(): blocking layers per cell, count
   std::vector<Waypoint> path;            // capacity: the longest path kept
   std::size_t path_len = 0;              // waypoints used in `path`
   bool path_truncated = false;           // the plan had more waypoints than `path` holds

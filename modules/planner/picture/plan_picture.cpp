@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <string_view>
 
 namespace robuter::plan {
 
@@ -33,8 +31,7 @@ Status write_plan_picture(const PlanSnapshot& snap, const std::string& path) {
   if (w <= 0 || h <= 0 || snap.cells.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
     return Error{path, 0, "empty snapshot: nothing to draw"};
   const int scale = std::clamp(1200 / std::max(w, h), 1, 8);
-  const int caption = 18;
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w * scale, h * scale + caption);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w * scale, h * scale);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
@@ -90,16 +87,6 @@ Status write_plan_picture(const PlanSnapshot& snap, const std::string& path) {
   cairo_set_source_rgb(cr, 0.8, 0.0, 0.8);
   cairo_arc(cr, px(snap.goal.x), py(snap.goal.y), mark, 0, 2 * kPi);
   cairo_fill(cr);
-  char text[200];
-  std::snprintf(text, sizeof text, "plan %u%s: %.*s%s, %.2f m; start %.2f %.2f, goal %.2f %.2f", snap.plan_number,
-                snap.goal_seq ? "" : " (tool)", static_cast<int>(to_string(snap.status).size()),
-                to_string(snap.status).data(), snap.path_truncated ? " (path truncated)" : "", snap.length,
-                snap.start.x, snap.start.y, snap.goal.x, snap.goal.y);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 12);
-  cairo_move_to(cr, 4, h * scale + 13);
-  cairo_show_text(cr, text);
   cairo_destroy(cr);
   const cairo_status_t st = cairo_surface_write_to_png(surface, path.c_str());
   cairo_surface_destroy(surface);

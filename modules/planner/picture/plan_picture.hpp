@@ -12,8 +12,9 @@ namespace robuter::plan {
 // firmware's picture writer both draw them here. Obstacles black, expanded obstacles grey
 // (orange where the rectangle fits at some headings), unknown light grey, the path red (the
 // followed prefix darker and thicker), the rectangle's outline blue at turns and every 0.5 m,
-// the start green, the goal magenta, a caption with the plan's number and outcome. Blocking
-// file I/O: never call it from the periodic path.
+// the start green, the goal magenta. No text is drawn: fonts would bring fontconfig's caches,
+// which leak-checking builds report (the plan's number is in the file name). Blocking file I/O:
+// never call it from the periodic path.
 Status write_plan_picture(const PlanSnapshot& snapshot, const std::string& path);
 
 }  // namespace robuter::plan
