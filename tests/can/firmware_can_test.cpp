@@ -120,6 +120,19 @@ TEST(CanFirmware, DriveFaultEndsInEmergencyAndRecovers) {
       << "moves again after recovery";
 }
 
+// A drive without EMCY: the statusword's fault bit (TPDO1) alone trips the emergency.
+TEST(CanFirmware, StatuswordFaultAloneEndsInEmergency) {
+  CanRobot r;
+  r.boot_and_move();
+  r.left->set_emcy(false);
+  r.left->inject_fault(0x7300);
+  ASSERT_TRUE(r.fw->run_until([&] { return r.emergency().latched; }, 20));
+  EXPECT_EQ(r.emergency().cause, EmergencyCause::drive_fault);
+  EXPECT_EQ(r.xe_cause(), "drive-fault");
+  EXPECT_EQ(r.fw->firmware().can()->drive()->left().status().emcy_code, 0) << "no EMCY was sent";
+  ASSERT_TRUE(r.fw->run_until([&] { return r.right->velocity() == 0.0; }, 20));
+}
+
 TEST(CanFirmware, ErrorPassiveEndsInEmergency) {
   CanRobot r;
   r.boot_and_move();

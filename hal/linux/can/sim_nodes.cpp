@@ -33,7 +33,7 @@ void SimDriveNode::reboot(std::int64_t now_us) {
 void SimDriveNode::inject_fault(std::uint16_t code) {
   fault_cause_ = true;
   state_ = State::fault_reaction_active;
-  send(emcy(node_, code, 0x01));  // error register bit 0: generic error
+  if (emcy_) send(emcy(node_, code, 0x01));  // error register bit 0: generic error
 }
 
 // NMT for this node or all; SDO writes to the two objects the host configures; RPDO1 and SYNC
@@ -76,7 +76,7 @@ void SimDriveNode::take(const can_frame& f, std::int64_t now_us) {
     state_ = apply_controlword(state_, cw, controlword_);
     if (before == State::fault && state_ != State::fault) {
       if (fault_cause_) state_ = State::fault;  // the cause is still there: the reset fails
-      else send(emcy(node_, 0x0000, 0x00));       // error reset
+      else if (emcy_) send(emcy(node_, 0x0000, 0x00));  // error reset
     }
     controlword_ = cw;
     target_ = v;

@@ -28,6 +28,9 @@ class SimDriveNode {
   void reboot(std::int64_t now_us);
   // Refuses SDO writes to 0x6060 (abort 0x06090030, value range exceeded).
   void refuse_mode(bool on) { refuse_mode_ = on; }
+  // Sends no EMCY (a drive whose emergency object is not configured): faults show in the
+  // statusword only.
+  void set_emcy(bool on) { emcy_ = on; }
 
   cia402::State state() const { return state_; }
   cia402::NmtState nmt_state() const { return nmt_; }
@@ -61,6 +64,7 @@ class SimDriveNode {
   bool fault_cause_ = false;                       // the injected fault's cause is still present
   bool silent_ = false;
   bool refuse_mode_ = false;
+  bool emcy_ = true;                               // EMCY frames are sent
   std::uint32_t rpdos_ = 0;
 };
 
