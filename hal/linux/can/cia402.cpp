@@ -1,28 +1,16 @@
 // CiA 301/402 subset: statusword decoding, the drive state machine on both sides, frame encoders and parsers.
 #include "hal/linux/can/cia402.hpp"
 
+#include "hal/linux/can/frame_bytes.hpp"
+
 namespace robuter::hal::can::cia402 {
 
 namespace {
-// A zeroed standard frame with `id` and `len` bytes.
-can_frame frame(canid_t id, std::uint8_t len) {
-  can_frame f{};
-  f.can_id = id;
-  f.len = len;
-  return f;
-}
-void put16(std::uint8_t* p, std::uint16_t v) {
-  p[0] = static_cast<std::uint8_t>(v);
-  p[1] = static_cast<std::uint8_t>(v >> 8);
-}
-void put32(std::uint8_t* p, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
-}
-std::uint16_t get16(const std::uint8_t* p) { return static_cast<std::uint16_t>(p[0] | (p[1] << 8)); }
-std::uint32_t get32(const std::uint8_t* p) {
-  return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8) |
-         (static_cast<std::uint32_t>(p[2]) << 16) | (static_cast<std::uint32_t>(p[3]) << 24);
-}
+using bytes::frame;
+using bytes::get16;
+using bytes::get32;
+using bytes::put16;
+using bytes::put32;
 // Standard data frame with the exact id `id` and at least `len` bytes.
 bool is(const can_frame& f, canid_t id, std::uint8_t len) {
   return (f.can_id & (CAN_EFF_FLAG | CAN_RTR_FLAG | CAN_ERR_FLAG)) == 0 && f.can_id == id && f.len >= len;

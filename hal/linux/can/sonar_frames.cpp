@@ -2,35 +2,27 @@
 #include "hal/linux/can/sonar_frames.hpp"
 
 #include "hal/linux/can/cia402.hpp"
+#include "hal/linux/can/frame_bytes.hpp"
 
 namespace robuter::hal::can::sonar {
 
 namespace {
-can_frame frame(canid_t id, std::uint8_t len) {
-  can_frame f{};
-  f.can_id = id;
-  f.len = len;
-  return f;
-}
-std::uint16_t get16(const std::uint8_t* p) { return static_cast<std::uint16_t>(p[0] | (p[1] << 8)); }
+using bytes::frame;
+using bytes::get16;
+using bytes::put16;
 }  // namespace
 
 can_frame fire(std::uint8_t node, std::uint8_t mask, std::uint16_t timeout_ms, std::uint16_t sound_speed_m_s) {
   can_frame f = frame(kFire + node, 5);
   f.data[0] = mask;
-  f.data[1] = static_cast<std::uint8_t>(timeout_ms);
-  f.data[2] = static_cast<std::uint8_t>(timeout_ms >> 8);
-  f.data[3] = static_cast<std::uint8_t>(sound_speed_m_s);
-  f.data[4] = static_cast<std::uint8_t>(sound_speed_m_s >> 8);
+  put16(&f.data[1], timeout_ms);
+  put16(&f.data[3], sound_speed_m_s);
   return f;
 }
 
 can_frame ranges(std::uint8_t node, const std::array<std::uint16_t, 4>& mm) {
   can_frame f = frame(kRanges + node, 8);
-  for (int i = 0; i < 4; ++i) {
-    f.data[2 * i] = static_cast<std::uint8_t>(mm[i]);
-    f.data[2 * i + 1] = static_cast<std::uint8_t>(mm[i] >> 8);
-  }
+  for (int i = 0; i < 4; ++i) put16(&f.data[2 * i], mm[i]);
   return f;
 }
 
