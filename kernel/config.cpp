@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "kernel/log.hpp"
+#include "kernel/sim_section.hpp"
 
 namespace robuter {
 
@@ -93,6 +94,12 @@ class Binder {
     tables_.insert(key);
   }
 
+  // Marks a table as known and leaves its contents to their owner (not walked for unknown keys).
+  void foreign(const std::string& key) {
+    table(key);
+    foreign_.insert(key);
+  }
+
   // Marks `key` as known and returns its node (null when absent), for keys checked by hand.
   const toml::node* claim(const std::string& key) { return lookup(key); }
 
@@ -134,7 +141,7 @@ class Binder {
         return;
       }
       if (const auto* sub = v.as_table()) {
-        walk(*sub, key);
+        if (!foreign_.count(key)) walk(*sub, key);
       } else if (tables_.count(key)) {
         error_ = ConfigError{file_, static_cast<int>(k.source().begin.line), key,
                              fmt::format("expected a table, got {}", type_name(v))};
@@ -147,6 +154,7 @@ class Binder {
   const toml::table& root_;
   std::set<std::string> known_;   // keys the schema bound
   std::set<std::string> tables_;  // keys that must be tables
+  std::set<std::string> foreign_; // tables whose keys their owner checks
   std::optional<ConfigError> error_;
 };
 
@@ -231,6 +239,7 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("ptu.filter_high_mm", p.filter_high_mm, 0, 20'000);
   b.integer("ptu.filter_drop_mm", p.filter_drop_mm, 0, 20'000);
   b.integer("ptu.pivot_x_mm", p.pivot_x_mm, -5000, 5000);
+  b.integer("ptu.box_width_mm", p.box_width_mm, 0, 1000);
   b.integer("ptu.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
   if (!b.error() && p.min_position >= p.max_position)
     b.fail_key("ptu.max_position", fmt::format("{} is not above ptu.min_position {}", p.max_position, p.min_position));
@@ -248,9 +257,6 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("gate.max_manoeuvres", g.max_manoeuvres, 1, 100);
   b.boolean("gate.hand_over", g.hand_over);
 
-  b.integer("doors.pan_x_mm", d.pan_x_mm, 0, 10'000);
-  b.integer("doors.pan_y_mm", d.pan_y_mm, 0, 10'000);
-  b.integer("doors.box_width_mm", d.box_width_mm, 0, 1000);
   b.integer("doors.safety_mm", d.safety_mm, 0, 1000);
   b.integer("doors.max_dist_mm", d.max_dist_mm, 100, 20'000);
   b.integer("doors.time_before_move_ticks", d.time_before_move_ticks, 1, 1'000'000);
@@ -275,7 +281,6 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
   b.integer("planner.cell_mm", p.cell_mm, 10, 500);
   b.string("planner.footprint", p.footprint, {"rectangle", "disc"});
   b.integer("planner.disc_radius_mm", p.disc_radius_mm, 50, 5000);
-  b.integer("planner.body_center_ahead_mm", p.body_center_ahead_mm, 0, 5000);
   b.integer("planner.margin_mm", p.margin_mm, 0, 1000);
   b.integer("planner.turn_clearance_mm", p.turn_clearance_mm, 0, 1000);
   b.integer("planner.heading_slices", p.heading_slices, 4, 64);
@@ -354,6 +359,10 @@ void bind(Binder& b, const toml::table& root, Config& c) {
                         "demo", "process", "modules", "links", "hardware", "can"})
     b.table(t);
 
+  b.foreign("sim");  // the simulated robot's own parameters: hal/sitl checks them
+  if (const toml::node* n = b.claim("sim"); n && n->is_table())
+    c.sim = std::make_shared<const SimSection>(SimSection{*n->as_table()});
+
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
   b.boolean("kernel.realtime", c.kernel.realtime);
   b.integer("kernel.rt_priority", c.kernel.rt_priority, 1, 99);
@@ -362,9 +371,14 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 
   b.integer("robot.length_mm", c.robot.length_mm, 100, 10'000);
   b.integer("robot.width_mm", c.robot.width_mm, 100, 10'000);
+  b.integer("robot.axle_to_front_mm", c.robot.axle_to_front_mm, 1, 10'000);
   b.integer("robot.wheel_base_mm", c.robot.wheel_base_mm, 100, 10'000);
   b.integer("robot.max_speed_cm_s", c.robot.max_speed_cm_s, 1, 500);
   b.integer("robot.max_accel_cm_s2", c.robot.max_accel_cm_s2, 1, 10'000);
+
+  if (c.robot.axle_to_front_mm >= c.robot.length_mm)
+    return b.fail_key("robot.axle_to_front_mm", fmt::format("{} must be shorter than robot.length_mm {}",
+                                                            c.robot.axle_to_front_mm, c.robot.length_mm));
 
   b.integer("sonar.node_delay_ticks", c.sonar.node_delay_ticks, 0, 1000);
   b.integer("sonar.timeout_ms", c.sonar.timeout_ms, 1, 1000);
@@ -415,6 +429,21 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 }
 
 }  // namespace
+
+robot::RobotModel robot_model(const Config& c) {
+  const auto m = [](std::int64_t v) { return static_cast<double>(v) / 1000.0; };
+  robot::RobotModel r = robot::kRobuter;
+  r.body.length = m(c.robot.length_mm);
+  r.body.width = m(c.robot.width_mm);
+  r.body.axle_to_front = m(c.robot.axle_to_front_mm);
+  r.wheels.base = m(c.robot.wheel_base_mm);
+  r.wheels.max_speed = c.robot.max_speed_cm_s / 100.0;
+  r.wheels.max_accel = c.robot.max_accel_cm_s2 / 100.0;
+  r.pan_tilt.pivot_x = m(c.ptu.pivot_x_mm);
+  r.pan_tilt.face_offset = m(c.ptu.box_width_mm) / 2.0;
+  r.pan_tilt.half_angle = c.ptu.beam_half_angle_centideg * robot::kDeg / 100.0;
+  return r;
+}
 
 std::optional<ConfigError> parse_config(std::string_view text, const std::string& file, Config& out) {
   Config c;

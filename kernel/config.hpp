@@ -3,9 +3,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "robot/robot_model.hpp"
 
 namespace robuter {
 
@@ -28,13 +31,15 @@ struct ProcessOverride {
   int line = 0;                            // line of its table in the file, for errors
 };
 
-// The Robuter's body (seed 002).
+// The robot the firmware believes it drives: the body and wheels of robot/robot_model.hpp, in
+// the configuration's units (robot_model() turns the whole configuration into the model).
 struct RobotConfig {
-  std::uint32_t length_mm = 1025;        // rectangle length along x, mm
-  std::uint32_t width_mm = 700;          // rectangle width, mm
-  std::uint32_t wheel_base_mm = 600;     // distance between the drive wheels (DBW), mm
-  std::uint32_t max_speed_cm_s = 100;    // largest wheel speed accepted, cm/s
-  std::uint32_t max_accel_cm_s2 = 50;    // wheel acceleration limit, cm/s²
+  std::uint32_t length_mm = robot::mm_u(robot::kRobuter.body.length);         // rectangle length along x, mm
+  std::uint32_t width_mm = robot::mm_u(robot::kRobuter.body.width);           // rectangle width, mm
+  std::uint32_t axle_to_front_mm = robot::mm_u(robot::kRobuter.body.axle_to_front);  // wheel axle to the front face, mm
+  std::uint32_t wheel_base_mm = robot::mm_u(robot::kRobuter.wheels.base);     // distance between the drive wheels (DBW), mm
+  std::uint32_t max_speed_cm_s = robot::mm_u(robot::kRobuter.wheels.max_speed) / 10;  // largest wheel speed accepted, cm/s
+  std::uint32_t max_accel_cm_s2 = robot::mm_u(robot::kRobuter.wheels.max_accel) / 10; // wheel acceleration limit, cm/s²
 };
 
 // Ultrasonic ring timing (us.c).
@@ -83,8 +88,9 @@ struct PanTiltConfig {
   std::uint32_t scale_permille = 960;        // calibration scale, ‰ (0.96)
   std::uint32_t filter_high_mm = 2300;       // spike filter: neighbours above this are high, mm (MAX)
   std::uint32_t filter_drop_mm = 1000;       // spike filter: a spike is below high − this, mm
-  std::int32_t pivot_x_mm = -30;             // pan axis ahead of the wheel axle (negative: behind), mm
-  std::uint32_t beam_half_angle_centideg = 1250;  // half-angle of a pan-tilt sonar's beam, 0.01°
+  std::int32_t pivot_x_mm = robot::mm(robot::kRobuter.pan_tilt.pivot_x);  // pan axis ahead of the wheel axle (negative: behind), mm
+  std::uint32_t box_width_mm = robot::mm_u(2.0 * robot::kRobuter.pan_tilt.face_offset);  // between the two transducer faces (BOX_WIDTH), mm
+  std::uint32_t beam_half_angle_centideg = static_cast<std::uint32_t>(robot::centideg(robot::kRobuter.pan_tilt.half_angle));  // half-angle of a pan-tilt sonar's beam, 0.01°
 };
 
 // The passage finder (seed gate.c, gate.h; docs/DOORS.md).
@@ -103,11 +109,9 @@ struct GateConfig {
   bool hand_over = false;                    // start the door crossing when aligned (the seed's door = ON)
 };
 
-// The door crossing (seed doors.c, doors.h; docs/DOORS.md). Body length and width: [robot].
+// The door crossing (seed doors.c, doors.h; docs/DOORS.md). The body and the pan-tilt's place on
+// it (PAN_X/Y_POSITION, BOX_WIDTH): the robot model ([robot], [ptu] pivot_x_mm, box_width_mm).
 struct DoorsConfig {
-  std::uint32_t pan_x_mm = 725;              // pan axis to the front face (PAN_X_POSITION), mm
-  std::uint32_t pan_y_mm = 350;              // pan axis to the left side (PAN_Y_POSITION), mm
-  std::uint32_t box_width_mm = 100;          // between the two transducer faces (BOX_WIDTH), mm
   std::uint32_t safety_mm = 35;              // clearance kept from obstacles (SAFETY_DIST), mm
   std::uint32_t max_dist_mm = 1500;          // a side all beyond this: through the door (MAX_DIST), mm
   std::uint32_t time_before_move_ticks = 500;  // blocked on both sides this long: can't cross (TIME_BEFORE_MOVE)
@@ -131,14 +135,13 @@ struct PlannerModuleConfig {
   std::uint32_t cell_mm = 50;            // cell side, mm (seed 000: 5 cm)
   std::string footprint = "rectangle";   // "rectangle" (the body, with heading) or "disc"
   std::uint32_t disc_radius_mm = 780;    // disc footprint radius, mm (axle to a front corner)
-  std::uint32_t body_center_ahead_mm = 183;  // body rectangle centre ahead of the wheel axle, mm
   std::uint32_t margin_mm = 0;           // clearance added all round the body to translate, mm
   std::uint32_t turn_clearance_mm = 250; // more clearance needed to turn in place, mm
   std::uint32_t heading_slices = 16;     // heading slices over a half turn (rectangle)
   std::uint32_t hit_threshold = 2;       // net sonar hits that make a cell an obstacle
   std::uint32_t scan_passes = 2;         // full ring passes waited for at each stop
   std::uint32_t beam_range_mm = 2500;    // readings marked up to this range, mm
-  std::uint32_t beam_half_angle_centideg = 1250;  // ring sonar cone half-angle, 0.01° (0: axis only)
+  std::uint32_t beam_half_angle_centideg = static_cast<std::uint32_t>(robot::centideg(robot::kRobuter.ring.half_angle));  // ring sonar cone half-angle, 0.01° (0: axis only)
   std::uint32_t follow_range_mm = 1500;  // the path is followed this far before a new scan, mm
   std::uint32_t goal_tolerance_mm = 100; // arrived within this distance of the goal, mm
   std::uint32_t drive_speed_cm_s = 20;   // fastest wheel while driving, cm/s
@@ -211,6 +214,8 @@ struct CanConfig {
   std::uint32_t fault_reset_ms = 1000;       // a drive in fault gets a fault reset this often, ms
 };
 
+struct SimSection;  // kernel/sim_section.hpp
+
 struct Config {
   std::string source = "(defaults)";         // file the configuration came from
   KernelConfig kernel;
@@ -229,6 +234,7 @@ struct Config {
   CanConfig can;                             // [can]
   std::vector<ProcessOverride> processes;    // [process.NAME] tables
   std::optional<std::vector<std::string>> enabled_modules;  // [modules] enabled; none = all
+  std::shared_ptr<const SimSection> sim;     // [sim]: the simulated robot's own parameters, null when absent
 };
 
 // A configuration problem: where and what.
@@ -240,6 +246,10 @@ struct ConfigError {
   // "file:line: key 'a.b': what".
   std::string message() const;
 };
+
+// The robot model the configuration describes: robot::kRobuter with [robot]'s body and wheels and
+// [ptu]'s mount (pivot_x_mm, box_width_mm, beam_half_angle_centideg).
+robot::RobotModel robot_model(const Config& c);
 
 // Loads and validates a configuration file; the first problem found is returned.
 std::optional<ConfigError> load_config(const std::string& path, Config& out);

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "kernel/blackboard.hpp"
+#include "robot/ring_wiring.hpp"
 
 namespace robuter {
 
@@ -21,7 +22,7 @@ class GateModule;
 class DoorsModule;
 class DemoModule;
 
-inline constexpr int kSensors = 24;  // ultrasonic ring sensors, numbered 1..24
+inline constexpr int kSensors = robot::kRingSensors;  // ultrasonic ring sensors, numbered 1..24
 
 // Proof of life of the kernel.
 struct Heartbeat {

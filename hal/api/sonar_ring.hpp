@@ -4,20 +4,23 @@
 #include <array>
 #include <cstdint>
 
+#include "robot/ring_wiring.hpp"
+
 namespace robuter::hal {
 
-inline constexpr int kSonarNodes = 6;          // nodes on the ring
-inline constexpr int kSensorsPerNode = 4;      // sensors per node
-inline constexpr int kRingSensors = 24;        // sensors on the ring
+inline constexpr int kSonarNodes = robot::kRingNodes;            // nodes on the ring
+inline constexpr int kSensorsPerNode = robot::kSensorsPerNode;   // sensors per node
+inline constexpr int kRingSensors = robot::kRingSensors;         // sensors on the ring
 inline constexpr int kPanTiltChannel = 7;      // channel of the pan-tilt's two sonars (seed)
 
 // Ranges of one node's four sensors, mm; 0 = inactive or no echo within the time-out.
 using NodeRanges = std::array<std::uint16_t, kSensorsPerNode>;
 
-// Sensor number 1..24 ↔ (node 0..5, index 0..3). Sensor 1 looks forward; numbers run clockwise.
-constexpr int sensor_node(int sensor) { return (sensor - 1) / kSensorsPerNode; }
-constexpr int sensor_index(int sensor) { return (sensor - 1) % kSensorsPerNode; }
-constexpr int sensor_number(int node, int index) { return node * kSensorsPerNode + index + 1; }
+// Sensor number 1..24 ↔ (node 0..5, index 0..3), as the robot model wires them (four
+// consecutive sensors per node). Sensor 1 looks forward; numbers run clockwise.
+constexpr int sensor_node(int sensor) { return robot::wired_node(sensor); }
+constexpr int sensor_index(int sensor) { return robot::wired_slot(sensor); }
+constexpr int sensor_number(int node, int index) { return robot::wired_sensor(node, index); }
 
 class SonarRing {
  public:

@@ -3,16 +3,18 @@
 
 #include "hal/sim/segment_grid.hpp"
 #include "hal/sim/world.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::sim {
 
-// Body and drive geometry. The robot frame has its origin at the midpoint of the wheel axle,
+// Body and drive geometry of the simulated robot, by default the robot model's
+// (robot/robot_model.hpp). The robot frame has its origin at the midpoint of the wheel axle,
 // x forward, y to the left (seen from above).
 struct RobotGeometry {
-  double length = 1.025;        // body length, front face to rear face, m (seed 002)
-  double width = 0.700;         // body width, m (seed 002)
-  double axle_to_front = 0.695; // distance from the wheel axle to the front face, m (inferred)
-  double wheel_base = 0.600;    // distance between the drive wheels, m (seed 002: DBW 600)
+  double length = robot::kRobuter.body.length;                // body length, front face to rear face, m
+  double width = robot::kRobuter.body.width;                  // body width, m
+  double axle_to_front = robot::kRobuter.body.axle_to_front;  // wheel axle to the front face, m
+  double wheel_base = robot::kRobuter.wheels.base;            // distance between the drive wheels, m
 
   // Distance from the wheel axle to the rear face, m.
   double axle_to_rear() const { return length - axle_to_front; }

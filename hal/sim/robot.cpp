@@ -158,7 +158,8 @@ void Robot::integrate_odometry(double dl, double dr) {
     el += od.noise * std::sqrt(std::abs(dl)) * rng_.normal();
     er += od.noise * std::sqrt(std::abs(dr)) * rng_.normal();
   }
-  const double base = params_.geometry.wheel_base + od.wheel_base_error;
+  const double believed = params_.odometry_wheel_base > 0.0 ? params_.odometry_wheel_base : params_.geometry.wheel_base;
+  const double base = believed + od.wheel_base_error;
   odom_ = integrate_arc(odom_, 0.5 * (el + er), (er - el) / base, 1.0);
 }
 

@@ -12,9 +12,9 @@ namespace robuter::sim {
 
 // How fast the wheels may go and change speed.
 struct DriveLimits {
-  double max_wheel_speed = 1.0;  // commands are clamped to ±this, m/s
-  double max_accel = 0.5;        // tread acceleration while a wheel speeds up, m/s²
-  double max_decel = 1.0;        // tread deceleration while a wheel slows down, m/s²
+  double max_wheel_speed = robot::kRobuter.wheels.max_speed;  // commands are clamped to ±this, m/s
+  double max_accel = robot::kRobuter.wheels.max_accel;        // tread acceleration while a wheel speeds up, m/s²
+  double max_decel = 2.0 * robot::kRobuter.wheels.max_accel;  // tread deceleration while a wheel slows down, m/s²
 };
 
 // Differences between what the encoders report and how the robot really moves. All zero (the
@@ -22,7 +22,7 @@ struct DriveLimits {
 struct OdometryErrors {
   double scale_left = 0.0;        // left encoder reads (1 + this) × its wheel travel, fraction
   double scale_right = 0.0;       // right encoder scale error, fraction
-  double wheel_base_error = 0.0;  // odometry assumes wheel_base + this, m
+  double wheel_base_error = 0.0;  // odometry assumes (odometry_wheel_base or wheel_base) + this, m
   double noise = 0.0;             // random encoder error, m per √m of wheel travel
   double slip_mean = 0.0;         // mean fraction of wheel travel lost to slip on the floor
   double slip_sigma = 0.0;        // deviation of that fraction, drawn per wheel per sub-step
@@ -34,6 +34,8 @@ struct RobotParams {
   RobotGeometry geometry;              // body and wheel geometry
   DriveLimits limits;                  // speed and acceleration limits
   OdometryErrors odometry;             // encoder and slip errors
+  double odometry_wheel_base = 0.0;    // wheel base the odometry integrates with (what the
+                                       // firmware believes), m; 0 = the true geometry's
   double contact_tolerance = 0.001;    // the bumper is pressed within this distance of an edge, m
   double max_substep_travel = 0.02;    // no body point moves further between contact checks, m
   double max_ramp_substep = 0.005;     // longest sub-step while wheel speeds ramp, s

@@ -138,14 +138,6 @@ void read_sensor(const toml::table& t, std::string_view file, RingLayout& layout
   if (auto v = f.opt_number("x")) m.position.x() = *v;
   if (auto v = f.opt_number("y")) m.position.y() = *v;
   if (auto v = f.opt_number("direction_deg")) m.direction = wrap_angle(deg_to_rad(*v));
-  if (auto v = f.opt_integer("node")) {
-    if (*v < 1 || *v > kRingNodes) f.fail_at(*f.get("node"), "node: must be within 1..6");
-    m.node = static_cast<int>(*v);
-  }
-  if (auto v = f.opt_integer("slot")) {
-    if (*v < 1 || *v > 4) f.fail_at(*f.get("slot"), "slot: must be within 1..4");
-    m.slot = static_cast<int>(*v);
-  }
   f.finish();
 }
 

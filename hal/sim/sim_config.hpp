@@ -34,7 +34,8 @@ struct SimConfig {
 //   [sonar]    half_angle_deg timeout_ms sound_speed min_range max_incidence_deg noise_sigma
 //              noise_relative spurious_probability dropout_probability scale offset no_echo
 //              node_delay_ms seed
-//   [[sonar.sensor]] number (1..24, required) x y direction_deg node slot
+//   [[sonar.sensor]] number (1..24, required) x y direction_deg (a mounting error; the node
+//              wiring is the robot model's)
 //   [pan_tilt] x y sensor_offset and the [sonar] behaviour keys (except node_delay_ms, seed)
 // Unknown keys are errors (with file and line).
 Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view file,

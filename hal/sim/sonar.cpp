@@ -187,7 +187,7 @@ double SonarModel::measure_from(const Vec2& origin, double direction, Rng* rng) 
     }
   }
   if (r < 0.0 || r > rmax) return params_.no_echo;
-  return params_.scale * r + params_.offset;
+  return params_.scale * params_.ranging_scale() * r + params_.offset;
 }
 
 }  // namespace robuter::sim

@@ -7,27 +7,32 @@
 #include "hal/sim/rng.hpp"
 #include "hal/sim/segment_grid.hpp"
 #include "hal/sim/world.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::sim {
 
 // How one kind of sonar behaves. Defaults are the Robuter ring's (seed 002: time-out 33 ms,
 // calibrated sound speed 300 m/s, so about 5 m of range).
 struct SonarParams {
-  double half_angle = deg_to_rad(12.5);    // half-angle of the beam cone, rad (< 90°)
+  double half_angle = robot::kRobuter.ring.half_angle;  // half-angle of the beam cone, rad (< 90°)
   double timeout = 0.033;                  // listening time after firing, s
-  double sound_speed = 300.0;              // speed of sound used for ranging, m/s
+  double sound_speed = 300.0;              // speed of sound in the air, m/s (echo times, time-out range)
+  double ranging_speed = 0.0;              // speed the receiver turns echo times into ranges with
+                                           // (the firmware's calibration), m/s; 0 = sound_speed
   double min_range = 0.15;                 // echoes nearer than this are lost in blanking, m
   double max_incidence = deg_to_rad(40.0); // echoes hitting a surface more obliquely are lost, rad
   double noise_sigma = 0.0;                // Gaussian range noise, m
   double noise_relative = 0.0;             // extra Gaussian noise proportional to range, fraction
   double spurious_probability = 0.0;       // chance a reading is a spurious short echo
   double dropout_probability = 0.0;        // chance a reading misses its echo entirely
-  double scale = 1.0;                      // reported = scale · range + offset (calibration error)
+  double scale = 1.0;                      // reported = scale · ranging_scale() · range + offset (calibration error)
   double offset = 0.0;                     // see scale, m
   double no_echo = 0.0;                    // value reported when nothing echoes in time, m
 
   // Farthest echo that returns before the time-out, m.
   double max_range() const { return timeout * sound_speed * 0.5; }
+  // Reported range per metre of true range from the ranging speed alone.
+  double ranging_scale() const { return ranging_speed > 0.0 ? ranging_speed / sound_speed : 1.0; }
 };
 
 // Where a sensor sits on the robot and which way it looks.
@@ -35,8 +40,6 @@ struct SonarMount {
   int number = 0;           // sensor number, 1..24 on the ring (0 for other sensors)
   Vec2 position;            // transducer position in the robot frame, m
   double direction = 0.0;   // beam axis in the robot frame, rad (0 forward, counter-clockwise)
-  int node = 0;             // ring node that fires it, 1..6 (0 if not on the ring)
-  int slot = 0;             // position within its node, 1..4
 };
 
 // The nearest echo of one firing, before noise and calibration are applied.

@@ -1,5 +1,5 @@
-// The Robuter's 24-sensor ultrasonic ring and the pan-tilt's two back-to-back sonars: default
-// mounting tables (see docs/SIMULATOR.md for how they were inferred from seed 002).
+// The simulated ring's and pan-tilt's mounts, by default the robot model's (robot/robot_model.hpp,
+// docs/ROBOT.md), and the trajectory radius through a sensor.
 #pragma once
 
 #include <array>
@@ -9,14 +9,14 @@
 
 namespace robuter::sim {
 
-constexpr int kRingSensors = 24;  // sensors on the ring (seed 002)
-constexpr int kRingNodes = 6;     // nodes that fire them, four sensors each
+constexpr int kRingSensors = robot::kRingSensors;  // sensors on the ring
+constexpr int kRingNodes = robot::kRingNodes;      // nodes that fire them
 
 // Mounting of every ring sensor; entry i is sensor number i + 1.
 using RingLayout = std::array<SonarMount, kRingSensors>;
 
-// The default ring: sensor 1 looks forward and numbers run clockwise seen from above (7 right,
-// 13 rear, 19 left). Sensors 2-6 sit where the seed's emergency thresholds put them.
+// The robot model's ring as mounts: sensor 1 looks forward and numbers run clockwise seen from
+// above (7 right, 13 rear, 19 left).
 RingLayout default_ring_layout();
 
 // The ring's default sonar behaviour (33 ms time-out, 300 m/s).
@@ -27,11 +27,10 @@ SonarParams default_ring_params();
 // for sensors on the right, infinite on the centre line.
 double trajectory_radius(const SonarMount& mount);
 
-// Where the pan-tilt unit carries its two sonars.
+// Where the pan-tilt unit carries its two sonars (the robot model's mount by default).
 struct PanTiltMount {
-  Vec2 pivot{-0.030, 0.0};     // pan axis in the robot frame, m (seed: 725 mm from the front,
-                               // 350 mm from the left side)
-  double sensor_offset = 0.05; // pan axis to each transducer face, m (half the 100 mm box)
+  Vec2 pivot{robot::kRobuter.pan_tilt.pivot_x, 0.0};             // pan axis in the robot frame, m
+  double sensor_offset = robot::kRobuter.pan_tilt.face_offset;   // pan axis to each transducer face, m
 };
 
 // The pan-tilt sonars' default behaviour: 15 ms time-out at 335 m/s, and the raw-reading error

@@ -3,14 +3,12 @@
 
 namespace robuter::sim {
 
-// A node fires when any of its sensors is active; a node absent from the layout never fires.
-int plan_scan(const RingLayout& layout, std::span<const bool, kRingSensors> active,
-              const RingTiming& timing, double t0, std::span<NodeFiring, kRingNodes> out) {
+// A node fires when any of its sensors is active (the robot model's wiring; nodes 1..6 here).
+int plan_scan(std::span<const bool, kRingSensors> active, const RingTiming& timing, double t0,
+              std::span<NodeFiring, kRingNodes> out) {
   bool fires[kRingNodes + 1] = {};
-  for (int i = 0; i < kRingSensors; ++i) {
-    const int node = layout[i].node;
-    if (active[i] && node >= 1 && node <= kRingNodes) fires[node] = true;
-  }
+  for (int i = 0; i < kRingSensors; ++i)
+    if (active[i]) fires[robot::wired_node(i + 1) + 1] = true;
   int n = 0;
   double t = t0;
   for (int node = 1; node <= kRingNodes; ++node) {

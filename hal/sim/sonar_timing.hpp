@@ -31,8 +31,8 @@ constexpr double echo_time(double range, double sound_speed) { return 2.0 * rang
 // sensor, the way seed 002's read_sensors() does: wait node_delay, fire, wait the time-out for
 // the results, wait node_delay, fire the next node... Writes up to six firings into `out` and
 // returns how many. `active[i]` is sensor i + 1's active flag.
-int plan_scan(const RingLayout& layout, std::span<const bool, kRingSensors> active,
-              const RingTiming& timing, double t0, std::span<NodeFiring, kRingNodes> out);
+int plan_scan(std::span<const bool, kRingSensors> active, const RingTiming& timing, double t0,
+              std::span<NodeFiring, kRingNodes> out);
 
 // Duration of a full scan of `nodes` nodes, s.
 constexpr double scan_duration(int nodes, const RingTiming& t) {

@@ -4,58 +4,86 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hal/sim/sim_config.hpp"
 #include "hal/sim/world_io.hpp"
+#include "kernel/sim_section.hpp"
 
 namespace robuter::hal {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+
+// The command line's noise switches on top of the parameters.
+void add_noise(const SimOptions& opt, sim::SimConfig& c) {
+  if (opt.odometry_noise) {
+    c.robot.odometry.noise = 0.002;
+    c.robot.odometry.scale_left = 0.002;
+    c.robot.odometry.scale_right = -0.002;
+    c.robot.odometry.slip_sigma = 0.002;
+  }
+  if (opt.sonar_noise) {
+    for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) {
+      p->noise_sigma = 0.01;
+      p->dropout_probability = 0.01;
+      p->spurious_probability = 0.002;
+    }
+  }
+}
+}  // namespace
+
+sim::SimConfig firmware_sim_defaults(const Config& cfg) {
+  const robot::RobotModel m = robot_model(cfg);
+  sim::SimConfig c;
+  c.robot.geometry = {m.body.length, m.body.width, m.body.axle_to_front, m.wheels.base};
+  c.robot.limits.max_wheel_speed = m.wheels.max_speed;
+  c.robot.limits.max_accel = m.wheels.max_accel;
+  c.robot.limits.max_decel = 2.0 * m.wheels.max_accel;
+  c.ring.timeout = cfg.sonar.timeout_ms / 1000.0;
+  c.ring.sound_speed = cfg.sonar.sound_speed_m_s;
+  c.ring.half_angle = m.ring.half_angle;
+  c.pan_tilt.half_angle = m.pan_tilt.half_angle;
+  c.pan_tilt_mount.pivot = {m.pan_tilt.pivot_x, 0.0};
+  c.pan_tilt_mount.sensor_offset = m.pan_tilt.face_offset;
+  return c;
+}
+
+sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimOptions& opt) {
+  sim::SimConfig c = firmware_sim_defaults(cfg);
+  if (cfg.sim) {
+    auto applied = sim::apply_sim_config(cfg.sim->table, cfg.source, c);
+    if (!applied) return applied.error();
+    c = std::move(applied).value();
+  }
+  add_noise(opt, c);
+  c.robot.odometry.seed = opt.seed;  // --seed seeds every random source (the [sim] seeds too)
+  // The odometry is the firmware's: its own wheel base turns encoder travel into a pose.
+  c.robot.odometry_wheel_base = robot_model(cfg).wheels.base;
+  c.ring.ranging_speed = cfg.sonar.sound_speed_m_s;
+  if (opt.adjust) opt.adjust(c);
+  return c;
 }
 
 SimRobot::SimRobot(const Config& cfg, const SimOptions& opt)
     : ptu_(opt.ptu), rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
-  sim::RobotGeometry geom;
-  geom.length = cfg.robot.length_mm / 1000.0;
-  geom.width = cfg.robot.width_mm / 1000.0;
-  geom.wheel_base = cfg.robot.wheel_base_mm / 1000.0;
+  auto composed = simulated_robot_config(cfg, opt);
+  if (!composed) {
+    error_ = "sim: " + composed.error().describe();
+    return;
+  }
+  const sim::SimConfig& c = composed.value();
   const std::string file = opt.world_file.empty() ? std::string(ROBUTER_DEFAULT_WORLD) : opt.world_file;
-  auto loaded = sim::load_world(file, geom);
+  auto loaded = sim::load_world(file, c.robot.geometry);
   if (!loaded) {
     error_ = "world: " + loaded.error().describe();
     return;
   }
   world_ = std::make_unique<sim::World>(std::move(loaded).value());
-  sim::RobotParams params;
-  params.geometry = geom;
-  params.limits.max_wheel_speed = cfg.robot.max_speed_cm_s / 100.0;
-  params.limits.max_accel = cfg.robot.max_accel_cm_s2 / 100.0;
-  params.limits.max_decel = 2.0 * params.limits.max_accel;
-  if (opt.odometry_noise) {
-    params.odometry.noise = 0.002;
-    params.odometry.scale_left = 0.002;
-    params.odometry.scale_right = -0.002;
-    params.odometry.slip_sigma = 0.002;
-  }
-  params.odometry.seed = opt.seed;
-  robot_ = std::make_unique<sim::Robot>(*world_, params, world_->start.value_or(sim::Pose{}));
+  robot_ = std::make_unique<sim::Robot>(*world_, c.robot, world_->start.value_or(sim::Pose{}));
   robot_->set_odometry(sim::Pose{});  // odometry starts at 0,0,0 like the real robot's
-  sim::SonarParams sp = sim::default_ring_params();
-  sp.timeout = cfg.sonar.timeout_ms / 1000.0;
-  sp.sound_speed = cfg.sonar.sound_speed_m_s;
-  if (opt.sonar_noise) {
-    sp.noise_sigma = 0.01;
-    sp.dropout_probability = 0.01;
-    sp.spurious_probability = 0.002;
-  }
-  sonar_ = std::make_unique<sim::SonarModel>(*world_, sp);
-  sim::SonarParams pp = sim::default_pan_tilt_params();
-  if (opt.sonar_noise) {
-    pp.noise_sigma = 0.01;
-    pp.dropout_probability = 0.01;
-    pp.spurious_probability = 0.002;
-  }
-  pan_tilt_sonar_ = std::make_unique<sim::SonarModel>(*world_, pp);
-  layout_ = sim::default_ring_layout();
+  sonar_ = std::make_unique<sim::SonarModel>(*world_, c.ring);
+  pan_tilt_sonar_ = std::make_unique<sim::SonarModel>(*world_, c.pan_tilt);
+  pan_tilt_mount_ = c.pan_tilt_mount;
+  layout_ = c.layout;
 }
 
 // Seed ptu.c: pt_values[(angle + 90) / 5] = temp[1], pt_values[... + 36] = temp[0].
@@ -100,7 +128,7 @@ void SimDrive::set_odometry(const Odometry& o) { r_.robot_->set_odometry(sim::Po
 void SimSonarRing::configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) {
   sim::SonarParams p = r_.sonar_->params();
   p.timeout = timeout_ms / 1000.0;
-  p.sound_speed = sound_speed_m_s;
+  p.ranging_speed = sound_speed_m_s;
   r_.sonar_->set_params(p);
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -9,7 +10,9 @@
 #include "hal/api/bumpers.hpp"
 #include "hal/api/drive.hpp"
 #include "hal/api/sonar_ring.hpp"
+#include "hal/sim/result.hpp"
 #include "hal/sim/robot.hpp"
+#include "hal/sim/sim_config.hpp"
 #include "hal/sim/sonar.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world.hpp"
@@ -25,7 +28,18 @@ struct SimOptions {
   bool odometry_noise = false;   // encoder noise and slip on
   bool sonar_noise = false;      // range noise, drop-outs and spurious echoes on
   PtuParams ptu;                 // the emulated pan-tilt unit: limits and power-up state
+  std::function<void(sim::SimConfig&)> adjust;  // tests: last word on the simulated robot's parameters
 };
+
+// The simulated robot the firmware's configuration describes: its robot model ([robot], [ptu]
+// mount) and ring settings ([sonar]), before the [sim] tables.
+sim::SimConfig firmware_sim_defaults(const Config& cfg);
+
+// The simulated robot's own parameters: firmware_sim_defaults(), then the configuration's [sim]
+// tables ([sim.robot], [sim.odometry], [sim.sonar], [[sim.sonar.sensor]], [sim.pan_tilt]: the
+// robot may differ from what the firmware believes), then the command line's noise. The odometry
+// always integrates with the firmware's wheel base and the ring ranges with its speed of sound.
+sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimOptions& opt);
 
 // The last firing of the pan-tilt's two sonars (channel 7), for pictures and tests.
 struct PanTiltShot {

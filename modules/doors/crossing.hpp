@@ -13,7 +13,7 @@ namespace robuter::doors {
 
 // Everything the crossing needs, in its own units (mm, ticks, cm/s).
 struct CrossingSettings {
-  BodyGeometry body;                         // robot and pan-tilt geometry, safety
+  BodyGeometry body = body_geometry(robot::kRobuter);  // robot and pan-tilt geometry, safety
   ptu::EchoGeometry echoes;                  // pan axis, faces, beam, echo grouping
   SteerSpeeds speeds;                        // forward 2, back 1 cm/s
   SideSectors sides;                         // left 1..17, right 54..70

@@ -1,19 +1,15 @@
-// Units converted and the seed's geometry gathered: body from [robot], pan-tilt from [doors]/[ptu].
+// Units converted and the seed's geometry gathered from the robot model ([robot], [ptu] mount).
 #include "modules/doors/crossing_settings.hpp"
 
 namespace robuter::doors {
 
 CrossingSettings crossing_settings(const Config& c) {
   CrossingSettings s;
-  s.body.length_mm = static_cast<std::int32_t>(c.robot.length_mm);
-  s.body.width_mm = static_cast<std::int32_t>(c.robot.width_mm);
-  s.body.pan_x_mm = static_cast<std::int32_t>(c.doors.pan_x_mm);
-  s.body.pan_y_mm = static_cast<std::int32_t>(c.doors.pan_y_mm);
-  s.body.box_width_mm = static_cast<std::int32_t>(c.doors.box_width_mm);
-  s.body.safety_mm = static_cast<std::int32_t>(c.doors.safety_mm);
-  s.echoes.pivot_x_mm = c.ptu.pivot_x_mm;
-  s.echoes.face_mm = c.doors.box_width_mm / 2.0;
-  s.echoes.beam_half_deg = c.ptu.beam_half_angle_centideg / 100.0;
+  const robot::RobotModel m = robot_model(c);
+  s.body = body_geometry(m, static_cast<std::int32_t>(c.doors.safety_mm));
+  s.echoes.pivot_x_mm = m.pan_tilt.pivot_x * 1000.0;
+  s.echoes.face_mm = m.pan_tilt.face_offset * 1000.0;
+  s.echoes.beam_half_deg = m.pan_tilt.half_angle / robot::kDeg;
   s.echoes.same_echo_mm = static_cast<std::int32_t>(c.doors.same_echo_mm);
   s.echoes.far_mm = static_cast<std::int32_t>(c.gate.max_mm);
   s.speeds.forward_cm_s = static_cast<std::int32_t>(c.doors.forward_cm_s);

@@ -5,18 +5,27 @@
 #include <cstdint>
 
 #include "modules/ptu/pan_angles.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::doors {
 
-// Where the pan-tilt sits on the body and how much clearance is wanted (seed doors.h), mm.
+// Where the pan-tilt sits on the body and how much clearance is wanted, in the seed's terms
+// (doors.h), mm; made from the robot model by body_geometry().
 struct BodyGeometry {
-  std::int32_t length_mm = 1025;     // body length (ROBOT_LENGTH)
-  std::int32_t width_mm = 700;       // body width (ROBOT_WIDTH)
-  std::int32_t pan_x_mm = 725;       // pan axis to the front face (PAN_X_POSITION)
-  std::int32_t pan_y_mm = 350;       // pan axis to the left side (PAN_Y_POSITION)
-  std::int32_t box_width_mm = 100;   // between the two transducer faces (BOX_WIDTH)
+  std::int32_t length_mm = 0;        // body length (ROBOT_LENGTH)
+  std::int32_t width_mm = 0;         // body width (ROBOT_WIDTH)
+  std::int32_t pan_x_mm = 0;         // pan axis to the front face (PAN_X_POSITION)
+  std::int32_t pan_y_mm = 0;         // pan axis to the left side (PAN_Y_POSITION)
+  std::int32_t box_width_mm = 0;     // between the two transducer faces (BOX_WIDTH)
   std::int32_t safety_mm = 35;       // clearance kept from obstacles (SAFETY_DIST)
 };
+
+// The seed's doors.h numbers of a robot model (the pan axis on the centre line): the Robuter's
+// give ROBOT_LENGTH 1025, ROBOT_WIDTH 700, PAN_X_POSITION 725, PAN_Y_POSITION 350, BOX_WIDTH 100.
+constexpr BodyGeometry body_geometry(const robot::RobotModel& m, std::int32_t safety_mm = 35) {
+  return {robot::mm(m.body.length), robot::mm(m.body.width), robot::mm(m.body.axle_to_front - m.pan_tilt.pivot_x),
+          robot::mm(0.5 * m.body.width), robot::mm(2.0 * m.pan_tilt.face_offset), safety_mm};
+}
 
 // The four distances, measured from a transducer face, at which the front, rear, left and right
 // sides (plus safety) are met along the body's axes: x1…x4 of init_doors(), mm.

@@ -4,9 +4,11 @@
 #include <array>
 #include <cstdint>
 
+#include "robot/ring_wiring.hpp"
+
 namespace robuter::safety {
 
-inline constexpr int kRingSize = 24;   // sensors on the ring, numbered 1..24
+inline constexpr int kRingSize = robot::kRingSensors;  // sensors on the ring, numbered 1..24
 inline constexpr int kWatchSize = 5;   // watch-dog sensors per direction of motion
 
 // Thresholds on |r|, the radius of curvature, between adjacent main sensors, mm. Each is

@@ -1,13 +1,14 @@
-// Units converted: 0.01° to degrees, the pan axis and the front face from [ptu] and [doors].
+// Units converted: 0.01° to degrees; the pan axis and the front face from the robot model.
 #include "modules/gate/gate_settings.hpp"
 
 namespace robuter::gate {
 
 GateSettings gate_settings(const Config& c) {
   GateSettings s;
-  s.door.geometry.pivot_x_mm = c.ptu.pivot_x_mm;
-  s.door.geometry.face_mm = c.doors.box_width_mm / 2.0;
-  s.door.geometry.beam_half_deg = c.ptu.beam_half_angle_centideg / 100.0;
+  const robot::RobotModel m = robot_model(c);
+  s.door.geometry.pivot_x_mm = m.pan_tilt.pivot_x * 1000.0;
+  s.door.geometry.face_mm = m.pan_tilt.face_offset * 1000.0;
+  s.door.geometry.beam_half_deg = m.pan_tilt.half_angle / robot::kDeg;
   s.door.geometry.same_echo_mm = static_cast<std::int32_t>(c.doors.same_echo_mm);
   s.door.geometry.far_mm = static_cast<std::int32_t>(c.gate.max_mm);
   s.door.corners.margin_mm = static_cast<std::int32_t>(c.gate.margin_mm);
@@ -21,7 +22,7 @@ GateSettings gate_settings(const Config& c) {
   s.lateral_tolerance_mm = c.gate.lateral_tolerance_mm;
   s.heading_tolerance_deg = c.gate.heading_tolerance_centideg / 100.0;
   s.max_manoeuvres = c.gate.max_manoeuvres;
-  s.axle_to_front_mm = static_cast<double>(c.doors.pan_x_mm) + c.ptu.pivot_x_mm;
+  s.axle_to_front_mm = m.body.axle_to_front * 1000.0;
   s.wheel_base_mm = c.robot.wheel_base_mm;
   return s;
 }

@@ -62,7 +62,6 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
     : s_(planner::make_settings(cfg)),
       planner_(s_.planner),
       follower_(follower_settings(s_)),
-      ring_(planner::default_ring_geometry()),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
       selection_(bb.sonar_selection.reader()),
@@ -84,7 +83,7 @@ bool PlannerModule::init(Kernel& k) {
   seen_link_ = link_motion_.peek().seq;
   seen_go_to_ = go_to_motion_.peek().seq;
   seen_servo_ = servo_.peek().seq;
-  for (int i = 0; i < planner::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
+  for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
   pan_tick_ = pan_tilt_.peek().read_tick;
   log::info("planner: map {} x {} cells of {} mm, {} footprint", s_.map.width, s_.map.height,
             std::lround(s_.map.resolution * 1000.0),
@@ -117,16 +116,16 @@ plan::Pose2 PlannerModule::pose_now() {
 void PlannerModule::integrate_ranges(const plan::Pose2& pose) {
   const UltrasonicRanges& r = ranges_.peek();
   plan::OccupancyMap& map = planner_.map();
-  for (int i = 0; i < planner::kRingSensors; ++i) {
+  for (int i = 0; i < robot::kRingSensors; ++i) {
     if (r.read_tick[i] == read_tick_[i]) continue;
     read_tick_[i] = r.read_tick[i];
     ++fresh_[i];
     if (r.mm[i] == 0) continue;  // inactive or lost
     const bool no_echo = (r.no_echo >> i) & 1u;
-    planner::integrate_reading(map, pose, ring_[i], r.mm[i] / 1000.0, no_echo, s_.beam_range, s_.beam_half_angle);
+    planner::integrate_reading(map, pose, s_.robot.ring.sensors[static_cast<std::size_t>(i)].mount, r.mm[i] / 1000.0, no_echo, s_.beam_range, s_.beam_half_angle);
   }
   integrate_pan_tilt();
-  planner::mark_body_free(map, pose, s_.body_length, s_.body_width, s_.body_center_ahead);
+  planner::mark_body_free(map, pose, s_.robot.body);
 }
 
 // At most 72 beams per activation (one per sector; the unit fires a sector every 30 ms or so,
@@ -141,9 +140,9 @@ void PlannerModule::integrate_pan_tilt() {
     const SectorPose& at = scan.pose[i];
     const plan::Pose2 fired{at.x * kTenthMm, at.y * kTenthMm, at.theta * kCentideg};
     const planner::SensorMount mount =
-        planner::pan_tilt_mount(s_.pan_pivot_x, s_.pan_face, scan.direction[i] * kCentideg);
+        planner::pan_tilt_mount(s_.robot.pan_tilt, scan.direction[i] * kCentideg);
     const double range = scan.raw[i] / 1000.0;
-    planner::integrate_reading(map, fired, mount, range, range >= s_.pan_far, s_.beam_range, s_.pan_half_angle);
+    planner::integrate_reading(map, fired, mount, range, range >= s_.pan_far, s_.beam_range, s_.robot.pan_tilt.half_angle);
   }
 }
 
@@ -228,7 +227,7 @@ bool PlannerModule::scan_done(std::uint64_t tick) {
   }
   const std::uint32_t active = selection_.peek().active;
   bool all = active != 0;
-  for (int i = 0; i < planner::kRingSensors; ++i)
+  for (int i = 0; i < robot::kRingSensors; ++i)
     if ((active >> i) & 1u) all = all && fresh_[i] >= s_.scan_passes;
   if (all) return true;
   if (tick >= scan_tick_ + kScanTimeoutTicks) {

@@ -11,7 +11,6 @@
 #include "modules/planner/path_follower.hpp"
 #include "modules/planner/picture_mailbox.hpp"
 #include "modules/planner/planner_settings.hpp"
-#include "modules/planner/ring_geometry.hpp"
 #include "modules/planner/route.hpp"
 #include "modules/topics.hpp"
 
@@ -79,7 +78,6 @@ class PlannerModule final : public Process {
   planner::PlannerSettings s_;
   plan::Planner planner_;
   planner::PathFollower follower_;
-  const planner::RingGeometry& ring_;
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<SonarSelection> selection_;
@@ -98,8 +96,8 @@ class PlannerModule final : public Process {
 
   PlannerState state_ = PlannerState::idle;
   PlannerGoal goal_{};                     // goal being served
-  std::array<std::uint64_t, planner::kRingSensors> read_tick_{};  // last reading marked, per sensor
-  std::array<std::uint32_t, planner::kRingSensors> fresh_{};      // readings since the scan's stop
+  std::array<std::uint64_t, robot::kRingSensors> read_tick_{};  // last reading marked, per sensor
+  std::array<std::uint32_t, robot::kRingSensors> fresh_{};      // readings since the scan's stop
   std::array<std::uint64_t, kPanTiltSectors> pan_tick_{};         // last pan-tilt reading marked, per sector
   std::array<plan::Waypoint, kMaxPrefix> prefix_{};               // the followed prefix
   std::size_t prefix_len_ = 0;

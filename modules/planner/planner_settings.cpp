@@ -17,14 +17,13 @@ PlannerSettings make_settings(const Config& cfg) {
   s.map.height = static_cast<int>(std::max<std::uint32_t>(1, p.map_height_mm / p.cell_mm));
   s.map.origin = {mm(p.map_origin_x_mm), mm(p.map_origin_y_mm)};
   s.hit_threshold = static_cast<std::uint8_t>(std::clamp<std::uint32_t>(p.hit_threshold, 1, 254));
-  s.body_length = mm(cfg.robot.length_mm);
-  s.body_width = mm(cfg.robot.width_mm);
-  s.body_center_ahead = mm(p.body_center_ahead_mm);
+  s.robot = robot_model(cfg);
+  const robot::Body& body = s.robot.body;
 
   plan::PlannerConfig& c = s.planner;
   c.footprint = p.footprint == "disc" ? plan::FootprintKind::Disc : plan::FootprintKind::Rectangle;
   c.radius = mm(p.disc_radius_mm);
-  c.rectangle = plan::RectangleFootprint{s.body_length, s.body_width, s.body_center_ahead, mm(p.margin_mm)};
+  c.rectangle = plan::RectangleFootprint{body.length, body.width, body.center_ahead(), mm(p.margin_mm)};
   c.heading_slices = static_cast<int>(p.heading_slices);
   c.turn_clearance = mm(p.turn_clearance_mm);
   c.motion = plan::MotionModel::Aligned;
@@ -34,10 +33,7 @@ PlannerSettings make_settings(const Config& cfg) {
   s.scan_passes = p.scan_passes;
   s.beam_range = mm(p.beam_range_mm);
   s.beam_half_angle = p.beam_half_angle_centideg * plan::kPi / 18000.0;
-  s.pan_pivot_x = mm(cfg.ptu.pivot_x_mm);
-  s.pan_face = mm(cfg.doors.box_width_mm) / 2.0;
   s.pan_far = mm(cfg.ptu.cap_mm);
-  s.pan_half_angle = cfg.ptu.beam_half_angle_centideg * plan::kPi / 18000.0;
   s.follow_range = mm(p.follow_range_mm);
   s.goal_tolerance = mm(p.goal_tolerance_mm);
   const auto cap = static_cast<std::int32_t>(std::min<std::uint32_t>(cfg.robot.max_speed_cm_s, 100));

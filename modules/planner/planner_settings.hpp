@@ -6,6 +6,7 @@
 #include "kernel/config.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/planner.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::planner {
 
@@ -14,16 +15,11 @@ struct PlannerSettings {
   plan::MapGeometry map;               // cells, m per cell, origin (m, odometry frame)
   std::uint8_t hit_threshold = 2;      // net hits for an obstacle cell
   plan::PlannerConfig planner;         // footprint, slices, clearances (m)
-  double body_length = 1.025;          // m, body rectangle along the heading
-  double body_width = 0.700;           // m
-  double body_center_ahead = 0.183;    // m, body centre ahead of the wheel axle
+  robot::RobotModel robot = robot::kRobuter;  // body, ring mounts, pan-tilt mount (m, rad)
   std::uint32_t scan_passes = 2;       // full ring passes per stop
   double beam_range = 2.5;             // m, readings marked up to here
-  double beam_half_angle = 0.218;      // rad, the ring sonar's cone half-angle (0: axis only)
-  double pan_pivot_x = -0.030;         // m, the pan-tilt's pan axis ahead of the wheel axle
-  double pan_face = 0.050;             // m, pan axis to each transducer face
+  double beam_half_angle = robot::kRobuter.ring.half_angle;  // rad, the ring cone marked (0: axis only)
   double pan_far = 2.491;              // m, a pan-tilt reading at or beyond this is "no echo"
-  double pan_half_angle = 0.218;       // rad, a pan-tilt sonar's cone half-angle
   double follow_range = 1.5;           // m, prefix of the path followed before a new scan
   double goal_tolerance = 0.10;        // m
   std::int32_t drive_cm_s = 20;        // cm/s, fastest wheel driving

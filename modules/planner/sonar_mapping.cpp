@@ -50,17 +50,17 @@ void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const 
   map.integrate_beam(origin, axis + best_phi, range, beam_range);
 }
 
-SensorMount pan_tilt_mount(double pivot_x, double face, double direction) {
-  return SensorMount{pivot_x + face * std::cos(direction), face * std::sin(direction), direction};
+SensorMount pan_tilt_mount(const robot::PanTiltMount& mount, double direction) {
+  const double face = mount.face_offset;
+  return SensorMount{mount.pivot_x + face * std::cos(direction), face * std::sin(direction), direction};
 }
 
 // Cells whose centre lies inside the rectangle (a cell only partly under the body keeps what the
 // sonar said about it: an obstacle may touch the body's edge).
-void mark_body_free(plan::OccupancyMap& map, const plan::Pose2& robot, double length, double width,
-                    double center_ahead) {
+void mark_body_free(plan::OccupancyMap& map, const plan::Pose2& robot, const robot::Body& body) {
   const double c = std::cos(robot.heading), s = std::sin(robot.heading);
-  const double cx = robot.x + c * center_ahead, cy = robot.y + s * center_ahead;
-  const double hl = 0.5 * length, hw = 0.5 * width;
+  const double cx = robot.x + c * body.center_ahead(), cy = robot.y + s * body.center_ahead();
+  const double hl = 0.5 * body.length, hw = 0.5 * body.width;
   const double ex = std::abs(c) * hl + std::abs(s) * hw, ey = std::abs(s) * hl + std::abs(c) * hw;
   const plan::Cell lo = map.cell_of({cx - ex, cy - ey});
   const plan::Cell hi = map.cell_of({cx + ex, cy + ey});

@@ -3,9 +3,11 @@
 
 #include "modules/planner/lib/geometry.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
-#include "modules/planner/ring_geometry.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::planner {
+
+using SensorMount = robot::SonarMount;  // a transducer in the robot frame (m, rad)
 
 // Why: one reading of sensor `mount` with the robot at `robot` (axle midpoint, m, rad) in seed
 // 003's counts: the cells before the echo lose a hit, the echo's cell gains one. The echo may
@@ -19,15 +21,13 @@ void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const 
                        double range, bool no_echo, double beam_range, double half_angle);
 
 // Why: the pan-tilt's two sonars (seed 002) sweep the whole turn in 5° sectors; each reading is
-// one more beam for the map, fired from the transducer face: the face sits `face` m from the pan
-// axis along the beam's `direction` (rad from the robot's heading), the axis `pivot_x` m ahead
-// of the wheel axle. Marked with integrate_reading like a ring sensor.
-SensorMount pan_tilt_mount(double pivot_x, double face, double direction);
+// one more beam for the map, fired from the transducer face: the face sits the mount's
+// face_offset from the pan axis along the beam's `direction` (rad from the robot's heading).
+// Marked with integrate_reading like a ring sensor.
+SensorMount pan_tilt_mount(const robot::PanTiltMount& mount, double direction);
 
 // Why: the body stands where it stands, so the cells under it are free: this clears echoes
-// that the cone's width put under the robot and keeps its own cell plannable. The rectangle is
-// `length` × `width` (m), centred `center_ahead` m ahead of the axle.
-void mark_body_free(plan::OccupancyMap& map, const plan::Pose2& robot, double length, double width,
-                    double center_ahead);
+// that the cone's width put under the robot and keeps its own cell plannable.
+void mark_body_free(plan::OccupancyMap& map, const plan::Pose2& robot, const robot::Body& body);
 
 }  // namespace robuter::planner

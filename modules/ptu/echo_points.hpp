@@ -7,14 +7,15 @@
 
 #include "modules/ptu/pan_angles.hpp"
 #include "modules/topics.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::ptu {
 
-// The pan-tilt's geometry and how echoes are told apart.
+// The pan-tilt's geometry (the robot model's mount by default) and how echoes are told apart.
 struct EchoGeometry {
-  double pivot_x_mm = -30.0;       // pan axis ahead of the wheel axle, mm (on the centre line)
-  double face_mm = 50.0;           // pan axis to each transducer face, mm
-  double beam_half_deg = 12.5;     // half-angle of a beam, degrees
+  double pivot_x_mm = robot::kRobuter.pan_tilt.pivot_x * 1000.0;      // pan axis ahead of the wheel axle, mm (on the centre line)
+  double face_mm = robot::kRobuter.pan_tilt.face_offset * 1000.0;     // pan axis to each transducer face, mm
+  double beam_half_deg = robot::kRobuter.pan_tilt.half_angle / robot::kDeg;  // half-angle of a beam, degrees
   std::int32_t same_echo_mm = 20;  // neighbours within this range of each other see the same echo, mm
   std::int32_t far_mm = 2400;      // a reading at or beyond this is "no echo", mm
   std::uint64_t run_window_ticks = 60;  // neighbours read within this of each other belong to one pass, ticks

@@ -4,10 +4,12 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "robot/ring_wiring.hpp"
+
 namespace robuter::protocol {
 
 inline constexpr std::size_t kMaxLineLength = 200;   // bytes before the terminator (seed MAX_LENGTH)
-inline constexpr std::size_t kSensorCount = 24;      // ultrasonic ring sensors
+inline constexpr std::size_t kSensorCount = robot::kRingSensors;  // ultrasonic ring sensors
 inline constexpr std::size_t kSectorCount = 72;      // pan-tilt sectors of 5 degrees
 inline constexpr std::size_t kMaxIntParams = 3;      // most integers any message takes (AC, AW)
 inline constexpr std::size_t kReplyCapacity = 2048;  // bytes of one reply line, tail included

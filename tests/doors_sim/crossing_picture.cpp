@@ -33,7 +33,7 @@ Ray sector_ray(const ScanSnapshot& s, int i, const Config& cfg) {
   const double h = p.theta * 0.01 * kPi / 180.0;
   const double ax = p.x * 1e-4 + cfg.ptu.pivot_x_mm * 1e-3 * std::cos(h), ay = p.y * 1e-4 + cfg.ptu.pivot_x_mm * 1e-3 * std::sin(h);
   const double a = h + s.scan.direction[static_cast<std::size_t>(i)] * 0.01 * kPi / 180.0;
-  const double face = cfg.doors.box_width_mm * 0.5e-3;
+  const double face = robot_model(cfg).pan_tilt.face_offset;
   const int raw = s.scan.raw[static_cast<std::size_t>(i)];
   const double range = face + raw * 1e-3;
   Ray r;

@@ -7,9 +7,9 @@
 #include "modules/planner/lib/text_render.hpp"
 #include "modules/planner/map_window.hpp"
 #include "modules/planner/path_follower.hpp"
-#include "modules/planner/ring_geometry.hpp"
 #include "modules/planner/route.hpp"
 #include "modules/planner/sonar_mapping.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::planner {
 namespace {
@@ -17,22 +17,22 @@ namespace {
 plan::OccupancyMap small_map() { return plan::OccupancyMap(plan::MapGeometry{100, 100, 0.05, {0.0, 0.0}}, 2); }
 
 TEST(RingGeometry, SensorOneLooksForwardAndNumbersRunClockwise) {
-  const RingGeometry& g = default_ring_geometry();
-  EXPECT_DOUBLE_EQ(g[0].direction, 0.0);
-  EXPECT_NEAR(g[6].direction, -plan::kPi / 2, 1e-12);   // sensor 7: right
-  EXPECT_NEAR(std::abs(g[12].direction), plan::kPi, 1e-12);  // sensor 13: rear
-  EXPECT_NEAR(g[18].direction, plan::kPi / 2, 1e-12);   // sensor 19: left
-  for (int i = 0; i < kRingSensors; ++i) {  // on the body: x in [-0.33, 0.695], |y| <= 0.35
-    EXPECT_GE(g[i].x, -0.3301);
-    EXPECT_LE(g[i].x, 0.6951);
-    EXPECT_LE(std::abs(g[i].y), 0.3501);
+  const auto mount = [](int s) { return robot::kRobuter.ring.sensor(s).mount; };
+  EXPECT_DOUBLE_EQ(mount(1).direction, 0.0);
+  EXPECT_NEAR(mount(7).direction, -plan::kPi / 2, 1e-12);   // sensor 7: right
+  EXPECT_NEAR(std::abs(mount(13).direction), plan::kPi, 1e-12);  // sensor 13: rear
+  EXPECT_NEAR(mount(19).direction, plan::kPi / 2, 1e-12);   // sensor 19: left
+  for (int s = 1; s <= robot::kRingSensors; ++s) {  // on the body: x in [-0.33, 0.695], |y| <= 0.35
+    EXPECT_GE(mount(s).x, -0.3301);
+    EXPECT_LE(mount(s).x, 0.6951);
+    EXPECT_LE(std::abs(mount(s).y), 0.3501);
   }
 }
 
 TEST(SonarMapping, AnEchoMarksItsCellAndClearsTheWayThere) {
   plan::OccupancyMap map = small_map();
   const plan::Pose2 robot{1.0, 2.5, 0.0};
-  const SensorMount front = default_ring_geometry()[0];  // 0.695 m ahead, looking forward
+  const SensorMount front = robot::kRobuter.ring.sensor(1).mount;  // 0.695 m ahead, looking forward
   for (int i = 0; i < 2; ++i) integrate_reading(map, robot, front, 1.0, false, 2.5, 0.0);
   const plan::Cell hit = map.cell_of({1.0 + 0.695 + 1.0, 2.5});
   EXPECT_EQ(map.state(hit), plan::CellState::Occupied);
@@ -49,10 +49,10 @@ TEST(SonarMapping, AnEchoMarksItsCellAndClearsTheWayThere) {
 // The pan-tilt's transducer sits on its beam, `face` from the pan axis; the robot's heading at
 // the firing turns everything.
 TEST(SonarMapping, APanTiltReadingMarksFromItsTransducerFace) {
-  const SensorMount ahead = pan_tilt_mount(-0.03, 0.05, 0.0);
+  const SensorMount ahead = pan_tilt_mount(robot::PanTiltMount{-0.03, 0.05}, 0.0);
   EXPECT_NEAR(ahead.x, 0.02, 1e-12);
   EXPECT_NEAR(ahead.y, 0.0, 1e-12);
-  const SensorMount left = pan_tilt_mount(-0.03, 0.05, plan::kPi / 2);
+  const SensorMount left = pan_tilt_mount(robot::PanTiltMount{-0.03, 0.05}, plan::kPi / 2);
   EXPECT_NEAR(left.x, -0.03, 1e-12);
   EXPECT_NEAR(left.y, 0.05, 1e-12);
   EXPECT_NEAR(left.direction, plan::kPi / 2, 1e-12);
@@ -66,7 +66,7 @@ TEST(SonarMapping, APanTiltReadingMarksFromItsTransducerFace) {
 
 TEST(SonarMapping, AnEchoGoesToTheArcCellThatLooksMostLikeAnObstacle) {
   const plan::Pose2 robot{1.0, 2.5, 0.0};
-  const SensorMount front = default_ring_geometry()[0];
+  const SensorMount front = robot::kRobuter.ring.sensor(1).mount;
   const double cone = 12.5 * plan::kPi / 180.0;
   // Nothing known: the axis (seed 003).
   plan::OccupancyMap map = small_map();
@@ -89,7 +89,7 @@ TEST(SonarMapping, TheBodysCellsAreFree) {
   const plan::Pose2 robot{2.0, 2.0, plan::kPi / 2};
   map.mark_occupied(map.cell_of({2.0, 2.3}));  // under the body (body centre 0.18 m ahead)
   map.mark_occupied(map.cell_of({2.0, 3.2}));  // beyond its front (0.695 m ahead)
-  mark_body_free(map, robot, 1.025, 0.7, 0.1825);
+  mark_body_free(map, robot, robot::Body{1.025, 0.7, 0.695});  // centre 0.1825 m ahead
   EXPECT_EQ(map.state(map.cell_of({2.0, 2.3})), plan::CellState::Free);
   EXPECT_EQ(map.state(map.cell_of({2.0, 3.2})), plan::CellState::Occupied);
   EXPECT_EQ(map.state(map.cell_of({2.0, 1.5})), plan::CellState::Unknown);  // not under it: unknown

@@ -11,7 +11,7 @@ namespace {
 
 // x1 = 725 − 50 + 35, x2 = 1025 − 725 − 50 + 35, x3 = 350 − 50 + 35, x4 = 700 − 350 − 50 + 35.
 TEST(MinRead, SideDistancesOfTheSeedRobot) {
-  const SideDistances s = side_distances(BodyGeometry{});
+  const SideDistances s = side_distances(body_geometry(robot::kRobuter));
   EXPECT_EQ(s.front, 710);
   EXPECT_EQ(s.rear, 285);
   EXPECT_EQ(s.left, 335);
@@ -19,7 +19,7 @@ TEST(MinRead, SideDistancesOfTheSeedRobot) {
 }
 
 TEST(MinRead, TableValuesWorkedOutByHand) {
-  const MinReadTable t = min_read_table(BodyGeometry{});
+  const MinReadTable t = min_read_table(body_geometry(robot::kRobuter));
   EXPECT_EQ(t[0], 710);
   EXPECT_EQ(t[1], 712);   // 710 / cos 5° = 712.7
   EXPECT_EQ(t[5], 783);   // 710 / cos 25° = 783.4
@@ -45,7 +45,7 @@ TEST(MinRead, TableValuesWorkedOutByHand) {
 // Front half mirror-symmetric for a centred pan-tilt; the seed's rear is not (its left rear uses
 // x3/sin up to 135°, its right rear x2/cos down to 225°).
 TEST(MinRead, FrontHalfSymmetricRearAsTheSeedWroteIt) {
-  const MinReadTable t = min_read_table(BodyGeometry{});
+  const MinReadTable t = min_read_table(body_geometry(robot::kRobuter));
   for (int i = 1; i <= 18; ++i) EXPECT_EQ(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>(72 - i)]) << i;
   EXPECT_EQ(t[27], 473);  // 335 / sin 45°
   EXPECT_EQ(t[45], 403);  // 285 / cos 45°
@@ -53,7 +53,7 @@ TEST(MinRead, FrontHalfSymmetricRearAsTheSeedWroteIt) {
 
 // The continuous boundary agrees with the table on the sectors the crossing checks.
 TEST(MinRead, ContinuousBoundaryMatchesTheTableWhereTheCrossingLooks) {
-  const BodyGeometry g;
+  const BodyGeometry g = body_geometry(robot::kRobuter);
   const MinReadTable t = min_read_table(g);
   const SideDistances s = side_distances(g);
   for (int i : {1, 2, 3, 4, 5, 6, 10, 17, 18, 54, 60, 66, 67, 70, 71}) {

@@ -12,7 +12,7 @@ SectorValues all(std::int32_t v) {
   return s;
 }
 
-const MinReadTable kMin = min_read_table(BodyGeometry{});
+const MinReadTable kMin = min_read_table(body_geometry(robot::kRobuter));
 
 TEST(Steering, ClearMeansStraightAtTwoCentimetresPerSecond) {
   const SideThreats t = side_threats(all(2000), kMin);

@@ -59,29 +59,27 @@ TEST(RingLayout, NumberingAndPlacement) {
   EXPECT_NEAR(ring[16].direction, kPi / 2, 1e-12);
 }
 
-// Every node fires four sensors, one per slot.
+// Every node fires four sensors, one per slot (the robot model's wiring).
 TEST(RingLayout, NodesHoldFourSensorsEach) {
-  const RingLayout ring = default_ring_layout();
-  std::array<std::array<int, 5>, kRingNodes + 1> seen{};
-  for (const auto& m : ring) {
-    ASSERT_GE(m.node, 1);
-    ASSERT_LE(m.node, kRingNodes);
-    ASSERT_GE(m.slot, 1);
-    ASSERT_LE(m.slot, 4);
+  std::array<std::array<int, 4>, kRingNodes> seen{};
+  for (const auto& m : robot::kRobuter.ring.sensors) {
+    ASSERT_GE(m.node, 0);
+    ASSERT_LT(m.node, kRingNodes);
+    ASSERT_GE(m.slot, 0);
+    ASSERT_LT(m.slot, 4);
     ++seen[m.node][m.slot];
   }
-  for (int n = 1; n <= kRingNodes; ++n)
-    for (int s = 1; s <= 4; ++s) EXPECT_EQ(seen[n][s], 1) << "node " << n << " slot " << s;
+  for (int n = 0; n < kRingNodes; ++n)
+    for (int s = 0; s < 4; ++s) EXPECT_EQ(seen[n][s], 1) << "node " << n << " slot " << s;
 }
 
 // All nodes: delay, fire, wait the time-out, delay, fire... 6 × 63 ms.
 TEST(RingTiming, FullScanSchedule) {
-  const RingLayout ring = default_ring_layout();
   std::array<bool, kRingSensors> active{};
   active.fill(true);
   std::array<NodeFiring, kRingNodes> out{};
   const RingTiming t;
-  const int n = plan_scan(ring, active, t, 10.0, out);
+  const int n = plan_scan(active, t, 10.0, out);
   ASSERT_EQ(n, 6);
   for (int i = 0; i < n; ++i) {
     EXPECT_EQ(out[i].node, i + 1);
@@ -92,15 +90,14 @@ TEST(RingTiming, FullScanSchedule) {
 }
 
 TEST(RingTiming, OnlyNodesWithActiveSensorsFire) {
-  const RingLayout ring = default_ring_layout();
   std::array<bool, kRingSensors> active{};
-  active[8] = true;   // sensor 9: node 3
-  active[19] = true;  // sensor 20: node 2
+  active[8] = true;   // sensor 9: node 3 (sensors 9-12)
+  active[19] = true;  // sensor 20: node 5 (sensors 17-20)
   std::array<NodeFiring, kRingNodes> out{};
-  const int n = plan_scan(ring, active, RingTiming{}, 0.0, out);
+  const int n = plan_scan(active, RingTiming{}, 0.0, out);
   ASSERT_EQ(n, 2);
-  EXPECT_EQ(out[0].node, 2);
-  EXPECT_EQ(out[1].node, 3);
+  EXPECT_EQ(out[0].node, 3);
+  EXPECT_EQ(out[1].node, 5);
   EXPECT_NEAR(out[1].fire, out[0].ready + 0.030, 1e-12);
   EXPECT_DOUBLE_EQ(node_ready_time(1.0, 0.033), 1.033);
   EXPECT_DOUBLE_EQ(echo_time(1.5, 300.0), 0.01);
