@@ -126,14 +126,14 @@ void read_odometry(Fields& f, OdometryErrors& o) {
 }
 
 // [[sonar.sensor]] rows replace fields of the numbered sensor.
-void read_sensor(const toml::table& t, std::string_view file, RingLayout& layout) {
-  Fields f(t, file, "[[sonar.sensor]]");
+void read_sensor(const toml::table& t, std::string_view file, const std::string& prefix, RingLayout& layout) {
+  Fields f(t, file, "[[" + prefix + "sonar.sensor]]");
   const auto number = f.opt_integer("number");
   if (!number) f.fail(f.line(), "missing key 'number'");
   if (*number < 1 || *number > kRingSensors) {
     f.fail_at(*f.get("number"), "number: must be within 1..24");
   }
-  f.set_what("[[sonar.sensor]] " + std::to_string(*number));
+  f.set_what("[[" + prefix + "sonar.sensor]] " + std::to_string(*number));
   SonarMount& m = layout[static_cast<std::size_t>(*number - 1)];
   if (auto v = f.opt_number("x")) m.position.x() = *v;
   if (auto v = f.opt_number("y")) m.position.y() = *v;
@@ -142,23 +142,24 @@ void read_sensor(const toml::table& t, std::string_view file, RingLayout& layout
 }
 
 // Applies each known section; throws ParseFailure on the first error.
-SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
-  Fields top(root, file, "configuration");
+// `prefix` names the tables in messages ("sim." when they sit in the firmware's configuration).
+SimConfig apply(const toml::table& root, std::string_view file, SimConfig c, const std::string& prefix = "") {
+  Fields top(root, file, prefix.empty() ? std::string("configuration") : "[" + prefix.substr(0, prefix.size() - 1) + "]");
   if (const auto* n = top.get("robot")) {
-    if (!n->is_table()) top.fail_at(*n, "robot: expected a table [robot]");
-    Fields f(*n->as_table(), file, "[robot]");
+    if (!n->is_table()) top.fail_at(*n, "robot: expected a table [" + prefix + "robot]");
+    Fields f(*n->as_table(), file, "[" + prefix + "robot]");
     read_robot(f, c.robot);
     f.finish();
   }
   if (const auto* n = top.get("odometry")) {
-    if (!n->is_table()) top.fail_at(*n, "odometry: expected a table [odometry]");
-    Fields f(*n->as_table(), file, "[odometry]");
+    if (!n->is_table()) top.fail_at(*n, "odometry: expected a table [" + prefix + "odometry]");
+    Fields f(*n->as_table(), file, "[" + prefix + "odometry]");
     read_odometry(f, c.robot.odometry);
     f.finish();
   }
   if (const auto* n = top.get("sonar")) {
-    if (!n->is_table()) top.fail_at(*n, "sonar: expected a table [sonar]");
-    Fields f(*n->as_table(), file, "[sonar]");
+    if (!n->is_table()) top.fail_at(*n, "sonar: expected a table [" + prefix + "sonar]");
+    Fields f(*n->as_table(), file, "[" + prefix + "sonar]");
     read_sonar_params(f, c.ring);
     c.timing.timeout = c.ring.timeout;
     if (auto v = f.opt_number("node_delay_ms")) {
@@ -167,14 +168,14 @@ SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
     }
     if (auto s = f.opt_integer("seed")) c.sonar_seed = static_cast<std::uint64_t>(*s);
     if (const auto* s = f.get("sensor")) {
-      if (!s->is_array_of_tables()) f.fail_at(*s, "sensor: must be written [[sonar.sensor]]");
-      for (const auto& row : *s->as_array()) read_sensor(*row.as_table(), file, c.layout);
+      if (!s->is_array_of_tables()) f.fail_at(*s, "sensor: must be written [[" + prefix + "sonar.sensor]]");
+      for (const auto& row : *s->as_array()) read_sensor(*row.as_table(), file, prefix, c.layout);
     }
     f.finish();
   }
   if (const auto* n = top.get("pan_tilt")) {
-    if (!n->is_table()) top.fail_at(*n, "pan_tilt: expected a table [pan_tilt]");
-    Fields f(*n->as_table(), file, "[pan_tilt]");
+    if (!n->is_table()) top.fail_at(*n, "pan_tilt: expected a table [" + prefix + "pan_tilt]");
+    Fields f(*n->as_table(), file, "[" + prefix + "pan_tilt]");
     read_sonar_params(f, c.pan_tilt);
     if (auto v = f.opt_number("x")) c.pan_tilt_mount.pivot.x() = *v;
     if (auto v = f.opt_number("y")) c.pan_tilt_mount.pivot.y() = *v;
@@ -192,9 +193,9 @@ SimConfig apply(const toml::table& root, std::string_view file, SimConfig c) {
 
 // Public entry points: the internal exception becomes an Error value here.
 Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view file,
-                                   SimConfig base) {
+                                   SimConfig base, std::string_view prefix) {
   try {
-    return apply(table, file, std::move(base));
+    return apply(table, file, std::move(base), std::string(prefix));
   } catch (const ParseFailure& e) {
     return e.error;
   }

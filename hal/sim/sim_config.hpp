@@ -37,9 +37,10 @@ struct SimConfig {
 //   [[sonar.sensor]] number (1..24, required) x y direction_deg (a mounting error; the node
 //              wiring is the robot model's)
 //   [pan_tilt] x y sensor_offset and the [sonar] behaviour keys (except node_delay_ms, seed)
-// Unknown keys are errors (with file and line).
+// Unknown keys are errors (with file and line). `prefix` names the tables in messages ("sim."
+// for the [sim] section of robuterd's configuration).
 Result<SimConfig> apply_sim_config(const toml::table& table, std::string_view file,
-                                   SimConfig base = {});
+                                   SimConfig base = {}, std::string_view prefix = "");
 
 // Parses TOML text and applies it (see apply_sim_config).
 Result<SimConfig> parse_sim_config(std::string_view text, std::string_view file,

@@ -50,7 +50,7 @@ sim::SimConfig firmware_sim_defaults(const Config& cfg) {
 sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimOptions& opt) {
   sim::SimConfig c = firmware_sim_defaults(cfg);
   if (cfg.sim) {
-    auto applied = sim::apply_sim_config(cfg.sim->table, cfg.source, c);
+    auto applied = sim::apply_sim_config(cfg.sim->table, cfg.source, c, "sim.");
     if (!applied) return applied.error();
     c = std::move(applied).value();
   }
@@ -67,7 +67,7 @@ SimRobot::SimRobot(const Config& cfg, const SimOptions& opt)
     : ptu_(opt.ptu), rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
   auto composed = simulated_robot_config(cfg, opt);
   if (!composed) {
-    error_ = "sim: " + composed.error().describe();
+    error_ = composed.error().describe();
     return;
   }
   const sim::SimConfig& c = composed.value();
