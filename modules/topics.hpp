@@ -291,6 +291,54 @@ struct DemoStatus {
   std::uint64_t tick = 0;            // tick of the report
 };
 
+// ---- the motion arbiter (modules/emergency/motion_arbiter.*; docs/SAFETY.md §1) ----
+
+// An operator's command that bears on who drives, as the links took it.
+enum class OperatorAction : std::uint8_t {
+  motion,         // AM (AM 0 0 too)
+  go_to,          // AW with a target
+  servo,          // ASN or ASF (any servo request ends a motion at the gate)
+  stop_byte,      // the immediate stop byte 0x18
+  halt,           // XH
+  start_gate,     // AG
+  stop_gate,      // AT
+  start_doors,    // Ad
+  stop_doors,     // Af
+  start_planner,  // XG
+  start_demo,     // XT1
+  stop_demo,      // XT0
+};
+
+// One operator action and when it was taken.
+struct OperatorEvent {
+  OperatorAction action = OperatorAction::motion;  // what
+  std::uint64_t tick = 0;                          // when, ticks
+};
+
+// The operator's actions in the order the links took them (a ring: event n is at n % capacity).
+struct OperatorEvents {
+  static constexpr std::uint32_t kCapacity = 32;   // events kept between two arbiter runs
+  std::array<OperatorEvent, kCapacity> ring{};     // the latest events
+  std::uint32_t count = 0;                         // events since start
+};
+
+inline constexpr std::size_t kMotionSources = 6;   // MotionSource values
+
+// Who may drive, decided by the arbiter in the emergency module.
+struct MotionAuthority {
+  MotionSource owner = MotionSource::link;              // link / go_to: the operator; else that automatic mode
+  std::array<std::uint32_t, kMotionSources> runs{};     // per source: times the robot was handed to it
+  std::array<ModeReason, kMotionSources> ended{};       // per source: why its last run ended (none: never ended)
+  std::uint8_t detections = 7;                          // emergency detections in force: bumper 1, ultrasonic 2, communication 4
+  std::uint64_t tick = 0;                               // tick of the decision
+};
+
+// The door crossing's wish for lowered detections while it crosses (seed doors(): emerg.on = BUMPER).
+struct DetectionRequest {
+  bool lower = false;           // lower the detections while the crossing is in the door
+  std::uint8_t keep = 1;        // detections kept then: bumper 1, ultrasonic 2, communication 4
+};
+
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
 struct Blackboard {
   Topic<Heartbeat, HeartbeatModule> heartbeat;
@@ -302,6 +350,7 @@ struct Blackboard {
   Topic<UltrasonicSettings, SerialModule> us_settings;
   Topic<LinkStatus, SerialModule> link_status;
   Topic<ModeRequest, SerialModule> modes;
+  Topic<OperatorEvents, SerialModule> operator_events;
   // us (ultrasonic ring)
   Topic<UltrasonicRanges, UltrasonicModule> ranges;
   Topic<UltrasonicTiming, UltrasonicModule> us_timing;
@@ -309,6 +358,7 @@ struct Blackboard {
   Topic<EmergencyState, EmergencyModule> emergency;
   Topic<MotionCommand, EmergencyModule> motion_command;
   Topic<SonarSelection, EmergencyModule> sonar_selection;
+  Topic<MotionAuthority, EmergencyModule> authority;
   // executor
   Topic<Posture, ExecutorModule> posture;
   Topic<MotionRequest, ExecutorModule> go_to_motion;
@@ -324,6 +374,7 @@ struct Blackboard {
   Topic<ModeStatus, GateModule> gate_status;
   Topic<MotionRequest, DoorsModule> doors_motion;
   Topic<ModeStatus, DoorsModule> doors_status;
+  Topic<DetectionRequest, DoorsModule> doors_detections;
   Topic<MotionRequest, DemoModule> demo_motion;
   Topic<DemoStatus, DemoModule> demo_status;
 };

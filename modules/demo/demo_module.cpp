@@ -30,18 +30,22 @@ demo::CourseSettings course_settings(const Config& c) {
 
 DemoModule::DemoModule(Blackboard& bb, const Config& cfg)
     : course_(course_settings(cfg)),
-      enabled_(cfg.demo.enabled),
+      claim_(bb, MotionSource::demo),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
       emergency_state_(bb.emergency.reader()),
       motion_out_(bb.demo_motion.writer()),
       status_out_(bb.demo_status.writer()) {}
 
+// The run of [demo] enabled is handed out by the emergency module's init, before this one: the
+// course is running from the first tick.
 bool DemoModule::init(Kernel& k) {
   DemoStatus s;
   s.tick = k.tick();
-  if (enabled_) {
+  if (claim_.granted()) {
     course_.start();
+    running_ = true;
+    sent_stop_ = false;
     s.state = ModeState::running;
     log::info("demo: course started");
   }
@@ -50,11 +54,30 @@ bool DemoModule::init(Kernel& k) {
 }
 
 void DemoModule::run(Kernel& k) {
-  if (!enabled_) return;
+  const std::uint64_t tick = k.tick();
+  if (claim_.granted()) {
+    course_.start();
+    running_ = true;
+    sent_stop_ = false;
+    log::info("demo: course started");
+  } else if (running_) {
+    const ModeReason why = claim_.ended();
+    if (why != ModeReason::none) {
+      course_.stop();
+      running_ = false;
+      log::info("demo: ended ({})", why == ModeReason::emergency ? "emergency" : "operator");
+      demo::CourseOutput last;
+      last.phase = demo::Phase::done;
+      last.lap = status_out_.current().laps;
+      report(last, ModeState::failed, why, tick);
+      return;
+    }
+  }
+  if (!running_) return;
   const EmergencyState& e = emergency_state_.peek();
   const Posture& p = posture_.peek();
   demo::CourseInputs in;
-  in.tick = k.tick();
+  in.tick = tick;
   in.pose = SectorPose{p.x, p.y, p.theta};
   in.ranges = &ranges_.peek();
   in.emergency = e.latched || e.cause != EmergencyCause::none;
@@ -69,7 +92,6 @@ void DemoModule::run(Kernel& k) {
     if (!o.request) sent_stop_ = true;
     if (emergency_) k.trigger(emergency_);
   }
-  const DemoStatus& cur = status_out_.current();
   ModeState st = ModeState::running;
   ModeReason why = ModeReason::none;
   if (o.phase == demo::Phase::done) {
@@ -81,9 +103,15 @@ void DemoModule::run(Kernel& k) {
     st = ModeState::failed;
     why = ModeReason::no_landmark;
   }
-  if (cur.phase == static_cast<std::uint8_t>(o.phase) && cur.laps == o.lap && cur.state == st) return;
-  if (st == ModeState::failed && cur.state != ModeState::failed)
-    log::warn("demo: stopped in lap {} ({})", o.lap + 1, why == ModeReason::shutdown ? "shutdown" : "calibration boxes not found");
+  if (st != ModeState::running) running_ = false;
+  report(o, st, why, tick);
+}
+
+void DemoModule::report(const demo::CourseOutput& o, ModeState st, ModeReason why, std::uint64_t tick) {
+  const DemoStatus& cur = status_out_.current();
+  if (cur.phase == static_cast<std::uint8_t>(o.phase) && cur.laps == o.lap && cur.state == st && cur.reason == why) return;
+  if (st == ModeState::failed && cur.state != ModeState::failed && why == ModeReason::no_landmark)
+    log::warn("demo: stopped in lap {} (calibration boxes not found)", o.lap + 1);
   DemoStatus s = cur;
   s.state = st;
   s.reason = why;
@@ -91,8 +119,8 @@ void DemoModule::run(Kernel& k) {
   s.laps = o.lap;
   s.side_mm = static_cast<std::int32_t>(course_.last_side_mm());
   s.radius_mm = static_cast<std::int32_t>(course_.last_radius_mm());
-  if (o.lap_ended) s.lap_tick = in.tick;
-  s.tick = in.tick;
+  if (o.lap_ended) s.lap_tick = tick;
+  s.tick = tick;
   status_out_.publish(s);
   if (o.lap_ended)
     log::info("demo: lap {} done (side reading {:.0f} mm, calibration half-circle {:.0f} mm)", o.lap, course_.last_side_mm(),
@@ -100,7 +128,7 @@ void DemoModule::run(Kernel& k) {
 }
 
 void DemoModule::close(Kernel& k) {
-  if (!enabled_) return;
+  if (!running_) return;
   course_.stop();
   run(k);
 }

@@ -1,16 +1,19 @@
-// Demonstration module ([demo] enabled): drives the seed's course through the emergency gate.
+// Demonstration module (XT1, or [demo] enabled at start-up): drives the seed's course through the emergency gate.
 #pragma once
 
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/demo/course.hpp"
+#include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter {
 
-// When enabled, starts the course at start-up and publishes `demo_motion` (a motion source of
-// the emergency module: obstacles stop it there, as the seed's dem.c relied on emerg.rtm) and
-// `demo_status`. While an emergency holds it asks for nothing; it carries on once cleared.
+// Drives the course while the arbiter gives it the robot — from start-up with [demo] enabled, or
+// from an operator's XT1 — and publishes `demo_motion` (a motion source of the emergency module:
+// obstacles stop it there, as the seed's dem.c relied on emerg.rtm) and `demo_status`. While an
+// emergency condition holds at rest it asks for nothing; an operator's command (XT0, AM, ASF, AW,
+// XH, Af, AT, the stop byte …) or an emergency trip ends the run, and only XT1 starts a new one.
 class DemoModule final : public Process {
  public:
   DemoModule(Blackboard& bb, const Config& cfg);
@@ -25,14 +28,17 @@ class DemoModule final : public Process {
 
  private:
   demo::Course course_;
-  bool enabled_;
+  bool running_ = false;    // a run handed by the arbiter is going
+  MotionClaim claim_;       // runs handed by the arbiter, and their end
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<EmergencyState> emergency_state_;
   Writer<MotionRequest> motion_out_;
   Writer<DemoStatus> status_out_;
   Process* emergency_ = nullptr;
-  bool sent_stop_ = false;  // the final zero request went out
+  bool sent_stop_ = true;   // the final zero request went out
+  // Publishes the status for the course's output `o` (state `st`, reason `why`).
+  void report(const demo::CourseOutput& o, ModeState st, ModeReason why, std::uint64_t tick);
 };
 
 }  // namespace robuter

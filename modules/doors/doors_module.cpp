@@ -1,4 +1,4 @@
-// Door-crossing glue: Ad/Af and hand-over, the emergency mask, interruptions, requests, status.
+// Door-crossing glue: runs handed by the arbiter, the detections wish, interruptions, requests, status.
 #include "modules/doors/doors_module.hpp"
 
 #include "kernel/kernel.hpp"
@@ -12,60 +12,38 @@ DoorsModule::DoorsModule(Blackboard& bb, const Config& cfg, EmergencyModule* eme
     : crossing_(doors::crossing_settings(cfg)),
       emergency_(emergency),
       crossing_mask_(static_cast<std::uint8_t>(cfg.doors.emergency_mask & 7u)),
-      hand_over_(cfg.gate.hand_over),
-      modes_(bb.modes.reader()),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
-      gate_(bb.gate_status.reader()),
       posture_(bb.posture.reader()),
       link_(bb.link_status.reader()),
       claim_(bb, MotionSource::doors),
       motion_out_(bb.doors_motion.writer()),
-      status_out_(bb.doors_status.writer()) {}
+      status_out_(bb.doors_status.writer()),
+      detections_out_(bb.doors_detections.writer()) {}
 
+// Why lower the mask: the seed's doors() sets emerg.on = BUMPER — the ring would see the door's
+// edges under the safety distance and stop the robot in the doorway; the link may stay silent
+// for the whole slow crossing. The wish stands; the emergency module decides when it holds.
 bool DoorsModule::init(Kernel& k) {
-  seen_modes_ = modes_.peek().doors_seq;
-  gate_seen_ = gate_.peek().state;
+  claim_.init();
+  detections_out_.publish(DetectionRequest{true, crossing_mask_});
   status_out_.publish(ModeStatus{ModeState::off, ModeReason::none, 0, k.tick(), 0, 0, k.tick()});
   return true;
 }
 
-// Why lower the mask: the seed's doors() sets emerg.on = BUMPER — the ring would see the door's
-// edges under the safety distance and stop the robot in the doorway; the link may stay silent
-// for the whole slow crossing.
 void DoorsModule::begin(std::uint64_t tick) {
   crossing_.start(tick);
-  claim_.begin();
   had_link_ = link_.peek().links_open > 0;
   sent_stop_ = false;
-  if (emergency_ && !lowered_) {
-    saved_mask_ = emergency_->enabled();
-    emergency_->set_enabled(crossing_mask_);
-    lowered_ = true;
-  }
-  log::info("doors: crossing (emergency detections {} while crossing, {} before)", crossing_mask_, saved_mask_);
-}
-
-void DoorsModule::restore_mask() {
-  if (!lowered_) return;
-  if (emergency_) emergency_->set_enabled(saved_mask_);
-  lowered_ = false;
-  log::info("doors: emergency detections back to {}", saved_mask_);
+  log::info("doors: crossing (emergency detections {} while in the door)", crossing_mask_);
 }
 
 void DoorsModule::run(Kernel& k) {
   const std::uint64_t tick = k.tick();
-  const ModeRequest& m = modes_.peek();
-  if (m.doors_seq != seen_modes_) {
-    seen_modes_ = m.doors_seq;
-    if (m.doors && !crossing_.active()) begin(tick);             // Ad
-    else if (!m.doors && crossing_.active()) crossing_.fail(ModeReason::cancelled);  // Af
-  }
-  const ModeState gs = gate_.peek().state;
-  if (hand_over_ && gs == ModeState::aligned && gate_seen_ != ModeState::aligned && !crossing_.active()) begin(tick);
-  gate_seen_ = gs;
-  if (crossing_.active()) {
-    ModeReason why = claim_.interrupted();
+  if (claim_.granted()) {
+    begin(tick);  // Ad, or the passage finder's hand-over
+  } else if (crossing_.active()) {
+    ModeReason why = claim_.ended();  // Af, the operator, an emergency
     if (why == ModeReason::none && had_link_ && link_.peek().links_open == 0) why = ModeReason::link_lost;
     if (why != ModeReason::none) crossing_.fail(why);
   }
@@ -82,7 +60,7 @@ void DoorsModule::run(Kernel& k) {
 void DoorsModule::publish(Kernel& k, const doors::CrossingOutput& o) {
   const std::uint64_t tick = k.tick();
   const bool ending = !o.request && !sent_stop_;
-  if (o.request || (ending && o.reason != ModeReason::operator_motion)) {
+  if (o.request || ending) {  // dropped by the arbiter once the robot is no longer ours
     motion_out_.modify([&](MotionRequest& r) {
       r.left = o.request ? o.left : 0;
       r.right = o.request ? o.right : 0;
@@ -90,10 +68,7 @@ void DoorsModule::publish(Kernel& k, const doors::CrossingOutput& o) {
       r.tick = tick;
     });
   }
-  if (ending) {
-    sent_stop_ = true;
-    restore_mask();
-  }
+  if (ending) sent_stop_ = true;
   if ((o.request || ending) && emergency_) k.trigger(emergency_);
   const ModeStatus& cur = status_out_.current();
   if (cur.state == o.state && cur.reason == o.reason) return;
@@ -115,7 +90,6 @@ void DoorsModule::close(Kernel& k) {
     crossing_.fail(ModeReason::shutdown);
     publish(k, crossing_.step(doors::CrossingInputs{k.tick(), &scan_.peek(), {}, false}));
   }
-  restore_mask();
 }
 
 }  // namespace robuter

@@ -66,15 +66,22 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
       settings_(bb.us_settings.reader()),
       ranges_(bb.ranges.reader()),
       posture_(bb.posture.reader()),
+      actions_(bb.operator_events.reader()),
+      doors_wish_(bb.doors_detections.reader()),
+      doors_status_(bb.doors_status.reader()),
+      gate_status_(bb.gate_status.reader()),
       state_out_(bb.emergency.writer()),
+      authority_out_(bb.authority.writer()),
       command_out_(bb.motion_command.writer()),
       selection_out_(bb.sonar_selection.writer()) {
   add_motion_source(MotionSource::link, bb.link_motion.reader());
   add_motion_source(MotionSource::go_to, bb.go_to_motion.reader());
+  base_mask_ = gate_.enabled();
   // Nothing is granted until the first activation: the executor reads "stop" meanwhile.
   EmergencyState s;
   s.enabled = gate_.enabled();
   state_out_.publish(s);
+  authority_out_.publish(arbiter_.authority());
 }
 
 // Registration happens at start-up, before the periodic path.
@@ -87,36 +94,64 @@ bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionReques
 // The motion timeout is in ms: convert with the kernel's real tick; requests and link events
 // from before the start do not count.
 bool EmergencyModule::init(Kernel& k) {
-  const std::uint8_t enabled = gate_.enabled();  // set_enabled() may have run before the start
   gate_ = safety::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
-  gate_.set_enabled(enabled);
+  gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
   for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen_seq = sources_[i].reader.peek().seq;
   seen_stop_ = link_.peek().stop_seq;
   seen_reenable_ = link_.peek().reenable_seq;
   seen_servo_ = servo_.peek().seq;
+  seen_actions_ = actions_.peek().count;
+  if (demo_at_boot_) arbiter_.start_at_boot(MotionSource::demo);
+  MotionAuthority a = arbiter_.authority();
+  a.detections = base_mask_;
+  a.tick = k.tick();
+  authority_out_.publish(a);
   return true;
 }
 
-// Newest wins: among the sources whose seq changed since last seen, the latest request tick;
-// ties go to the first registered (the operator's link).
+// In the order the links took them; a gap (more than the ring holds) counts as an operator's
+// motion, the case that takes the robot back from any mode.
+void EmergencyModule::take_actions() {
+  const OperatorEvents& ev = actions_.peek();
+  if (ev.count - seen_actions_ > OperatorEvents::kCapacity) {
+    arbiter_.lost_actions();
+    seen_actions_ = ev.count - OperatorEvents::kCapacity;
+  }
+  for (; seen_actions_ != ev.count; ++seen_actions_)
+    arbiter_.take(ev.ring[seen_actions_ % OperatorEvents::kCapacity].action);
+}
+
+// The seed's doors = ON after the finder: a hand-over lowers the detections without a second
+// operator command, so it is off unless configured (docs/SAFETY.md §1).
+void EmergencyModule::hand_over() {
+  const ModeState gs = gate_status_.peek().state;
+  if (hand_over_ && gs == ModeState::aligned && gate_seen_ != ModeState::aligned) arbiter_.hand_over_to_doors();
+  gate_seen_ = gs;
+}
+
+std::uint8_t EmergencyModule::detections() const {
+  const ModeState d = doors_status_.peek().state;
+  const bool in_door = d == ModeState::crossing || d == ModeState::waiting || d == ModeState::leaving;
+  const DetectionRequest& wish = doors_wish_.peek();
+  if (arbiter_.authority().owner == MotionSource::doors && in_door && wish.lower)
+    return static_cast<std::uint8_t>(base_mask_ & wish.keep);
+  return base_mask_;
+}
+
+// Only the owner's request counts; the others' are seen and dropped (a mode the operator ended
+// may still be sending).
 void EmergencyModule::take_requests(safety::GateInputs& in) {
-  const Source* best = nullptr;
-  const MotionRequest* best_req = nullptr;
   for (std::size_t i = 0; i < source_count_; ++i) {
     Source& s = sources_[i];
     const MotionRequest& r = s.reader.peek();
     if (r.seq == s.seen_seq) continue;
     s.seen_seq = r.seq;
-    if (best_req == nullptr || r.tick > best_req->tick) {
-      best = &s;
-      best_req = &r;
-    }
+    if (!arbiter_.accepts(s.source)) continue;
+    in.new_request = true;
+    in.left = r.left;
+    in.right = r.right;
+    in.source = s.source;
   }
-  if (best_req == nullptr) return;
-  in.new_request = true;
-  in.left = best_req->left;
-  in.right = best_req->right;
-  in.source = best->source;
 }
 
 // One activation: gather, decide, publish; the executor is triggered on a new command so a
@@ -127,7 +162,19 @@ void EmergencyModule::run(Kernel& k) {
   const Posture& posture = posture_.peek();
   safety::GateInputs in;
   in.tick = k.tick();
+  const MotionAuthority before = arbiter_.authority();
+  take_actions();
+  hand_over();
+  gate_.set_enabled(detections());
   take_requests(in);
+  // The robot changed hands without a request of the new owner's (AT, Af, XH, XT0, a hand-over,
+  // an AW before its first step): the last owner's speeds must not run on — a zero request.
+  const MotionAuthority& now = arbiter_.authority();
+  if (!in.new_request && (now.owner != before.owner || now.runs != before.runs)) {
+    in.new_request = true;
+    in.left = in.right = 0;
+    in.source = now.owner;
+  }
   in.servo_request = servo_.peek().seq != seen_servo_;
   seen_servo_ = servo_.peek().seq;
   in.stop_byte = link.stop_seq != seen_stop_;
@@ -149,7 +196,14 @@ void EmergencyModule::run(Kernel& k) {
   }
 
   const safety::GateDecision d = gate_.step(in);
+  if (d.tripped) arbiter_.emergency_stop();
   state_out_.publish(d.state);
+  MotionAuthority a = arbiter_.authority();
+  a.detections = gate_.enabled();
+  a.tick = in.tick;
+  const MotionAuthority& was = authority_out_.current();
+  if (a.owner != was.owner || a.runs != was.runs || a.ended != was.ended || a.detections != was.detections)
+    authority_out_.publish(a);
   const MotionCommand& cur = command_out_.current();
   if (cur.seq == 0 || cur.left != d.left || cur.right != d.right || cur.stop != d.stop || cur.source != d.source) {
     const std::uint32_t seq = cur.seq + 1;

@@ -7,6 +7,7 @@
 #include "hal/api/bumpers.hpp"
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
+#include "modules/emergency/motion_arbiter.hpp"
 #include "modules/emergency/motion_gate.hpp"
 #include "modules/topics.hpp"
 
@@ -29,9 +30,17 @@ class EmergencyModule final : public Process {
   void set_executor(Process* p) { executor_ = p; }
   // Adds another source of motion requests (gate, doors, planner…); false when full.
   bool add_motion_source(MotionSource source, Reader<MotionRequest> reader);
-  // Switches detections on or off (bumper 1, ultrasonic 2, communication 4).
-  void set_enabled(std::uint8_t mask) { gate_.set_enabled(mask); }
-  std::uint8_t enabled() const { return gate_.enabled(); }
+  // The operator's detections (bumper 1, ultrasonic 2, communication 4); the door crossing may
+  // lower them while it is in a door (its DetectionRequest), nothing else.
+  void set_enabled(std::uint8_t mask) { base_mask_ = static_cast<std::uint8_t>(mask & 7u); }
+  // The detections in force now.
+  std::uint8_t enabled() const { return detections(); }
+  // Modes the arbiter must know at start-up: the passage finder hands over to the door crossing
+  // when aligned ([gate] hand_over); the demonstration drives from start-up ([demo] enabled).
+  void set_modes(bool gate_hands_over, bool demo_at_boot) {
+    hand_over_ = gate_hands_over;
+    demo_at_boot_ = demo_at_boot;
+  }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -43,7 +52,14 @@ class EmergencyModule final : public Process {
     Reader<MotionRequest> reader;              // its topic
     std::uint32_t seen_seq = 0;                // seq of its last request taken, for change detection
   };
-  // Finds the newest new request of all sources (latest tick; ties go to the first registered).
+  // Applies the operator's actions since the last run to the arbiter, in order.
+  void take_actions();
+  // The passage finder aligned with hand-over on: the door crossing takes the robot.
+  void hand_over();
+  // The detections in force: the operator's, lowered to the door crossing's only while it owns
+  // the robot and is in the door.
+  std::uint8_t detections() const;
+  // The owner's new request, if any (other sources' requests are seen and dropped).
   void take_requests(safety::GateInputs& in);
   // Whether the robot has come to rest: the executor's last two postures of different ticks
   // agree (a stopped drive's set-points are zero long before the robot stops braking).
@@ -56,6 +72,7 @@ class EmergencyModule final : public Process {
   RobotConfig robot_;
   EmergencyTuning tuning_;
   safety::MotionGate gate_;
+  safety::MotionArbiter arbiter_;
   std::array<Source, kMaxSources> sources_{};
   std::size_t source_count_ = 0;
   Reader<LinkStatus> link_;
@@ -63,13 +80,23 @@ class EmergencyModule final : public Process {
   Reader<UltrasonicSettings> settings_;
   Reader<UltrasonicRanges> ranges_;
   Reader<Posture> posture_;
+  Reader<OperatorEvents> actions_;
+  Reader<DetectionRequest> doors_wish_;
+  Reader<ModeStatus> doors_status_;
+  Reader<ModeStatus> gate_status_;
   Writer<EmergencyState> state_out_;
+  Writer<MotionAuthority> authority_out_;
   Writer<MotionCommand> command_out_;
   Writer<SonarSelection> selection_out_;
   Process* executor_ = nullptr;       // triggered on every new command
   std::uint32_t seen_stop_ = 0;       // LinkStatus.stop_seq last seen
   std::uint32_t seen_reenable_ = 0;   // LinkStatus.reenable_seq last seen
   std::uint32_t seen_servo_ = 0;      // ServoRequest.seq last seen
+  std::uint32_t seen_actions_ = 0;    // OperatorEvents.count last seen
+  std::uint8_t base_mask_ = 7;        // the operator's detections (configuration, set_enabled)
+  bool hand_over_ = false;            // [gate] hand_over
+  bool demo_at_boot_ = false;         // [demo] enabled
+  ModeState gate_seen_ = ModeState::off;  // the passage finder's state at the last run
   EmergencyState last_{};             // previous verdict, for transition logs
   Posture pose_{};                    // the executor's posture of the latest tick seen
   bool have_pose_ = false;            // pose_ holds a published posture

@@ -25,11 +25,10 @@ ExecutorModule::ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotCon
       robot_(robot),
       go_to_(with_robot(go_to, robot)),
       command_(bb.motion_command.reader()),
-      emergency_(bb.emergency.reader()),
       servo_(bb.servo_request.reader()),
       odometry_set_(bb.odometry_set.reader()),
       go_to_request_(bb.go_to.reader()),
-      link_motion_(bb.link_motion.reader()),
+      claim_(bb, MotionSource::go_to),
       posture_out_(bb.posture.writer()),
       go_to_out_(bb.go_to_motion.writer()) {}
 
@@ -40,7 +39,6 @@ bool ExecutorModule::init(Kernel& k) {
   servo_.copy();
   odometry_set_.copy();
   go_to_request_.copy();
-  seen_link_seq_ = link_motion_.peek().seq;
   applied_seq_ = command_.peek().seq;
   const motion::PostureUnits p = motion::to_posture(drive_.odometry());
   posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), static_cast<std::uint8_t>(drive_.health())});
@@ -89,29 +87,21 @@ void ExecutorModule::end_go_to(std::uint64_t tick, bool publish_stop) {
   if (publish_stop) request(tick, 0, 0);
 }
 
-// Cancellations first (a newer AM, an emergency), then a new AW, then one control step per
-// tick whatever the number of activations.
+// The arbiter decides: a new run for the go-to (AW) starts it; the operator or an emergency
+// taking the robot ends it. Then one control step per tick whatever the number of activations.
 void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits& now) {
-  const EmergencyState& e = emergency_.peek();
-  if (link_motion_.peek().seq != seen_link_seq_) {
-    seen_link_seq_ = link_motion_.peek().seq;
-    if (go_to_.active()) log::info("executor: go-to cancelled by a motion request");
-    end_go_to(tick, false);
-  }
-  if (go_to_.active() && (e.cause != EmergencyCause::none || e.latched || e.trips != go_to_trips_)) {
-    log::info("executor: go-to cancelled by an emergency");
-    end_go_to(tick, true);
-  }
-  if (go_to_request_.updated()) {
+  if (claim_.granted()) {
     const GoToRequest g = go_to_request_.copy();
-    if (g.active) {
-      go_to_.start(motion::PostureUnits{g.x, g.y, g.theta});
-      go_to_trips_ = e.trips;
-      log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
-    } else {
-      end_go_to(tick, true);
+    go_to_.start(motion::PostureUnits{g.x, g.y, g.theta});
+    log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
+  } else if (go_to_.active()) {
+    const ModeReason why = claim_.ended();
+    if (why != ModeReason::none) {
+      log::info("executor: go-to ended by {}", why == ModeReason::emergency ? "an emergency" : "the operator");
+      end_go_to(tick, false);
     }
   }
+  if (go_to_request_.updated() && !go_to_request_.copy().active) end_go_to(tick, true);  // a cancel
   if (!go_to_.active() || tick == last_go_to_tick_) return;
   last_go_to_tick_ = tick;
   const motion::WheelSpeeds w = go_to_.step(now);
@@ -130,8 +120,7 @@ void ExecutorModule::run(Kernel& k) {
     const ServoRequest s = servo_.copy();
     const MotionCommand& c = command_.peek();
     if (s.on && !c.stop && command_.generation() > 0 && drive_ok) drive_.set_servo(true);
-    if (!s.on) drive_.set_servo(false);
-    end_go_to(tick, true);  // any AS ends a go-to, as it ends any motion at the gate
+    if (!s.on) drive_.set_servo(false);  // (any AS also ends a go-to: the arbiter's table)
   }
   apply_command(drive_ok);
 

@@ -6,6 +6,7 @@
 #include "hal/api/drive.hpp"
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
+#include "modules/emergency/motion_claim.hpp"
 #include "modules/executor/go_to.hpp"
 #include "modules/topics.hpp"
 
@@ -26,8 +27,8 @@ class ExecutorModule final : public Process {
   void apply_command(bool drive_ok);
   // Decides whether a go-to runs on: new AW, cancellations, one control step per tick.
   void serve_go_to(std::uint64_t tick, const motion::PostureUnits& now);
-  // Ends the go-to; `publish_stop` asks the gate for zero speeds (not when a newer link
-  // request took over, which must stay the newest).
+  // Ends the go-to; `publish_stop` asks the gate for zero speeds (dropped once the arbiter gave
+  // the robot to someone else).
   void end_go_to(std::uint64_t tick, bool publish_stop);
   // Publishes a go-to wheel-speed request through the emergency gate.
   void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
@@ -36,16 +37,13 @@ class ExecutorModule final : public Process {
   RobotConfig robot_;
   motion::GoToController go_to_;
   Reader<MotionCommand> command_;        // what the emergency module grants
-  Reader<EmergencyState> emergency_;     // trips cancel a go-to
   Reader<ServoRequest> servo_;           // ASN / ASF
   Reader<OdometrySet> odometry_set_;     // AC
   Reader<GoToRequest> go_to_request_;    // AW
-  Reader<MotionRequest> link_motion_;    // AM: a newer one cancels a go-to
+  MotionClaim claim_;                    // AW's runs handed by the arbiter, and their end
   Writer<Posture> posture_out_;
   Writer<MotionRequest> go_to_out_;
   std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
-  std::uint32_t seen_link_seq_ = 0;      // MotionRequest.seq of link_motion last seen
-  std::uint32_t go_to_trips_ = 0;        // EmergencyState.trips when the go-to started
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
 };
 

@@ -193,6 +193,7 @@ std::optional<std::string> Firmware::setup() {
   emergency->add_motion_source(MotionSource::demo, bb_.demo_motion.reader());
   demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
+  emergency->set_modes(cfg_.gate.hand_over, cfg_.demo.enabled);
   planner->set_emergency(emergency.get());
   if (!opt_.planner_pictures.empty()) {
     std::error_code ec;

@@ -1,4 +1,4 @@
-// Passage-finder glue: AG/AT, interruptions, requests and status.
+// Passage-finder glue: runs handed by the arbiter (AG) and their end, requests and status.
 #include "modules/gate/gate_module.hpp"
 
 #include "kernel/kernel.hpp"
@@ -9,7 +9,6 @@ namespace robuter {
 
 GateModule::GateModule(Blackboard& bb, const Config& cfg)
     : logic_(gate::gate_settings(cfg)),
-      modes_(bb.modes.reader()),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),
@@ -18,28 +17,20 @@ GateModule::GateModule(Blackboard& bb, const Config& cfg)
       status_out_(bb.gate_status.writer()) {}
 
 bool GateModule::init(Kernel& k) {
-  seen_modes_ = modes_.peek().gate_seq;
+  claim_.init();
   status_out_.publish(ModeStatus{ModeState::off, ModeReason::none, 0, k.tick(), 0, 0, k.tick()});
   return true;
 }
 
 void GateModule::run(Kernel& k) {
   const std::uint64_t tick = k.tick();
-  const ModeRequest& m = modes_.peek();
-  if (m.gate_seq != seen_modes_) {
-    seen_modes_ = m.gate_seq;
-    if (m.gate && !logic_.active()) {  // AG
-      logic_.start(tick);
-      started_ = tick;
-      claim_.begin();
-      sent_stop_ = false;
-      log::info("gate: searching for a passage");
-    } else if (!m.gate && logic_.active()) {  // AT
-      logic_.fail(ModeReason::cancelled);
-    }
-  }
-  if (logic_.active()) {
-    const ModeReason why = claim_.interrupted();
+  if (claim_.granted()) {  // AG (a second AG restarts the search)
+    logic_.start(tick);
+    started_ = tick;
+    sent_stop_ = false;
+    log::info("gate: searching for a passage");
+  } else if (logic_.active()) {  // AT, the operator, an emergency
+    const ModeReason why = claim_.ended();
     if (why != ModeReason::none) logic_.fail(why);
   }
   const Posture& p = posture_.peek();
@@ -57,17 +48,14 @@ void GateModule::publish(Kernel& k, const gate::GateOutput& o) {
   const std::uint64_t tick = k.tick();
   const bool ending = !o.request && !sent_stop_;
   if (o.request || ending) {
-    // An interruption by an emergency or another source needs no stop of ours (theirs is newer).
-    const bool ours_wanted = o.request || o.reason != ModeReason::operator_motion;
-    if (ours_wanted) {
-      motion_out_.modify([&](MotionRequest& r) {
-        r.left = o.request ? o.left : 0;
-        r.right = o.request ? o.right : 0;
-        ++r.seq;
-        r.tick = tick;
-      });
-      if (emergency_) k.trigger(emergency_);
-    }
+    // The arbiter drops it once the robot is no longer ours (it stopped the robot then).
+    motion_out_.modify([&](MotionRequest& r) {
+      r.left = o.request ? o.left : 0;
+      r.right = o.request ? o.right : 0;
+      ++r.seq;
+      r.tick = tick;
+    });
+    if (emergency_) k.trigger(emergency_);
     if (ending) sent_stop_ = true;
   }
   const ModeStatus& cur = status_out_.current();

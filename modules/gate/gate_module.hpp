@@ -4,7 +4,7 @@
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/gate/gate_logic.hpp"
-#include "modules/ptu/motion_claim.hpp"
+#include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter {
@@ -30,15 +30,13 @@ class GateModule final : public Process {
   void publish(Kernel& k, const gate::GateOutput& o);
 
   gate::GateLogic logic_;
-  Reader<ModeRequest> modes_;
   Reader<PanTiltScan> scan_;
   Reader<ModeStatus> ptu_;
   Reader<Posture> posture_;
-  MotionClaim claim_;                 // an emergency or another source taking the robot
+  MotionClaim claim_;                 // runs handed by the arbiter (AG), and their end (AT, the operator, an emergency)
   Writer<MotionRequest> motion_out_;
   Writer<ModeStatus> status_out_;
   Process* emergency_ = nullptr;
-  std::uint32_t seen_modes_ = 0;      // ModeRequest.gate_seq last acted on
   std::uint64_t started_ = 0;         // tick of the start
   bool sent_stop_ = true;             // the last request was zero and the search has ended
 };

@@ -67,10 +67,7 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       selection_(bb.sonar_selection.reader()),
       pan_tilt_(bb.pan_tilt_scan.reader()),
       goal_in_(bb.planner_goal.reader()),
-      emergency_(bb.emergency.reader()),
-      link_motion_(bb.link_motion.reader()),
-      go_to_motion_(bb.go_to_motion.reader()),
-      servo_(bb.servo_request.reader()),
+      claim_(bb, MotionSource::planner),
       motion_out_(bb.planner_motion.writer()),
       status_out_(bb.planner_status.writer()),
       map_out_(bb.planner_map.writer()) {}
@@ -80,9 +77,6 @@ bool PlannerModule::init(Kernel& k) {
   planner_.set_map(plan::OccupancyMap(s_.map, s_.hit_threshold));
   if (pictures_) pictures_->reserve(planner_, kMaxPicturePath);
   goal_in_.copy();  // goals from before the start are not served
-  seen_link_ = link_motion_.peek().seq;
-  seen_go_to_ = go_to_motion_.peek().seq;
-  seen_servo_ = servo_.peek().seq;
   for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
   pan_tick_ = pan_tilt_.peek().read_tick;
   log::info("planner: map {} x {} cells of {} mm, {} footprint", s_.map.width, s_.map.height,
@@ -167,39 +161,34 @@ void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
   state_ = state;
 }
 
+// A run handed by the arbiter (XG) starts the newest goal; an XH outside a run still reads
+// `cancelled` afterwards.
 void PlannerModule::serve_goal(std::uint64_t tick) {
-  if (!goal_in_.updated()) return;
-  const PlannerGoal g = goal_in_.copy();
-  if (!g.active) {
-    if (navigating(state_) || state_ != PlannerState::idle) finish(tick, PlannerState::cancelled, true);
+  if (!claim_.granted()) {
+    if (goal_in_.updated() && !goal_in_.copy().active && state_ != PlannerState::idle)
+      finish(tick, PlannerState::cancelled, navigating(state_));
     return;
   }
+  const PlannerGoal g = goal_in_.copy();
   goal_ = g;
   plans_ = scans_ = 0;
   path_m_ = prefix_m_ = 0.0;
   prefix_len_ = leg_count_ = 0;
   final_turn_ = false;
-  trips_ = emergency_.peek().trips;
-  seen_link_ = link_motion_.peek().seq;
-  seen_go_to_ = go_to_motion_.peek().seq;
-  seen_servo_ = servo_.peek().seq;
   log::info("planner: goal {} {}{}", g.x, g.y, g.has_theta ? " with heading" : "");
   begin_scan(tick);
 }
 
-// Like the go-to: a newer link or go-to request, any servo request, or an emergency ends it.
+// The arbiter's word (modules/emergency): XH cancels; the operator's command or an emergency stops.
 bool PlannerModule::interrupted(std::uint64_t tick) {
-  bool other = false;
-  if (link_motion_.peek().seq != seen_link_) other = true;
-  if (go_to_motion_.peek().seq != seen_go_to_) other = true;
-  if (servo_.peek().seq != seen_servo_) other = true;
-  seen_link_ = link_motion_.peek().seq;
-  seen_go_to_ = go_to_motion_.peek().seq;
-  seen_servo_ = servo_.peek().seq;
-  const EmergencyState& e = emergency_.peek();
-  const bool emergency = e.latched || e.cause != EmergencyCause::none || e.trips != trips_;
-  if (!navigating(state_) || (!other && !emergency)) return false;
-  log::info("planner: navigation ended by {}", emergency ? "an emergency" : "another motion request");
+  if (!navigating(state_)) return false;
+  const ModeReason why = claim_.ended();
+  if (why == ModeReason::none) return false;
+  if (why == ModeReason::cancelled) {
+    finish(tick, PlannerState::cancelled, false);
+    return true;
+  }
+  log::info("planner: navigation ended by {}", why == ModeReason::emergency ? "an emergency" : "the operator");
   finish(tick, PlannerState::stopped, false);
   return true;
 }

@@ -7,6 +7,7 @@
 
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
+#include "modules/emergency/motion_claim.hpp"
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/path_follower.hpp"
 #include "modules/planner/picture_mailbox.hpp"
@@ -52,7 +53,7 @@ class PlannerModule final : public Process {
   void integrate_pan_tilt();
   // A new XG (start) or XH (cancel).
   void serve_goal(std::uint64_t tick);
-  // True (and the navigation ended) when an emergency or another motion source interrupted it.
+  // True (and the navigation ended) when the arbiter took the robot back: XH, the operator, an emergency.
   bool interrupted(std::uint64_t tick);
   // Enters the scanning state: stop and wait for fresh readings.
   void begin_scan(std::uint64_t tick);
@@ -83,10 +84,7 @@ class PlannerModule final : public Process {
   Reader<SonarSelection> selection_;
   Reader<PanTiltScan> pan_tilt_;         // the pan-tilt's sectors: more beams for the map
   Reader<PlannerGoal> goal_in_;
-  Reader<EmergencyState> emergency_;
-  Reader<MotionRequest> link_motion_;    // AM: a newer one ends the navigation
-  Reader<MotionRequest> go_to_motion_;   // AW: likewise
-  Reader<ServoRequest> servo_;           // AS: likewise
+  MotionClaim claim_;                    // runs handed by the arbiter (XG), and their end
   Writer<MotionRequest> motion_out_;
   Writer<PlannerStatus> status_out_;
   Writer<PlannerMapWindow> map_out_;
@@ -115,8 +113,6 @@ class PlannerModule final : public Process {
   std::uint32_t run_us_max_ = 0;           // µs, thread CPU time: the longest activation
   std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
-  std::uint32_t seen_link_ = 0, seen_go_to_ = 0, seen_servo_ = 0;  // seqs last seen
-  std::uint32_t trips_ = 0;                // EmergencyState.trips when the goal started
   std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
 };
 

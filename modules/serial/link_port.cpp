@@ -30,6 +30,15 @@ void LinkPort::wake_emergency() const {
   if (kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
 }
 
+void LinkPort::act(OperatorAction a) {
+  const std::uint64_t t = tick();
+  w_.events.modify([&](OperatorEvents& e) {
+    e.ring[e.count % OperatorEvents::kCapacity] = OperatorEvent{a, t};
+    ++e.count;
+  });
+  wake_emergency();
+}
+
 std::uint64_t LinkPort::tick() const { return kernel_ ? kernel_->tick() : 0; }
 
 bool LinkPort::latched() const { return emergency_.peek().latched; }
@@ -89,7 +98,7 @@ PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexc
     ++m.seq;
     m.tick = t;
   });
-  wake_emergency();
+  act(OperatorAction::motion);
   return PortResult::ok;
 }
 
@@ -99,6 +108,7 @@ PortResult LinkPort::set_servo(bool on) noexcept {
     s.on = on;
     ++s.seq;
   });
+  act(OperatorAction::servo);
   return PortResult::ok;
 }
 
@@ -132,6 +142,7 @@ PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
     g.active = true;
     ++g.seq;
   });
+  act(OperatorAction::go_to);
   return PortResult::ok;
 }
 
@@ -159,6 +170,7 @@ PortResult LinkPort::set_gate_finder(bool on) noexcept {
     ++m.seq;
     ++m.gate_seq;
   });
+  act(on ? OperatorAction::start_gate : OperatorAction::stop_gate);
   return PortResult::ok;
 }
 
@@ -170,6 +182,15 @@ PortResult LinkPort::set_door_crossing(bool on) noexcept {
     ++m.seq;
     ++m.doors_seq;
   });
+  act(on ? OperatorAction::start_doors : OperatorAction::stop_doors);
+  return PortResult::ok;
+}
+
+// XT1 / XT0: the demonstration course, started and stopped like the other modes.
+PortResult LinkPort::set_demo(bool on) noexcept {
+  if (demo_status_.generation() == 0) return PortResult::unavailable;
+  if (on && latched()) return PortResult::refused_emergency;
+  act(on ? OperatorAction::start_demo : OperatorAction::stop_demo);
   return PortResult::ok;
 }
 
@@ -202,7 +223,7 @@ void LinkPort::message_received() noexcept {
 
 void LinkPort::immediate_stop() noexcept {
   w_.status.modify([](LinkStatus& s) { ++s.stop_seq; });
-  wake_emergency();
+  act(OperatorAction::stop_byte);
 }
 
 protocol::EmergencyStatus LinkPort::emergency() const noexcept {
@@ -280,6 +301,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
     p.active = true;
     ++p.seq;
   });
+  act(OperatorAction::start_planner);
   return PortResult::ok;
 }
 
@@ -290,6 +312,7 @@ PortResult LinkPort::cancel_goal() noexcept {
     p.active = false;
     ++p.seq;
   });
+  act(OperatorAction::halt);
   return PortResult::ok;
 }
 

@@ -23,6 +23,7 @@ struct LinkWriters {
   Writer<LinkStatus> status;
   Writer<ModeRequest> modes;
   Writer<PlannerGoal> goal;   // the planner's goal (XG, XH)
+  Writer<OperatorEvents> events;  // the operator's actions for the motion arbiter, in order
 };
 
 class LinkPort final : public protocol::RobotPort {
@@ -56,6 +57,7 @@ class LinkPort final : public protocol::RobotPort {
   protocol::PortResult set_pan_tilt(bool on) noexcept override;
   protocol::PortResult set_gate_finder(bool on) noexcept override;
   protocol::PortResult set_door_crossing(bool on) noexcept override;
+  protocol::PortResult set_demo(bool on) noexcept override;
   protocol::PortResult set_sensor_table(const protocol::SensorTable& active) noexcept override;
   protocol::PortResult set_node_delay(std::int32_t ticks) noexcept override;
   protocol::PortResult set_us_timeout(std::int32_t ms) noexcept override;
@@ -101,6 +103,8 @@ class LinkPort final : public protocol::RobotPort {
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
   // Asks the emergency module to judge a new request in this tick.
   void wake_emergency() const;
+  // Hands an operator's action to the motion arbiter (in order) and wakes it.
+  void act(OperatorAction a);
   bool shutdown_ = false;                  // AX accepted
   mutable std::array<protocol::ProcessFigures, protocol::kMaxKernelProcesses> figures_{};  // XK storage
 };

@@ -51,6 +51,7 @@ enum class CommandId : std::uint8_t {
   get_planner_status,      // XP
   get_planner_map,         // XM
   get_modes,               // XD (pan-tilt, gate, doors, demo)
+  set_demo,                // XT0 / XT1 (demonstration course)
 };
 
 }  // namespace robuter::protocol

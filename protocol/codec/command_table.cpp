@@ -88,6 +88,7 @@ constexpr std::array kTable = {
     CommandRow{'X', 'M', C::get_planner_map, no_params(), handle_get_planner_map,
                "planner map around the robot"},
     CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate, door-crossing and demonstration states"},
+    CommandRow{'X', 'T', C::set_demo, one_of("01"), handle_set_demo, "demonstration course stop/start"},
 };
 
 }  // namespace

@@ -52,6 +52,7 @@ void handle_get_kernel_figures(const Command&, RobotPort&, ReplyWriter&) noexcep
 void handle_get_version(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XV
 void handle_set_stream(const Command&, RobotPort&, ReplyWriter&) noexcept;          // XS
 void handle_set_verbose_errors(const Command&, RobotPort&, ReplyWriter&) noexcept;  // XB
+void handle_set_demo(const Command&, RobotPort&, ReplyWriter&) noexcept;            // XT
 void handle_set_checksums(const Command&, RobotPort&, ReplyWriter&) noexcept;       // XC
 void handle_set_terminator(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XL
 

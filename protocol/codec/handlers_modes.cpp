@@ -6,6 +6,11 @@ namespace robuter::protocol {
 // XD → `D <pantilt> <reason> <gate> <reason> <doors> <reason> <sweeps> <width-mm> <cross-ticks>
 // <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words from
 // the port (the demonstration's words come after the older fields, so readers of those keep working).
+// XT1 / XT0: the demonstration course started (taking the robot) or stopped.
+void handle_set_demo(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
+  reply_result(port.set_demo(cmd.choice == '1'), out);
+}
+
 void handle_get_modes(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   ModesReport r;
   const PortResult res = port.modes(r);

@@ -40,6 +40,7 @@ class RobotPort {
   virtual PortResult set_pan_tilt(bool on) noexcept = 0;       // Ap / Ag
   virtual PortResult set_gate_finder(bool on) noexcept = 0;    // AG / AT
   virtual PortResult set_door_crossing(bool on) noexcept = 0;  // Ad / Af
+  virtual PortResult set_demo(bool on) noexcept = 0;           // XT1 / XT0
   virtual PortResult set_sensor_table(const SensorTable& active) noexcept = 0;  // UT
   virtual PortResult set_node_delay(std::int32_t ticks) noexcept = 0;          // UD
   virtual PortResult set_us_timeout(std::int32_t ms) noexcept = 0;             // Ut

@@ -56,7 +56,7 @@ class FakeRobotPort final : public RobotPort {
   std::size_t pass_length = 0;       // its length
   Posture last_odometry{};           // last set_odometry
   Posture last_goal{};               // last go_to
-  bool pan_tilt_on = false, gate_on = false, doors_on = false;  // last switch values
+  bool pan_tilt_on = false, gate_on = false, doors_on = false, demo_on = false;  // last switch values
   SensorTable last_table{};          // last set_sensor_table
   std::int32_t last_delay = -1;      // last set_node_delay, ticks
   std::int32_t last_timeout = -1;    // last set_us_timeout, ms
@@ -115,6 +115,7 @@ class FakeRobotPort final : public RobotPort {
   PortResult set_pan_tilt(bool on) noexcept override { return record(pan_tilt_on, on); }
   PortResult set_gate_finder(bool on) noexcept override { return record(gate_on, on); }
   PortResult set_door_crossing(bool on) noexcept override { return record(doors_on, on); }
+  PortResult set_demo(bool on) noexcept override { return record(demo_on, on); }
   PortResult set_sensor_table(const SensorTable& t) noexcept override {
     return record(last_table, t);
   }

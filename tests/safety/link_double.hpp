@@ -20,7 +20,17 @@ class SerialModule {
         odometry_(bb.odometry_set.writer()),
         go_to_(bb.go_to.writer()),
         us_(bb.us_settings.writer()),
-        status_(bb.link_status.writer()) {}
+        status_(bb.link_status.writer()),
+        events_(bb.operator_events.writer()) {}
+
+  // An operator's action for the motion arbiter, as the link port records it.
+  void act(OperatorAction a) {
+    const std::uint64_t t = k_.tick();
+    events_.modify([&](OperatorEvents& e) {
+      e.ring[e.count % OperatorEvents::kCapacity] = OperatorEvent{a, t};
+      ++e.count;
+    });
+  }
 
   // Any well-formed message: the communication watchdog's time stamp.
   void message() {
@@ -37,6 +47,7 @@ class SerialModule {
       ++m.seq;
       m.tick = t;
     });
+    act(OperatorAction::motion);
   }
   // ASN / ASF.
   void as(bool on) {
@@ -45,6 +56,7 @@ class SerialModule {
       s.on = on;
       ++s.seq;
     });
+    act(OperatorAction::servo);
   }
   // AC x y theta.
   void ac(std::int32_t x, std::int32_t y, std::int32_t theta) {
@@ -66,6 +78,7 @@ class SerialModule {
       g.active = active;
       ++g.seq;
     });
+    if (active) act(OperatorAction::go_to);
   }
   // UT table (bit s-1 = sensor s).
   void ut(std::uint32_t table) {
@@ -92,6 +105,7 @@ class SerialModule {
   // The stop byte (not a message).
   void stop_byte() {
     status_.modify([](LinkStatus& s) { ++s.stop_seq; });
+    act(OperatorAction::stop_byte);
   }
 
  private:
@@ -102,6 +116,7 @@ class SerialModule {
   Writer<GoToRequest> go_to_;
   Writer<UltrasonicSettings> us_;
   Writer<LinkStatus> status_;
+  Writer<OperatorEvents> events_;
 };
 
 }  // namespace robuter
