@@ -13,6 +13,11 @@ inline constexpr std::uint8_t kDetectBumper = 1;      // contact bumpers
 inline constexpr std::uint8_t kDetectUltrasonic = 2;  // watch-dog sensors under the safety distance
 inline constexpr std::uint8_t kDetectComm = 4;        // link silent for longer than the limit
 
+// Whether a command that would move the robot (or power its servo, start a mode) is taken now:
+// while an emergency is latched the gate drops every request, so the link answers such a
+// command `error` rather than `ack` — the link's replies follow this one rule.
+constexpr bool admits_motion(const EmergencyState& s) { return !s.latched; }
+
 // Everything the gate needs to know, in ticks and mm.
 struct GateSettings {
   std::uint8_t enabled = 7;                  // detections on: bumper 1, ultrasonic 2, communication 4

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "kernel/kernel.hpp"
+#include "modules/emergency/motion_gate.hpp"
 #include "modules/planner/map_bounds.hpp"
 
 namespace robuter {
@@ -41,7 +42,7 @@ void LinkPort::act(OperatorAction a) {
 
 std::uint64_t LinkPort::tick() const { return kernel_ ? kernel_->tick() : 0; }
 
-bool LinkPort::latched() const { return emergency_.peek().latched; }
+bool LinkPort::latched() const { return !safety::admits_motion(emergency_.peek()); }
 
 protocol::Ticks LinkPort::clock() const noexcept { return static_cast<protocol::Ticks>(tick()); }
 

@@ -81,6 +81,7 @@ class LinkPort final : public protocol::RobotPort {
 
  private:
   // True while an emergency is latched: requests to move are refused.
+  // The emergency module's admission rule (safety::admits_motion) says no: refuse with `error`.
   bool latched() const;
   std::uint64_t tick() const;
   // True once the planner module has published (its process row runs).
