@@ -25,22 +25,6 @@ safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig
   return s;
 }
 
-const char* cause_name(EmergencyCause c) {
-  switch (c) {
-    case EmergencyCause::none: return "none";
-    case EmergencyCause::bumper: return "bumper";
-    case EmergencyCause::obstacle: return "obstacle";
-    case EmergencyCause::comm_loss: return "comm-loss";
-    case EmergencyCause::stop_byte: return "stop-byte";
-    case EmergencyCause::motion_timeout: return "motion-timeout";
-    case EmergencyCause::drive_fault: return "drive-fault";
-    case EmergencyCause::other: return "other";
-    case EmergencyCause::heartbeat_lost: return "heartbeat-lost";
-    case EmergencyCause::bus_passive: return "bus-error-passive";
-    case EmergencyCause::bus_off: return "bus-off";
-  }
-  return "?";
-}
 // The executor's Posture.drive_health (a hal::DriveHealth) as the cause the gate reports.
 EmergencyCause drive_cause(std::uint8_t health) {
   switch (static_cast<hal::DriveHealth>(health)) {
@@ -176,10 +160,10 @@ bool EmergencyModule::at_rest(const Posture& p) {
 void EmergencyModule::log_transitions(const safety::GateDecision& d) {
   const EmergencyState& s = d.state;
   if (d.tripped)
-    log::warn("emergency: {} (sensor {}, safety {} mm){}", cause_name(s.cause), s.sensor, s.safety_mm,
+    log::warn("emergency: {} (sensor {}, safety {} mm){}", word(s.cause), s.sensor, s.safety_mm,
               s.latched ? ", latched until XR" : "");
   else if (s.cause != last_.cause && s.cause != EmergencyCause::none)
-    log::info("emergency: {} at rest", cause_name(s.cause));
+    log::info("emergency: {} at rest", word(s.cause));
   if (d.cleared) log::info("emergency: re-enabled");
   if (s.held && !last_.held) log::info("emergency: motion held for data of sensor {}", s.sensor);
   if (d.hold_expired) log::warn("emergency: held motion forgotten (no sensor data)");

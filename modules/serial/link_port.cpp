@@ -211,19 +211,7 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
   s.held = e.held;
   s.latched = e.latched;
   s.enabled = e.enabled;
-  switch (e.cause) {
-    case EmergencyCause::none: s.cause = protocol::EmergencyCause::none; break;
-    case EmergencyCause::bumper: s.cause = protocol::EmergencyCause::bumper; break;
-    case EmergencyCause::obstacle: s.cause = protocol::EmergencyCause::obstacle; break;
-    case EmergencyCause::comm_loss: s.cause = protocol::EmergencyCause::comm_loss; break;
-    case EmergencyCause::stop_byte: s.cause = protocol::EmergencyCause::stop_byte; break;
-    case EmergencyCause::motion_timeout: s.cause = protocol::EmergencyCause::motion_timeout; break;
-    case EmergencyCause::drive_fault: s.cause = protocol::EmergencyCause::drive_fault; break;
-    case EmergencyCause::heartbeat_lost: s.cause = protocol::EmergencyCause::heartbeat_lost; break;
-    case EmergencyCause::bus_passive: s.cause = protocol::EmergencyCause::bus_passive; break;
-    case EmergencyCause::bus_off: s.cause = protocol::EmergencyCause::bus_off; break;
-    default: s.cause = protocol::EmergencyCause::other; break;
-  }
+  s.cause = e.cause;
   return s;
 }
 
@@ -293,28 +281,10 @@ PortResult LinkPort::cancel_goal() noexcept {
   return PortResult::ok;
 }
 
-namespace {
-protocol::PlannerState to_protocol(PlannerState s) {
-  switch (s) {
-    case PlannerState::idle: return protocol::PlannerState::idle;
-    case PlannerState::scanning: return protocol::PlannerState::scanning;
-    case PlannerState::planning: return protocol::PlannerState::planning;
-    case PlannerState::moving: return protocol::PlannerState::moving;
-    case PlannerState::reached: return protocol::PlannerState::reached;
-    case PlannerState::unreachable: return protocol::PlannerState::unreachable;
-    case PlannerState::blocked: return protocol::PlannerState::blocked;
-    case PlannerState::outside: return protocol::PlannerState::outside;
-    case PlannerState::stopped: return protocol::PlannerState::stopped;
-    case PlannerState::cancelled: return protocol::PlannerState::cancelled;
-  }
-  return protocol::PlannerState::idle;
-}
-}  // namespace
-
 PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept {
   if (!planner_running()) return PortResult::unavailable;
   const PlannerStatus& s = planner_status_.peek();
-  out.state = to_protocol(s.state);
+  out.state = s.state;
   out.goal_x = s.goal_x;
   out.goal_y = s.goal_y;
   out.path_mm = s.path_mm;
