@@ -23,6 +23,7 @@ class DoorsModule;
 class DemoModule;
 
 // The vocabulary's enums (protocol/codec/vocabulary.hpp): one definition, with the words replies and logs print.
+using protocol::DemoPhase;
 using protocol::EmergencyCause;
 using protocol::ModeReason;
 using protocol::ModeState;
@@ -229,7 +230,7 @@ struct PlannerMapWindow {
 struct DemoStatus {
   ModeState state = ModeState::off;  // off (not enabled), running, finished, failed
   ModeReason reason = ModeReason::none;  // why it failed (no_landmark, shutdown), else none
-  std::uint8_t phase = 0;            // demo::Phase as a number (wait, out, turn, lane, align, advance, circle, done, failed)
+  DemoPhase phase = DemoPhase::wait; // where the course is (wait, out, turn, lane, align, advance, circle, done, failed)
   std::uint32_t laps = 0;            // laps completed (each ends at the recalibration point)
   std::int32_t side_mm = 0;          // last calibration: side sensors to the boxes (ERRO), mm
   std::int32_t radius_mm = 0;        // the half-circle radius that reading gave, mm

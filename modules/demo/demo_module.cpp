@@ -81,13 +81,13 @@ void DemoModule::run(Kernel& k) {
     st = ModeState::failed;
     why = ModeReason::no_landmark;
   }
-  if (cur.phase == static_cast<std::uint8_t>(o.phase) && cur.laps == o.lap && cur.state == st) return;
+  if (cur.phase == o.phase && cur.laps == o.lap && cur.state == st) return;
   if (st == ModeState::failed && cur.state != ModeState::failed)
     log::warn("demo: stopped in lap {} ({})", o.lap + 1, why == ModeReason::shutdown ? "shutdown" : "calibration boxes not found");
   DemoStatus s = cur;
   s.state = st;
   s.reason = why;
-  s.phase = static_cast<std::uint8_t>(o.phase);
+  s.phase = o.phase;
   s.laps = o.lap;
   s.side_mm = static_cast<std::int32_t>(course_.last_side_mm());
   s.radius_mm = static_cast<std::int32_t>(course_.last_radius_mm());

@@ -311,55 +311,10 @@ PortResult LinkPort::planner_map(protocol::MapWindow& out) const noexcept {
 }
 
 namespace {
-// Stable words of XD (docs/PROTOCOL.md).
-std::string_view state_word(ModeState s) {
-  switch (s) {
-    case ModeState::off: return "off";
-    case ModeState::starting: return "starting";
-    case ModeState::scanning: return "scanning";
-    case ModeState::searching: return "searching";
-    case ModeState::moving: return "moving";
-    case ModeState::aligned: return "aligned";
-    case ModeState::crossing: return "crossing";
-    case ModeState::waiting: return "waiting";
-    case ModeState::leaving: return "leaving";
-    case ModeState::crossed: return "crossed";
-    case ModeState::failed: return "failed";
-    case ModeState::running: return "running";
-    case ModeState::finished: return "finished";
-  }
-  return "off";
-}
-std::string_view reason_word(ModeReason r) {
-  switch (r) {
-    case ModeReason::none: return "none";
-    case ModeReason::no_unit: return "no-unit";
-    case ModeReason::unit_silent: return "unit-silent";
-    case ModeReason::unit_garbage: return "unit-garbage";
-    case ModeReason::unit_refused: return "unit-refused";
-    case ModeReason::unit_lost: return "unit-lost";
-    case ModeReason::no_passage: return "no-passage";
-    case ModeReason::cannot_align: return "cannot-align";
-    case ModeReason::cant_cross: return "cant-cross";
-    case ModeReason::emergency: return "emergency";
-    case ModeReason::operator_motion: return "operator";
-    case ModeReason::scanner: return "scanner";
-    case ModeReason::cancelled: return "cancelled";
-    case ModeReason::link_lost: return "link-lost";
-    case ModeReason::timeout: return "timeout";
-    case ModeReason::shutdown: return "shutdown";
-    case ModeReason::no_landmark: return "no-landmark";
-  }
-  return "none";
-}
-protocol::ModeWords words(const Reader<ModeStatus>& r) {
-  if (r.generation() == 0) return {"absent", "none"};
-  return {state_word(r.peek().state), reason_word(r.peek().reason)};
-}
-// The demonstration's phase (demo::Phase as a number) as a stable word.
-std::string_view phase_word(std::uint8_t p) {
-  static constexpr std::string_view kWords[] = {"wait", "out", "turn", "lane", "align", "advance", "circle", "done", "failed"};
-  return p < std::size(kWords) ? kWords[p] : "done";
+// A mode module's report for XD: absent until the module publishes (it does at start-up).
+protocol::ModeReport mode_report(const Reader<ModeStatus>& r) {
+  if (r.generation() == 0) return {.absent = true};
+  return {.state = r.peek().state, .reason = r.peek().reason};
 }
 }  // namespace
 
@@ -368,19 +323,18 @@ PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
   if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0 &&
       demo_status_.generation() == 0)
     return PortResult::unavailable;
-  out.pan_tilt = words(pan_tilt_status_);
-  out.gate = words(gate_status_);
-  out.doors = words(doors_status_);
+  out.pan_tilt = mode_report(pan_tilt_status_);
+  out.gate = mode_report(gate_status_);
+  out.doors = mode_report(doors_status_);
   out.sweeps = pan_tilt_scan_.peek().sweeps;
   out.width_mm = gate_status_.peek().width_mm;
   out.crossing_ticks = doors_status_.peek().duration_ticks;
-  if (demo_status_.generation() == 0) {
-    out.demo = {"absent", "none"};
-    out.demo_phase = "none";
-  } else {
+  out.demo.absent = demo_status_.generation() == 0;
+  if (!out.demo.absent) {
     const DemoStatus& d = demo_status_.peek();
-    out.demo = {state_word(d.state), reason_word(d.reason)};
-    out.demo_phase = d.state == ModeState::off ? "none" : phase_word(d.phase);
+    out.demo.state = d.state;
+    out.demo.reason = d.reason;
+    out.demo_phase = d.phase;
     out.demo_laps = d.laps;
   }
   return PortResult::ok;

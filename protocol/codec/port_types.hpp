@@ -73,22 +73,23 @@ struct KernelFigures {
   std::span<const ProcessFigures> processes;  // at most kMaxKernelProcesses are listed
 };
 
-// One mode's state for XD, as stable words (see docs/PROTOCOL.md, XD).
-struct ModeWords {
-  std::string_view state = "off";   // off, starting, scanning, searching, moving, aligned, crossing, …
-  std::string_view reason = "none"; // none, or why the mode failed (unit-silent, no-passage, cant-cross, …)
+// One mode's state for XD (docs/PROTOCOL.md, XD); the reply prints the vocabulary's words.
+struct ModeReport {
+  bool absent = false;                   // its module is not running: XD reads "absent none"
+  ModeState state = ModeState::off;      // what it is doing
+  ModeReason reason = ModeReason::none;  // why it failed or ended (none otherwise)
 };
 
 // The pan-tilt scanner, passage finder, door crossing and demonstration for XD.
 struct ModesReport {
-  ModeWords pan_tilt;               // the scanner (Ap / Ag)
-  ModeWords gate;                   // the passage finder (AG / AT)
-  ModeWords doors;                  // the door crossing (Ad / Af)
+  ModeReport pan_tilt;              // the scanner (Ap / Ag)
+  ModeReport gate;                  // the passage finder (AG / AT)
+  ModeReport doors;                 // the door crossing (Ad / Af)
   std::int64_t sweeps = 0;          // pan-tilt passes completed since start
   std::int64_t width_mm = 0;        // passage width the finder estimated, mm (0: none)
   std::int64_t crossing_ticks = 0;  // length of the last door crossing, ticks (0: none)
-  ModeWords demo;                   // the demonstration course ([demo] enabled): off, running, finished, failed
-  std::string_view demo_phase = "none";  // its phase: wait, out, turn, lane, align, advance, circle, done, failed (none: off)
+  ModeReport demo;                  // the demonstration course ([demo] enabled): off, running, finished, failed
+  DemoPhase demo_phase = DemoPhase::wait;  // its phase (XD reads "none" while it is off or absent)
   std::int64_t demo_laps = 0;       // laps it has completed
 };
 
