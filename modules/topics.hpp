@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "hal/api/drive.hpp"
 #include "kernel/blackboard.hpp"
 #include "protocol/codec/vocabulary.hpp"
 
@@ -46,7 +47,7 @@ struct Posture {
   std::int32_t left = 0;        // wheel speed set-point that reached the drive, cm/s
   std::int32_t right = 0;       // cm/s
   std::uint64_t tick = 0;       // tick of the odometry read
-  std::uint8_t drive_health = 0; // hal::DriveHealth of the drive as a number (0 ok)
+  hal::DriveHealth drive_health = hal::DriveHealth::ok;  // the drive's health as its backend sees it
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).

@@ -25,9 +25,9 @@ safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig
   return s;
 }
 
-// The executor's Posture.drive_health (a hal::DriveHealth) as the cause the gate reports.
-EmergencyCause drive_cause(std::uint8_t health) {
-  switch (static_cast<hal::DriveHealth>(health)) {
+// The executor's Posture.drive_health as the cause the gate reports.
+EmergencyCause drive_cause(hal::DriveHealth health) {
+  switch (health) {
     case hal::DriveHealth::ok: return EmergencyCause::none;
     case hal::DriveHealth::silent: return EmergencyCause::heartbeat_lost;
     case hal::DriveHealth::bus_passive: return EmergencyCause::bus_passive;
@@ -120,7 +120,7 @@ void EmergencyModule::run(Kernel& k) {
   seen_reenable_ = link.reenable_seq;
   in.bumpers = bumpers_.pressed();
   in.last_message_tick = link.last_message_tick;
-  in.drive_fault = posture.drive_health != 0;
+  in.drive_fault = posture.drive_health != hal::DriveHealth::ok;
   in.drive_cause = drive_cause(posture.drive_health);
   in.servo_on = posture.servo;
   in.at_rest = at_rest(posture);
