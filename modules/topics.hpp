@@ -5,7 +5,9 @@
 #include <array>
 #include <cstdint>
 
+#include "hal/api/drive.hpp"
 #include "kernel/blackboard.hpp"
+#include "protocol/codec/vocabulary.hpp"
 #include "robot/ring_wiring.hpp"
 
 namespace robuter {
@@ -21,6 +23,13 @@ class PtuModule;
 class GateModule;
 class DoorsModule;
 class DemoModule;
+
+// The vocabulary's enums (protocol/codec/vocabulary.hpp): one definition, with the words replies and logs print.
+using protocol::DemoPhase;
+using protocol::EmergencyCause;
+using protocol::ModeReason;
+using protocol::ModeState;
+using protocol::PlannerState;
 
 inline constexpr int kSensors = robot::kRingSensors;  // ultrasonic ring sensors, numbered 1..24
 
@@ -39,7 +48,7 @@ struct Posture {
   std::int32_t left = 0;        // wheel speed set-point that reached the drive, cm/s
   std::int32_t right = 0;       // cm/s
   std::uint64_t tick = 0;       // tick of the odometry read
-  std::uint8_t drive_health = 0; // hal::DriveHealth of the drive as a number (0 ok)
+  hal::DriveHealth drive_health = hal::DriveHealth::ok;  // the drive's health as its backend sees it
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).
@@ -102,14 +111,6 @@ struct UltrasonicTiming {
 // Which sensors the ring fires, decided by the emergency module (watch-dog set, auto-toggle).
 struct SonarSelection {
   std::uint32_t active = 0xFFFFFF;     // bit s-1 = sensor s fires
-};
-
-// Why an emergency holds. The last three come from the drives' bus (docs/CAN.md).
-enum class EmergencyCause : std::uint8_t {
-  none, bumper, obstacle, comm_loss, stop_byte, motion_timeout, drive_fault, other,
-  heartbeat_lost,  // a drive stopped sending its heartbeat
-  bus_passive,     // the drives' CAN bus went error-passive
-  bus_off,         // the CAN controller went bus-off
 };
 
 // The emergency module's verdict.
@@ -181,44 +182,6 @@ struct PanTiltScan {
   std::uint64_t tick = 0;                                   // tick of the latest reading
 };
 
-// What the pan-tilt, passage-finder or door-crossing module is doing (XD).
-enum class ModeState : std::uint8_t {
-  off,        // not asked for (or ended and reset)
-  starting,   // pan-tilt: start-up sequence; doors: waiting for a fresh scan
-  scanning,   // pan-tilt: sweeping and firing
-  searching,  // gate: stopped, waiting for a fresh scan to find the passage
-  moving,     // gate: manoeuvring to the passage's centre line
-  aligned,    // gate: stopped on the centre line facing the passage (done)
-  crossing,   // doors: moving through
-  waiting,    // doors: blocked on both sides, waiting for fresh readings
-  leaving,    // doors: through; driving on until the body is clear
-  crossed,    // doors: done
-  failed,     // ended without success: see the reason
-  running,    // demonstration: driving the course
-  finished,   // demonstration: every lap driven, stopped (done)
-};
-
-// Why a mode failed or ended.
-enum class ModeReason : std::uint8_t {
-  none,
-  no_unit,        // pan-tilt: no port configured or it could not be opened
-  unit_silent,    // pan-tilt: the unit stopped answering
-  unit_garbage,   // pan-tilt: the unit's replies are not the protocol's
-  unit_refused,   // pan-tilt: the unit refused a command ("!")
-  unit_lost,      // pan-tilt: its port went away
-  no_passage,     // gate: no passage locked within the time-out
-  cannot_align,   // gate: no alignment within the allowed manoeuvres
-  cant_cross,     // doors: blocked on both sides for longer than the wait
-  emergency,      // an emergency stopped the robot
-  operator_motion,// a newer motion request from the link took over
-  scanner,        // the pan-tilt failed under the mode
-  cancelled,      // AT / Af (or Ag while a mode needed the scanner)
-  link_lost,      // doors: every command link closed
-  timeout,        // doors: the crossing took longer than its limit
-  shutdown,       // the firmware stopped
-  no_landmark,    // demonstration: the calibration boxes were not found in time
-};
-
 // A mode module's report.
 struct ModeStatus {
   ModeState state = ModeState::off;     // see ModeState
@@ -238,20 +201,6 @@ struct PlannerGoal {
   bool has_theta = false;       // turn to theta once at (x, y)
   bool active = false;          // false cancels (XH)
   std::uint32_t seq = 0;        // bumped on every request
-};
-
-// What the grid planner is doing.
-enum class PlannerState : std::uint8_t {
-  idle,         // no goal yet
-  scanning,     // stopped, waiting for fresh ring data
-  planning,     // a plan is due this activation
-  moving,       // following the visible prefix of the path
-  reached,      // at the goal (within the tolerance)
-  unreachable,  // no path to the goal on the current map (or the goal cell is an obstacle)
-  blocked,      // the robot's own place is an obstacle on the map: no plan starts from here
-  outside,      // the robot is off the planner's map
-  stopped,      // an emergency, or another motion source, ended the navigation
-  cancelled,    // XH
 };
 
 // The grid planner's report (XP).
@@ -283,7 +232,7 @@ struct PlannerMapWindow {
 struct DemoStatus {
   ModeState state = ModeState::off;  // off (not enabled), running, finished, failed
   ModeReason reason = ModeReason::none;  // why it failed (no_landmark, shutdown), else none
-  std::uint8_t phase = 0;            // demo::Phase as a number (wait, out, turn, lane, align, advance, circle, done, failed)
+  DemoPhase phase = DemoPhase::wait; // where the course is (wait, out, turn, lane, align, advance, circle, done, failed)
   std::uint32_t laps = 0;            // laps completed (each ends at the recalibration point)
   std::int32_t side_mm = 0;          // last calibration: side sensors to the boxes (ERRO), mm
   std::int32_t radius_mm = 0;        // the half-circle radius that reading gave, mm

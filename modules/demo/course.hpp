@@ -28,8 +28,8 @@ struct CourseSettings {
   std::uint64_t calibration_timeout_ticks = 6000;  // align + advance longer than this: failed (boxes not found), ticks (0: no limit)
 };
 
-// What the course is doing.
-enum class Phase : std::uint8_t { wait, out, turn, lane, align, advance, circle, done, failed };
+// What the course is doing: the vocabulary's DemoPhase (protocol/codec/vocabulary.hpp), which XD prints.
+using Phase = DemoPhase;
 
 struct CourseInputs {
   std::uint64_t tick = 0;                     // now

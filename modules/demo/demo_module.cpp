@@ -109,13 +109,13 @@ void DemoModule::run(Kernel& k) {
 
 void DemoModule::report(const demo::CourseOutput& o, ModeState st, ModeReason why, std::uint64_t tick) {
   const DemoStatus& cur = status_out_.current();
-  if (cur.phase == static_cast<std::uint8_t>(o.phase) && cur.laps == o.lap && cur.state == st && cur.reason == why) return;
+  if (cur.phase == o.phase && cur.laps == o.lap && cur.state == st && cur.reason == why) return;
   if (st == ModeState::failed && cur.state != ModeState::failed && why == ModeReason::no_landmark)
     log::warn("demo: stopped in lap {} (calibration boxes not found)", o.lap + 1);
   DemoStatus s = cur;
   s.state = st;
   s.reason = why;
-  s.phase = static_cast<std::uint8_t>(o.phase);
+  s.phase = o.phase;
   s.laps = o.lap;
   s.side_mm = static_cast<std::int32_t>(course_.last_side_mm());
   s.radius_mm = static_cast<std::int32_t>(course_.last_radius_mm());

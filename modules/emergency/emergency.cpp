@@ -25,25 +25,9 @@ safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig
   return s;
 }
 
-const char* cause_name(EmergencyCause c) {
-  switch (c) {
-    case EmergencyCause::none: return "none";
-    case EmergencyCause::bumper: return "bumper";
-    case EmergencyCause::obstacle: return "obstacle";
-    case EmergencyCause::comm_loss: return "comm-loss";
-    case EmergencyCause::stop_byte: return "stop-byte";
-    case EmergencyCause::motion_timeout: return "motion-timeout";
-    case EmergencyCause::drive_fault: return "drive-fault";
-    case EmergencyCause::other: return "other";
-    case EmergencyCause::heartbeat_lost: return "heartbeat-lost";
-    case EmergencyCause::bus_passive: return "bus-error-passive";
-    case EmergencyCause::bus_off: return "bus-off";
-  }
-  return "?";
-}
-// The executor's Posture.drive_health (a hal::DriveHealth) as the cause the gate reports.
-EmergencyCause drive_cause(std::uint8_t health) {
-  switch (static_cast<hal::DriveHealth>(health)) {
+// The executor's Posture.drive_health as the cause the gate reports.
+EmergencyCause drive_cause(hal::DriveHealth health) {
+  switch (health) {
     case hal::DriveHealth::ok: return EmergencyCause::none;
     case hal::DriveHealth::silent: return EmergencyCause::heartbeat_lost;
     case hal::DriveHealth::bus_passive: return EmergencyCause::bus_passive;
@@ -183,7 +167,7 @@ void EmergencyModule::run(Kernel& k) {
   seen_reenable_ = link.reenable_seq;
   in.bumpers = bumpers_.pressed();
   in.last_message_tick = link.last_message_tick;
-  in.drive_fault = posture.drive_health != 0;
+  in.drive_fault = posture.drive_health != hal::DriveHealth::ok;
   in.drive_cause = drive_cause(posture.drive_health);
   in.servo_on = posture.servo;
   in.at_rest = at_rest(posture);
@@ -230,10 +214,10 @@ bool EmergencyModule::at_rest(const Posture& p) {
 void EmergencyModule::log_transitions(const safety::GateDecision& d) {
   const EmergencyState& s = d.state;
   if (d.tripped)
-    log::warn("emergency: {} (sensor {}, safety {} mm){}", cause_name(s.cause), s.sensor, s.safety_mm,
+    log::warn("emergency: {} (sensor {}, safety {} mm){}", word(s.cause), s.sensor, s.safety_mm,
               s.latched ? ", latched until XR" : "");
   else if (s.cause != last_.cause && s.cause != EmergencyCause::none)
-    log::info("emergency: {} at rest", cause_name(s.cause));
+    log::info("emergency: {} at rest", word(s.cause));
   if (d.cleared) log::info("emergency: re-enabled");
   if (s.held && !last_.held) log::info("emergency: motion held for data of sensor {}", s.sensor);
   if (d.hold_expired) log::warn("emergency: held motion forgotten (no sensor data)");

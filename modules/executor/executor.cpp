@@ -41,7 +41,7 @@ bool ExecutorModule::init(Kernel& k) {
   go_to_request_.copy();
   applied_seq_ = command_.peek().seq;
   const motion::PostureUnits p = motion::to_posture(drive_.odometry());
-  posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), static_cast<std::uint8_t>(drive_.health())});
+  posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), drive_.health()});
   return true;
 }
 
@@ -139,7 +139,7 @@ void ExecutorModule::run(Kernel& k) {
   p.servo = drive_.servo();
   drive_.commanded(p.left, p.right);
   p.tick = tick;
-  p.drive_health = static_cast<std::uint8_t>(health);
+  p.drive_health = health;
   posture_out_.publish(p);
 }
 

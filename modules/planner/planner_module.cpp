@@ -27,22 +27,6 @@ std::int64_t cpu_us() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
 }
 
-const char* state_name(PlannerState s) {
-  switch (s) {
-    case PlannerState::idle: return "idle";
-    case PlannerState::scanning: return "scanning";
-    case PlannerState::planning: return "planning";
-    case PlannerState::moving: return "moving";
-    case PlannerState::reached: return "reached";
-    case PlannerState::unreachable: return "unreachable";
-    case PlannerState::blocked: return "blocked";
-    case PlannerState::outside: return "outside";
-    case PlannerState::stopped: return "stopped";
-    case PlannerState::cancelled: return "cancelled";
-  }
-  return "?";
-}
-
 bool navigating(PlannerState s) {
   return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving;
 }
@@ -157,7 +141,7 @@ void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
   const bool was = navigating(state_);
   follower_.cancel();
   if (stop && was) request(tick, 0, 0);
-  if (state != state_) log::info("planner: {} (plans {}, scans {})", state_name(state), plans_, scans_);
+  if (state != state_) log::info("planner: {} (plans {}, scans {})", word(state), plans_, scans_);
   state_ = state;
 }
 
@@ -188,8 +172,9 @@ bool PlannerModule::interrupted(std::uint64_t tick) {
     finish(tick, PlannerState::cancelled, false);
     return true;
   }
-  log::info("planner: navigation ended by {}", why == ModeReason::emergency ? "an emergency" : "the operator");
-  finish(tick, PlannerState::stopped, false);
+  const bool emergency = why == ModeReason::emergency;
+  log::info("planner: navigation ended by {}", emergency ? "an emergency" : "the operator");
+  finish(tick, emergency ? PlannerState::stopped : PlannerState::operator_ended, false);
   return true;
 }
 

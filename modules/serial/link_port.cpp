@@ -233,19 +233,7 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
   s.held = e.held;
   s.latched = e.latched;
   s.enabled = e.enabled;
-  switch (e.cause) {
-    case EmergencyCause::none: s.cause = protocol::EmergencyCause::none; break;
-    case EmergencyCause::bumper: s.cause = protocol::EmergencyCause::bumper; break;
-    case EmergencyCause::obstacle: s.cause = protocol::EmergencyCause::obstacle; break;
-    case EmergencyCause::comm_loss: s.cause = protocol::EmergencyCause::comm_loss; break;
-    case EmergencyCause::stop_byte: s.cause = protocol::EmergencyCause::stop_byte; break;
-    case EmergencyCause::motion_timeout: s.cause = protocol::EmergencyCause::motion_timeout; break;
-    case EmergencyCause::drive_fault: s.cause = protocol::EmergencyCause::drive_fault; break;
-    case EmergencyCause::heartbeat_lost: s.cause = protocol::EmergencyCause::heartbeat_lost; break;
-    case EmergencyCause::bus_passive: s.cause = protocol::EmergencyCause::bus_passive; break;
-    case EmergencyCause::bus_off: s.cause = protocol::EmergencyCause::bus_off; break;
-    default: s.cause = protocol::EmergencyCause::other; break;
-  }
+  s.cause = e.cause;
   return s;
 }
 
@@ -317,28 +305,10 @@ PortResult LinkPort::cancel_goal() noexcept {
   return PortResult::ok;
 }
 
-namespace {
-protocol::PlannerState to_protocol(PlannerState s) {
-  switch (s) {
-    case PlannerState::idle: return protocol::PlannerState::idle;
-    case PlannerState::scanning: return protocol::PlannerState::scanning;
-    case PlannerState::planning: return protocol::PlannerState::planning;
-    case PlannerState::moving: return protocol::PlannerState::moving;
-    case PlannerState::reached: return protocol::PlannerState::reached;
-    case PlannerState::unreachable: return protocol::PlannerState::unreachable;
-    case PlannerState::blocked: return protocol::PlannerState::blocked;
-    case PlannerState::outside: return protocol::PlannerState::outside;
-    case PlannerState::stopped: return protocol::PlannerState::stopped;
-    case PlannerState::cancelled: return protocol::PlannerState::cancelled;
-  }
-  return protocol::PlannerState::idle;
-}
-}  // namespace
-
 PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept {
   if (!planner_running()) return PortResult::unavailable;
   const PlannerStatus& s = planner_status_.peek();
-  out.state = to_protocol(s.state);
+  out.state = s.state;
   out.goal_x = s.goal_x;
   out.goal_y = s.goal_y;
   out.path_mm = s.path_mm;
@@ -365,55 +335,10 @@ PortResult LinkPort::planner_map(protocol::MapWindow& out) const noexcept {
 }
 
 namespace {
-// Stable words of XD (docs/PROTOCOL.md).
-std::string_view state_word(ModeState s) {
-  switch (s) {
-    case ModeState::off: return "off";
-    case ModeState::starting: return "starting";
-    case ModeState::scanning: return "scanning";
-    case ModeState::searching: return "searching";
-    case ModeState::moving: return "moving";
-    case ModeState::aligned: return "aligned";
-    case ModeState::crossing: return "crossing";
-    case ModeState::waiting: return "waiting";
-    case ModeState::leaving: return "leaving";
-    case ModeState::crossed: return "crossed";
-    case ModeState::failed: return "failed";
-    case ModeState::running: return "running";
-    case ModeState::finished: return "finished";
-  }
-  return "off";
-}
-std::string_view reason_word(ModeReason r) {
-  switch (r) {
-    case ModeReason::none: return "none";
-    case ModeReason::no_unit: return "no-unit";
-    case ModeReason::unit_silent: return "unit-silent";
-    case ModeReason::unit_garbage: return "unit-garbage";
-    case ModeReason::unit_refused: return "unit-refused";
-    case ModeReason::unit_lost: return "unit-lost";
-    case ModeReason::no_passage: return "no-passage";
-    case ModeReason::cannot_align: return "cannot-align";
-    case ModeReason::cant_cross: return "cant-cross";
-    case ModeReason::emergency: return "emergency";
-    case ModeReason::operator_motion: return "operator";
-    case ModeReason::scanner: return "scanner";
-    case ModeReason::cancelled: return "cancelled";
-    case ModeReason::link_lost: return "link-lost";
-    case ModeReason::timeout: return "timeout";
-    case ModeReason::shutdown: return "shutdown";
-    case ModeReason::no_landmark: return "no-landmark";
-  }
-  return "none";
-}
-protocol::ModeWords words(const Reader<ModeStatus>& r) {
-  if (r.generation() == 0) return {"absent", "none"};
-  return {state_word(r.peek().state), reason_word(r.peek().reason)};
-}
-// The demonstration's phase (demo::Phase as a number) as a stable word.
-std::string_view phase_word(std::uint8_t p) {
-  static constexpr std::string_view kWords[] = {"wait", "out", "turn", "lane", "align", "advance", "circle", "done", "failed"};
-  return p < std::size(kWords) ? kWords[p] : "done";
+// A mode module's report for XD: absent until the module publishes (it does at start-up).
+protocol::ModeReport mode_report(const Reader<ModeStatus>& r) {
+  if (r.generation() == 0) return {.absent = true};
+  return {.state = r.peek().state, .reason = r.peek().reason};
 }
 }  // namespace
 
@@ -422,19 +347,18 @@ PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
   if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0 &&
       demo_status_.generation() == 0)
     return PortResult::unavailable;
-  out.pan_tilt = words(pan_tilt_status_);
-  out.gate = words(gate_status_);
-  out.doors = words(doors_status_);
+  out.pan_tilt = mode_report(pan_tilt_status_);
+  out.gate = mode_report(gate_status_);
+  out.doors = mode_report(doors_status_);
   out.sweeps = pan_tilt_scan_.peek().sweeps;
   out.width_mm = gate_status_.peek().width_mm;
   out.crossing_ticks = doors_status_.peek().duration_ticks;
-  if (demo_status_.generation() == 0) {
-    out.demo = {"absent", "none"};
-    out.demo_phase = "none";
-  } else {
+  out.demo.absent = demo_status_.generation() == 0;
+  if (!out.demo.absent) {
     const DemoStatus& d = demo_status_.peek();
-    out.demo = {state_word(d.state), reason_word(d.reason)};
-    out.demo_phase = d.state == ModeState::off ? "none" : phase_word(d.phase);
+    out.demo.state = d.state;
+    out.demo.reason = d.reason;
+    out.demo_phase = d.phase;
     out.demo_laps = d.laps;
   }
   return PortResult::ok;

@@ -61,13 +61,8 @@ void handle_set_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;        
 void handle_cancel_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XH
 void handle_get_planner_status(const Command&, RobotPort&, ReplyWriter&) noexcept;  // XP
 void handle_get_planner_map(const Command&, RobotPort&, ReplyWriter&) noexcept;     // XM
-// The word XP writes for a planner state.
-std::string_view planner_state_name(PlannerState state) noexcept;
 
 // X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD
-
-// The word XE writes for an emergency cause.
-std::string_view emergency_cause_name(EmergencyCause cause) noexcept;
 
 }  // namespace robuter::protocol

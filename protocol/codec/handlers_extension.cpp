@@ -5,24 +5,6 @@
 
 namespace robuter::protocol {
 
-// Stable words so clients can match on them.
-std::string_view emergency_cause_name(EmergencyCause cause) noexcept {
-  switch (cause) {
-    case EmergencyCause::none: return "none";
-    case EmergencyCause::bumper: return "bumper";
-    case EmergencyCause::obstacle: return "obstacle";
-    case EmergencyCause::comm_loss: return "comm-loss";
-    case EmergencyCause::stop_byte: return "stop-byte";
-    case EmergencyCause::motion_timeout: return "motion-timeout";
-    case EmergencyCause::drive_fault: return "drive-fault";
-    case EmergencyCause::other: return "other";
-    case EmergencyCause::heartbeat_lost: return "heartbeat-lost";
-    case EmergencyCause::bus_passive: return "bus-error-passive";
-    case EmergencyCause::bus_off: return "bus-off";
-  }
-  return "other";
-}
-
 // XE → `E <held> <latched> <cause> <enabled-mask> <clock>`.
 void handle_get_emergency(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   const EmergencyStatus e = port.emergency();
@@ -30,7 +12,7 @@ void handle_get_emergency(const Command&, RobotPort& port, ReplyWriter& out) noe
   out.field(e.held ? 1 : 0);
   out.field(e.latched ? 1 : 0);
   out.raw(" ");
-  out.raw(emergency_cause_name(e.cause));
+  out.raw(word(e.cause));
   out.field(e.enabled);
   out.field(port.clock());
 }

@@ -3,9 +3,17 @@
 
 namespace robuter::protocol {
 
+namespace {
+// A mode's state and reason words; a mode whose module is not running reads "absent none".
+void mode_words(const ModeReport& m, ReplyWriter& out) noexcept {
+  out.word(m.absent ? kAbsentWord : word(m.state));
+  out.word(word(m.absent ? ModeReason::none : m.reason));
+}
+}  // namespace
+
 // XD → `D <pantilt> <reason> <gate> <reason> <doors> <reason> <sweeps> <width-mm> <cross-ticks>
-// <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words from
-// the port (the demonstration's words come after the older fields, so readers of those keep working).
+// <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words of the
+// vocabulary (the demonstration's words come after the older fields, so readers of those keep working).
 // XT1 / XT0: the demonstration course started (taking the robot) or stopped.
 void handle_set_demo(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
   reply_result(port.set_demo(cmd.choice == '1'), out);
@@ -19,16 +27,12 @@ void handle_get_modes(const Command&, RobotPort& port, ReplyWriter& out) noexcep
     return;
   }
   out.open("D");
-  for (const ModeWords* m : {&r.pan_tilt, &r.gate, &r.doors}) {
-    out.word(m->state);
-    out.word(m->reason);
-  }
+  for (const ModeReport* m : {&r.pan_tilt, &r.gate, &r.doors}) mode_words(*m, out);
   out.field(r.sweeps);
   out.field(r.width_mm);
   out.field(r.crossing_ticks);
-  out.word(r.demo.state);
-  out.word(r.demo.reason);
-  out.word(r.demo_phase);
+  mode_words(r.demo, out);
+  out.word(r.demo.absent || r.demo.state == ModeState::off ? kNoPhaseWord : word(r.demo_phase));
   out.field(r.demo_laps);
   out.field(port.clock());
 }

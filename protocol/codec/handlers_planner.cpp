@@ -3,23 +3,6 @@
 
 namespace robuter::protocol {
 
-// Stable words so clients can match on them.
-std::string_view planner_state_name(PlannerState state) noexcept {
-  switch (state) {
-    case PlannerState::idle: return "idle";
-    case PlannerState::scanning: return "scanning";
-    case PlannerState::planning: return "planning";
-    case PlannerState::moving: return "moving";
-    case PlannerState::reached: return "reached";
-    case PlannerState::unreachable: return "unreachable";
-    case PlannerState::blocked: return "blocked";
-    case PlannerState::outside: return "outside";
-    case PlannerState::stopped: return "stopped";
-    case PlannerState::cancelled: return "cancelled";
-  }
-  return "idle";
-}
-
 // XG <x> <y> [<theta>]: the port refuses a goal off the map (out_of_range) or while latched.
 void handle_set_goal(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
   const bool with_theta = cmd.int_count == 3;
@@ -42,7 +25,7 @@ void handle_get_planner_status(const Command&, RobotPort& port, ReplyWriter& out
   }
   out.open("P");
   out.raw(" ");
-  out.raw(planner_state_name(r.state));
+  out.raw(word(r.state));
   out.field(r.goal_x);
   out.field(r.goal_y);
   out.field(r.path_mm);

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "protocol/codec/limits.hpp"
+#include "protocol/codec/vocabulary.hpp"
 
 namespace robuter::protocol {
 
@@ -46,32 +47,12 @@ enum class PortResult : std::uint8_t {
   busy,               // excluded by what the robot is doing now
 };
 
-// What started the emergency in force (XE); the last cause while latched.
-enum class EmergencyCause : std::uint8_t {
-  none,        // no emergency
-  bumper,      // collision sensed by the bumper
-  obstacle,    // ultrasonic reading under the safety distance
-  comm_loss,   // no message for longer than the communication limit
-  stop_byte,   // the client sent the immediate stop byte (0x18)
-  motion_timeout,  // moving, and no motion command arrived within the configured freshness time
-  drive_fault,     // the motor drive reports a fault or stopped answering
-  other,       // anything else (a module fault, ...)
-  heartbeat_lost,  // a motor drive stopped sending its CAN heartbeat
-  bus_passive,     // the drives' CAN bus is error-passive
-  bus_off,         // the CAN controller is bus-off
-};
-
-// Bits of EmergencyStatus::enabled (the seed's emerg.on).
-inline constexpr std::uint8_t kEmergencyBumper = 1;      // collision detection on
-inline constexpr std::uint8_t kEmergencyUltrasonic = 2;  // critical-approach detection on
-inline constexpr std::uint8_t kEmergencyComm = 4;        // communication-loss detection on
-
 // The emergency module's state, as XE reports it.
 struct EmergencyStatus {
   bool held = false;                          // motion held waiting for sensor data
   bool latched = false;                       // an emergency stopped the robot and is not cleared
   EmergencyCause cause = EmergencyCause::none;  // why (none when not latched)
-  std::uint8_t enabled = 0;                   // detectors on: kEmergency* bits
+  std::uint8_t enabled = 0;                   // detectors on: kDetect* bits
 };
 
 // One kernel process's figures for XK.
@@ -92,37 +73,24 @@ struct KernelFigures {
   std::span<const ProcessFigures> processes;  // at most kMaxKernelProcesses are listed
 };
 
-// One mode's state for XD, as stable words (see docs/PROTOCOL.md, XD).
-struct ModeWords {
-  std::string_view state = "off";   // off, starting, scanning, searching, moving, aligned, crossing, …
-  std::string_view reason = "none"; // none, or why the mode failed (unit-silent, no-passage, cant-cross, …)
+// One mode's state for XD (docs/PROTOCOL.md, XD); the reply prints the vocabulary's words.
+struct ModeReport {
+  bool absent = false;                   // its module is not running: XD reads "absent none"
+  ModeState state = ModeState::off;      // what it is doing
+  ModeReason reason = ModeReason::none;  // why it failed or ended (none otherwise)
 };
 
 // The pan-tilt scanner, passage finder, door crossing and demonstration for XD.
 struct ModesReport {
-  ModeWords pan_tilt;               // the scanner (Ap / Ag)
-  ModeWords gate;                   // the passage finder (AG / AT)
-  ModeWords doors;                  // the door crossing (Ad / Af)
+  ModeReport pan_tilt;              // the scanner (Ap / Ag)
+  ModeReport gate;                  // the passage finder (AG / AT)
+  ModeReport doors;                 // the door crossing (Ad / Af)
   std::int64_t sweeps = 0;          // pan-tilt passes completed since start
   std::int64_t width_mm = 0;        // passage width the finder estimated, mm (0: none)
   std::int64_t crossing_ticks = 0;  // length of the last door crossing, ticks (0: none)
-  ModeWords demo;                   // the demonstration course ([demo] enabled): off, running, finished, failed
-  std::string_view demo_phase = "none";  // its phase: wait, out, turn, lane, align, advance, circle, done, failed (none: off)
+  ModeReport demo;                  // the demonstration course ([demo] enabled): off, running, finished, failed
+  DemoPhase demo_phase = DemoPhase::wait;  // its phase (XD reads "none" while it is off or absent)
   std::int64_t demo_laps = 0;       // laps it has completed
-};
-
-// What the grid planner is doing (XP).
-enum class PlannerState : std::uint8_t {
-  idle,         // no goal yet
-  scanning,     // stopped, waiting for fresh ring data
-  planning,     // about to plan
-  moving,       // following the visible part of the path
-  reached,      // at the goal
-  unreachable,  // no path on the current map (or the goal is an obstacle)
-  blocked,      // the robot's own place is an obstacle on the map
-  outside,      // the robot is off the planner's map
-  stopped,      // an emergency or another motion request ended the navigation
-  cancelled,    // XH
 };
 
 // The grid planner's report for XP.

@@ -26,8 +26,7 @@ class FakeRobotPort final : public RobotPort {
   std::int32_t delay_ticks = 3;              // node delay, ticks
   std::int32_t node_time = 4;                // mean node read, ticks
   std::int32_t scan_time = 29;               // mean full scan, ticks
-  EmergencyStatus emerg{false, false, EmergencyCause::none,
-                        kEmergencyBumper | kEmergencyUltrasonic | kEmergencyComm};
+  EmergencyStatus emerg{false, false, EmergencyCause::none, kDetectAll};
   std::array<ProcessFigures, 3> processes{{{"serial", 100, 0, 0, 12, 40},
                                            {"emergency", 50, 1, 2, 30, 95},
                                            {"execute", 50, 0, 0, 20, 60}}};

@@ -55,7 +55,8 @@ struct CanRobot {
   // Boots, switches the servo on and drives forward at 20 cm/s until both wheels turn.
   void boot_and_move() {
     ASSERT_TRUE(fw->ok()) << fw->error();
-    ASSERT_TRUE(fw->run_until([&] { return posture().drive_health == 0 && fw->bb().ranges.reader().peek().scans > 1; }, 300))
+    ASSERT_TRUE(fw->run_until(
+        [&] { return posture().drive_health == hal::DriveHealth::ok && fw->bb().ranges.reader().peek().scans > 1; }, 300))
         << "drives never became ready";
     ASSERT_EQ(fw->ask("ASN"), "ack");
     ASSERT_EQ(fw->ask("AM 20 20"), "ack");
@@ -94,7 +95,7 @@ TEST(CanFirmware, HeartbeatLossEndsInEmergency) {
   ASSERT_TRUE(r.fw->run_until([&] { return r.right->velocity() == 0.0; }, 20)) << "the other wheel stops too";
   EXPECT_EQ(r.fw->ask("XR"), "error") << "refused while the drive is silent";
   r.left->set_silent(false);
-  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == 0; }, 50));
+  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == hal::DriveHealth::ok; }, 50));
   r.fw->run_ticks(20);
   EXPECT_EQ(r.fw->ask("XR"), "ack");
 }
@@ -111,7 +112,7 @@ TEST(CanFirmware, DriveFaultEndsInEmergencyAndRecovers) {
   EXPECT_EQ(r.right->state(), State::fault) << "fault resets fail while the cause is there";
   EXPECT_EQ(r.fw->ask("XR"), "error");
   r.right->clear_fault_cause();
-  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == 0; }, 150)) << "fault reset never took";
+  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == hal::DriveHealth::ok; }, 150)) << "fault reset never took";
   r.fw->run_ticks(20);
   EXPECT_EQ(r.fw->ask("XR"), "ack");
   EXPECT_EQ(r.fw->ask("ASN"), "ack");
@@ -156,7 +157,7 @@ TEST(CanFirmware, BusOffEndsInEmergency) {
   EXPECT_EQ(r.fw->ask("XR"), "error") << "refused while the controller is bus-off";
   r.bus.set_state(BusState::active);
   // The drives lost their host's RPDOs only; back on the bus, they are still there.
-  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == 0; }, 50));
+  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == hal::DriveHealth::ok; }, 50));
 }
 
 // With an ultrasonic node gone silent the gate has no data for its watch-dog sensors: the

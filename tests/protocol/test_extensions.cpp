@@ -22,7 +22,7 @@ std::string with_crc(std::string_view body) {
 TEST(Extensions, XE) {
   Harness h;
   EXPECT_EQ(h.ask("XE"), "E 0 0 none 7 1523");
-  h.port.emerg = {false, true, EmergencyCause::obstacle, kEmergencyBumper | kEmergencyComm};
+  h.port.emerg = {false, true, EmergencyCause::obstacle, kDetectBumper | kDetectComm};
   EXPECT_EQ(h.ask("XE"), "E 0 1 obstacle 5 1523");
   h.port.emerg = {true, false, EmergencyCause::none, 7};
   EXPECT_EQ(h.ask("XE"), "E 1 0 none 7 1523");
@@ -31,12 +31,12 @@ TEST(Extensions, XE) {
 }
 
 TEST(Extensions, CauseNames) {
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::bumper), "bumper");
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::stop_byte), "stop-byte");
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::other), "other");
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::heartbeat_lost), "heartbeat-lost");
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::bus_passive), "bus-error-passive");
-  EXPECT_EQ(emergency_cause_name(EmergencyCause::bus_off), "bus-off");
+  EXPECT_EQ(word(EmergencyCause::bumper), "bumper");
+  EXPECT_EQ(word(EmergencyCause::stop_byte), "stop-byte");
+  EXPECT_EQ(word(EmergencyCause::other), "other");
+  EXPECT_EQ(word(EmergencyCause::heartbeat_lost), "heartbeat-lost");
+  EXPECT_EQ(word(EmergencyCause::bus_passive), "bus-error-passive");
+  EXPECT_EQ(word(EmergencyCause::bus_off), "bus-off");
 }
 
 TEST(Extensions, XR) {

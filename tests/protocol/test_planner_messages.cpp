@@ -60,8 +60,8 @@ TEST(PlannerMessages, XP) {
   EXPECT_EQ(h.ask("XP"), "P idle 0 0 0 0 0 0 0 0 1523");
   h.port.planner.state = PlannerState::unreachable;
   EXPECT_EQ(h.ask("XP").substr(0, 14), "P unreachable ");
-  EXPECT_EQ(planner_state_name(PlannerState::cancelled), "cancelled");
-  EXPECT_EQ(planner_state_name(PlannerState::reached), "reached");
+  EXPECT_EQ(word(PlannerState::cancelled), "cancelled");
+  EXPECT_EQ(word(PlannerState::reached), "reached");
 }
 
 TEST(PlannerMessages, XMIsOneLineOfRowsTopFirst) {
