@@ -9,6 +9,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "kernel/input_file.hpp"
 #include "kernel/log.hpp"
 #include "kernel/sim_section.hpp"
 
@@ -176,6 +177,7 @@ void bind_serial_line(Binder& b, const std::string& prefix, std::uint32_t& baud,
 
 // [links.serial]: the serial command link.
 void bind_links(Binder& b, LinksConfig& l) {
+  b.boolean("links.stop_when_clients_leave", l.stop_when_clients_leave);
   b.table("links.serial");
   b.string("links.serial.device", l.serial.device);
   bind_serial_line(b, "links.serial", l.serial.baud, l.serial.parity, l.serial.stop_bits, l.serial.flow_control,
@@ -337,9 +339,17 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
   b.integer("can.heartbeat_timeout_ms", c.heartbeat_timeout_ms, 20, 60'000);
   b.integer("can.sdo_timeout_ms", c.sdo_timeout_ms, 10, 10'000);
   b.integer("can.fault_reset_ms", c.fault_reset_ms, 10, 60'000);
+  b.integer("can.host_node", c.host_node, 1, 127);
+  b.integer("can.host_heartbeat_ms", c.host_heartbeat_ms, 10, 10'000);
+  b.integer("can.drive_watchdog_ms", c.drive_watchdog_ms, 0, 60'000);
   if (b.error()) return;
-  if (c.interface.empty() || c.interface.size() >= 16)
-    return b.fail_key("can.interface", "expected an interface name of 1 to 15 characters");
+  constexpr std::string_view kUnix = "unix:";  // a bus between processes (docs/CAN.md, robuter-can-nodes)
+  if (c.interface.rfind(kUnix, 0) == 0) {
+    if (c.interface.size() <= kUnix.size() || c.interface[kUnix.size()] != '/' || c.interface.size() - kUnix.size() > 107)
+      return b.fail_key("can.interface", "expected unix:/absolute/path of at most 107 bytes");
+  } else if (c.interface.empty() || c.interface.size() >= 16) {
+    return b.fail_key("can.interface", "expected an interface name of 1 to 15 characters, or unix:/path");
+  }
   if (c.left_node == c.right_node)
     return b.fail_key("can.right_node", fmt::format("{} is also can.left_node", c.right_node));
   for (const std::uint32_t id : {c.left_node, c.right_node})
@@ -347,6 +357,14 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
       return b.fail_key("can.sonar_node_base",
                         fmt::format("ultrasonic nodes {}..{} overlap drive node {}", c.sonar_node_base,
                                     c.sonar_node_base + 7, id));
+  for (const std::uint32_t id : {c.left_node, c.right_node})
+    if (id == c.host_node) return b.fail_key("can.host_node", fmt::format("{} is also a drive's node id", id));
+  if (c.host_node >= c.sonar_node_base && c.host_node <= c.sonar_node_base + 7)
+    return b.fail_key("can.host_node", fmt::format("{} is within the ultrasonic nodes {}..{}", c.host_node,
+                                                   c.sonar_node_base, c.sonar_node_base + 7));
+  if (c.drive_watchdog_ms != 0 && c.drive_watchdog_ms <= c.host_heartbeat_ms)
+    return b.fail_key("can.drive_watchdog_ms", fmt::format("{} must be longer than can.host_heartbeat_ms {} (or 0: off)",
+                                                           c.drive_watchdog_ms, c.host_heartbeat_ms));
   if (c.heartbeat_timeout_ms <= c.heartbeat_ms)
     return b.fail_key("can.heartbeat_timeout_ms",
                       fmt::format("{} must be longer than can.heartbeat_ms {}", c.heartbeat_timeout_ms, c.heartbeat_ms));
@@ -423,6 +441,13 @@ void bind(Binder& b, const toml::table& root, Config& c) {
       b.integer(key + ".offset", o.offset, 0, 100'000);
       b.integer(key + ".priority", o.priority, 0, 99);
       b.integer(key + ".budget_us", o.budget_us, 1, 100'000'000);
+      const auto line_of = [&](const char* k) {
+        const toml::node* n = root.at_path(key + "." + k).node();
+        return n ? static_cast<int>(n->source().begin.line) : 0;
+      };
+      o.period_line = line_of("period");
+      o.offset_line = line_of("offset");
+      o.budget_line = line_of("budget_us");
       c.processes.push_back(o);
     }
   }
@@ -463,11 +488,9 @@ std::optional<ConfigError> parse_config(std::string_view text, const std::string
 }
 
 std::optional<ConfigError> load_config(const std::string& path, Config& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ConfigError{path, 0, "", fmt::format("cannot open: {}", std::strerror(errno))};
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_config(ss.str(), path, out);
+  std::string text;
+  if (auto why = read_input_file(path, text)) return ConfigError{path, 0, "", *why};
+  return parse_config(text, path, out);
 }
 
 }  // namespace robuter

@@ -29,6 +29,9 @@ struct ProcessOverride {
   std::optional<int> priority;             // higher runs first within a tick
   std::optional<std::uint32_t> budget_us;  // µs
   int line = 0;                            // line of its table in the file, for errors
+  int period_line = 0;                     // line of its period key (0: not given), for errors
+  int offset_line = 0;                     // line of its offset key
+  int budget_line = 0;                     // line of its budget_us key
 };
 
 // The robot the firmware believes it drives: the body and wheels of robot/robot_model.hpp, in
@@ -161,6 +164,7 @@ struct SerialLinkConfig {
 // Command links configured in the file ([links]).
 struct LinksConfig {
   SerialLinkConfig serial;                   // [links.serial]
+  bool stop_when_clients_leave = false;      // stop the robot when a pty's last client closes it (ARCOS does)
 };
 
 // Digital inputs on the Linux GPIO character device ([hardware.gpio]; docs/HARDWARE.md).
@@ -212,6 +216,9 @@ struct CanConfig {
   std::uint32_t heartbeat_timeout_ms = 350;  // a node silent this long is lost, ms
   std::uint32_t sdo_timeout_ms = 100;        // an unanswered SDO write is repeated after this, ms
   std::uint32_t fault_reset_ms = 1000;       // a drive in fault gets a fault reset this often, ms
+  std::uint32_t host_node = 127;             // node id of robuterd's own heartbeat (0x700 + id), 1..127
+  std::uint32_t host_heartbeat_ms = 50;      // robuterd's heartbeat period (sent only while every row runs on time), ms
+  std::uint32_t drive_watchdog_ms = 300;     // consumer heartbeat time written to the drives (0x1016:01), ms; 0 = off
 };
 
 struct SimSection;  // kernel/sim_section.hpp

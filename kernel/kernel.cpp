@@ -8,15 +8,9 @@
 #include <cstring>
 
 #include "kernel/log.hpp"
+#include "kernel/signals.hpp"
 
 namespace robuter {
-
-namespace {
-volatile std::sig_atomic_t g_signal_stop = 0;  // set by SIGINT/SIGTERM
-
-// Signal handler: only raises the flag the loop polls.
-extern "C" void on_stop_signal(int) { g_signal_stop = 1; }
-}  // namespace
 
 Kernel::Kernel(Clock& clock, Nanos tick_ns) : clock_(clock), tick_ns_(tick_ns) {}
 
@@ -75,17 +69,9 @@ bool Kernel::start() {
   return true;
 }
 
-bool Kernel::stop_requested() const { return stop_ || g_signal_stop != 0; }
+bool Kernel::stop_requested() const { return stop_ || signals::stop_signal() != 0; }
 
-void Kernel::install_signal_handlers() {
-  struct sigaction sa {};
-  sa.sa_handler = on_stop_signal;
-  sigemptyset(&sa.sa_mask);
-  sa.sa_flags = 0;  // no SA_RESTART: a signal must interrupt the idle wait
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-  signal(SIGPIPE, SIG_IGN);  // a client that goes away is an error return, not a death
-}
+void Kernel::install_signal_handlers() { signals::install(); }
 
 bool Kernel::watch_fd(int fd, Process* p) {
   for (auto& w : watches_) {
@@ -182,7 +168,16 @@ std::uint64_t Kernel::next_due_after(std::size_t i, std::uint64_t t) const {
   return offset + ((t - offset) / period + 1) * period;
 }
 
+// SIGUSR1/SIGUSR2 are only logged (kernel/signals.hpp): once per tick, and at the stop.
+void Kernel::log_user_signals() {
+  if (const int user = signals::take_user_signals()) {
+    if (user & 1) log::info("kernel: SIGUSR1 received: ignored");
+    if (user & 2) log::info("kernel: SIGUSR2 received: ignored");
+  }
+}
+
 void Kernel::step() {
+  log_user_signals();
   Nanos deadline = t0_ + static_cast<Nanos>(tick_) * tick_ns_;
   serve_events_until(deadline);
   if (stop_requested()) return;
@@ -193,6 +188,7 @@ void Kernel::step() {
   if (behind >= 1) {
     tick_ += static_cast<std::uint64_t>(behind);
     skipped_ticks_ += static_cast<std::uint64_t>(behind);
+    late_events_ += static_cast<std::uint64_t>(behind);
   }
   log::set_tick(tick_);
   triggered_.fill(0);
@@ -202,13 +198,22 @@ void Kernel::step() {
     if (tick_ < next_due_[i]) continue;
     const Nanos due_at = t0_ + static_cast<Nanos>(next_due_[i]) * tick_ns_;
     const Nanos period_ns = static_cast<Nanos>(rows_[i].period) * tick_ns_;
-    if (clock_.now() - due_at >= period_ns) ++stats_[i].slips;
+    if (clock_.now() - due_at >= period_ns) {
+      ++stats_[i].slips;
+      ++late_events_;
+    }
     activate(i, false);
     next_due_[i] = next_due_after(i, tick_);
     if (stop_requested()) break;
   }
   run_triggered();
   ++tick_;
+}
+
+bool Kernel::rows_on_time() const {
+  for (std::size_t i = 0; i < count_; ++i)
+    if (tick_ > next_due_[i]) return false;
+  return true;
 }
 
 void Kernel::shutdown() {
@@ -221,6 +226,7 @@ void Kernel::shutdown() {
 int Kernel::run() {
   if (!start()) return 1;
   while (!stop_requested()) step();
+  log_user_signals();
   shutdown();
   return 0;
 }

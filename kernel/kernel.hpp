@@ -45,7 +45,8 @@ class Kernel {
   // Asks the loop to end after the current activation (any module may call it).
   void request_stop() { stop_ = true; }
   bool stop_requested() const;
-  // Makes SIGINT and SIGTERM request a stop of every kernel in the process.
+  // Installs robuterd's signal policy (kernel/signals.hpp): SIGINT, SIGTERM, SIGHUP and SIGQUIT
+  // request a stop of every kernel in the process.
   static void install_signal_handlers();
 
   // Wakes `p` whenever `fd` is readable, between ticks; false when the watch table is full.
@@ -67,12 +68,20 @@ class Kernel {
   const ProcessStats& stats(std::size_t i) const { return stats_[i]; }
   const LatenessHistogram& lateness() const { return lateness_; }
   std::uint64_t skipped_ticks() const { return skipped_ticks_; }
+  // True when no row is past a due tick without having run (the loop is alive and on time);
+  // what the drive-side watchdog (CAN heartbeat) and systemd's WATCHDOG=1 are sent on.
+  bool rows_on_time() const;
+  // Slips of every row plus ticks jumped over, since start: a consumer that saw it change since
+  // its last look knows a row ran late in between.
+  std::uint64_t late_events() const { return late_events_; }
   // Index of the process named `name`, or nullopt.
   std::optional<std::size_t> find(const char* name) const;
   // Prints the per-process statistics and the lateness distribution (not for the periodic path).
   void print_stats(std::FILE* out) const;
 
  private:
+  // Logs SIGUSR1/SIGUSR2 received since the last look.
+  void log_user_signals();
   // Runs process i now and records its execution time.
   void activate(std::size_t i, bool from_event);
   // Runs the triggered processes, by priority, until none is pending.
@@ -106,6 +115,7 @@ class Kernel {
   Nanos t0_ = 0;                                      // time of tick 0, ns
   std::uint64_t tick_ = 0;
   std::uint64_t skipped_ticks_ = 0;                   // ticks jumped over when far behind
+  std::uint64_t late_events_ = 0;                     // slips plus skipped ticks, count
   bool stop_ = false;
   bool closed_ = false;
 };

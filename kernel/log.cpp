@@ -1,8 +1,12 @@
 // The log ring (single producer: the kernel thread) and its drain thread.
 #include "kernel/log.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <thread>
@@ -30,6 +34,30 @@ std::FILE* g_sink = stderr;
 std::mutex g_drain_mutex;                          // one drainer at a time (thread or flush)
 std::thread g_thread;
 std::atomic<bool> g_running{false};
+bool g_journal = false;                            // the sink is systemd's journal: "<N>" priority prefixes
+
+// syslog priorities (sd-daemon.h SD_ERR, SD_WARNING, SD_INFO, SD_DEBUG) for journald's stream parser.
+const char* journal_prefix(Level l) {
+  switch (l) {
+    case Level::error: return "<3>";
+    case Level::warn: return "<4>";
+    case Level::info: return "<6>";
+    case Level::debug: return "<7>";
+    case Level::off: break;
+  }
+  return "<6>";
+}
+
+// systemd sets $JOURNAL_STREAM to "device:inode" of the stream it connected to stdout/stderr
+// (systemd.exec(5)); the sink is the journal when its descriptor is that very stream.
+bool is_journal(std::FILE* sink) {
+  const char* js = std::getenv("JOURNAL_STREAM");
+  struct stat st {};
+  if (js == nullptr || sink == nullptr || ::fstat(fileno(sink), &st) != 0) return false;
+  unsigned long long dev = 0, ino = 0;
+  if (std::sscanf(js, "%llu:%llu", &dev, &ino) != 2) return false;
+  return static_cast<unsigned long long>(st.st_dev) == dev && static_cast<unsigned long long>(st.st_ino) == ino;
+}
 
 // Writes every queued record to the sink (outside the periodic path).
 void drain() {
@@ -38,8 +66,8 @@ void drain() {
   const auto head = g_head.load(std::memory_order_acquire);
   for (; tail != head; ++tail) {
     const Record& r = g_ring[tail % kSlots];
-    std::fprintf(g_sink, "[%8llu] %-5s %.*s\n", static_cast<unsigned long long>(r.tick), level_name(r.level),
-                 static_cast<int>(r.len), r.text);
+    std::fprintf(g_sink, "%s[%8llu] %-5s %.*s\n", g_journal ? journal_prefix(r.level) : "",
+                 static_cast<unsigned long long>(r.tick), level_name(r.level), static_cast<int>(r.len), r.text);
   }
   g_tail.store(tail, std::memory_order_release);
   std::fflush(g_sink);
@@ -90,6 +118,7 @@ void detail::push(Level l, const char* text, std::size_t len) {
 void start(std::FILE* sink) {
   if (g_running.exchange(true)) return;
   g_sink = sink;
+  g_journal = is_journal(sink);
   g_thread = std::thread([] {
     while (g_running.load()) {
       drain();

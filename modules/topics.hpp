@@ -145,6 +145,9 @@ struct LinkStatus {
   std::uint32_t links_open = 0;         // links with a client attached
   std::uint32_t devices_lost = 0;       // serial devices lost (hang-up, I/O error, node removed), count
   std::uint32_t devices_back = 0;       // serial devices re-opened after a loss, count
+  std::uint64_t lines_discarded = 0;    // lines dropped unexecuted: their reply could not be queued (a client
+                                        // that does not read), count
+  std::uint32_t sessions = 0;           // pty client sessions started, count
 };
 
 // Modes switched from the link (Ap/Ag, AG/AT, Ad/Af).

@@ -7,6 +7,13 @@
 
 namespace robuter::hal {
 
+// A change in who holds a shared stream (a pty's clients), reported in the order it happened.
+enum class ClientEvent : std::uint8_t {
+  none,           // nothing new
+  session_start,  // a client opened it while none held it: a fresh session begins
+  session_end,    // its last client closed it: serve what that client wrote, then end the session
+};
+
 // Result of a read or write: bytes moved, or what stopped it.
 struct IoResult {
   std::size_t bytes = 0;   // bytes read or written
@@ -32,6 +39,16 @@ class ByteStream {
   // Why a device was last lost, for logs ("hung up", "Input/output error"…); null when the
   // stream has no device that can be lost (a pty client leaving is not a loss).
   virtual const char* loss_reason() const { return nullptr; }
+  // The next client event since the last call (streams without shared clients: none).
+  virtual ClientEvent next_client_event() { return ClientEvent::none; }
+  // A second descriptor that becomes readable when a client event is waiting, or -1.
+  virtual int event_fd() const { return -1; }
+  // True while a client holds the stream (a pty's slave is open); for a device or a pipe,
+  // while it is usable.
+  virtual bool client_present() const { return connected(); }
+  // Drops replies written to the stream that its client has not read yet (a pty: the slave's
+  // input queue), so a new client never reads the previous one's replies.
+  virtual void discard_unread_output() {}
 };
 
 }  // namespace robuter::hal

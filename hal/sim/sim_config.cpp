@@ -213,9 +213,7 @@ Result<SimConfig> parse_sim_config(std::string_view text, std::string_view file,
 // Reads the whole file, then parses it.
 Result<SimConfig> load_sim_config(const std::filesystem::path& path, SimConfig base) {
   std::string text;
-  if (!detail::read_text_file(path.string(), text)) {
-    return Error{path.string(), 0, "cannot open the file"};
-  }
+  if (auto why = detail::read_text_file(path.string(), text)) return Error{path.string(), 0, *why};
   return parse_sim_config(text, path.string(), std::move(base));
 }
 

@@ -1,6 +1,8 @@
 // Strict TOML table reader: typed values, file:line errors, unknown-key rejection.
 #include "hal/sim/toml_fields.hpp"
 
+#include "kernel/input_file.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -166,14 +168,9 @@ toml::table parse_toml(std::string_view text, std::string_view file) {
   }
 }
 
-// Binary mode: line ends are the parsers' business.
-bool read_text_file(const std::string& path, std::string& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
+// Regular files of at most 1 MB (kernel/input_file.hpp); line ends are the parsers' business.
+std::optional<std::string> read_text_file(const std::string& path, std::string& out) {
+  return read_input_file(path, out);
 }
 
 }  // namespace robuter::sim::detail

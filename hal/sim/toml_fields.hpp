@@ -76,7 +76,7 @@ class Fields {
 // Parses TOML text, turning toml++'s parse errors into ParseFailure with file and line.
 toml::table parse_toml(std::string_view text, std::string_view file);
 
-// Reads a whole file into `out`; false when it cannot be opened.
-bool read_text_file(const std::string& path, std::string& out);
+// Reads a whole file into `out` (a regular file of at most 1 MB); the reason when it cannot.
+std::optional<std::string> read_text_file(const std::string& path, std::string& out);
 
 }  // namespace robuter::sim::detail

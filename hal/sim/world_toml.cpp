@@ -352,9 +352,7 @@ Status check_world_poses(const World& world, const RobotGeometry& robot) {
 // The extension picks the format: the seed's files have none of their own.
 Result<World> load_world(const std::filesystem::path& path, const RobotGeometry& robot) {
   std::string text;
-  if (!detail::read_text_file(path.string(), text)) {
-    return Error{path.string(), 0, "cannot open the file"};
-  }
+  if (auto why = detail::read_text_file(path.string(), text)) return Error{path.string(), 0, *why};
   if (path.extension() == ".toml") return parse_world_toml(text, path.string(), robot);
   auto w = parse_world_env(text, path.string());
   return w;

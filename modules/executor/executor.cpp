@@ -47,8 +47,12 @@ bool ExecutorModule::init(Kernel& k) {
 
 // The seed's close_execute: SERV OF, with the speeds zeroed first.
 void ExecutorModule::close(Kernel&) {
-  if (drive_.servo()) drive_.command_wheels(0, 0);
+  std::int32_t l = 0, r = 0;
+  drive_.commanded(l, r);
+  const bool was_on = drive_.servo();
+  if (was_on) drive_.command_wheels(0, 0);
   drive_.set_servo(false);
+  log::info("executor: drive stopped: zero speed (was {} {} cm/s), servo off (was {})", l, r, was_on ? "on" : "off");
 }
 
 // A command is applied once (by seq), except "stop", which is enforced every activation: the

@@ -3,22 +3,28 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
 
 #include "hal/linux/can/can_backend.hpp"
 #include "hal/linux/can/socketcan_transport.hpp"
+#include "hal/linux/can/unix_transport.hpp"
 #include "hal/link/pty_link.hpp"
 #include "hal/link/stdio_link.hpp"
 #include "hal/linux/gpio_lines.hpp"
 #include "hal/linux/serial_stream.hpp"
 #include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
+#include "kernel/log.hpp"
+#include "kernel/signals.hpp"
 #include "modules/firmware/process_table.hpp"
 #include "modules/emergency/emergency.hpp"
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
+#include "modules/notify/notify_module.hpp"
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "modules/demo/demo_module.hpp"
@@ -43,6 +49,23 @@ class TickLimit final : public Process {
  private:
   std::uint64_t ticks_;  // ticks to run, then stop
 };
+// Raises a signal from the periodic path at a given tick (ROBUTERD_TEST_RAISE): a crash of a
+// module, for the tests of the fatal-signal path.
+class TestRaise final : public Process {
+ public:
+  TestRaise(int sig, std::uint64_t tick) : sig_(sig), tick_(tick) {}
+  void run(Kernel& k) override {
+    if (k.tick() >= tick_) std::raise(sig_);
+  }
+
+ private:
+  int sig_;             // the signal
+  std::uint64_t tick_;  // when, ticks
+};
+
+// The simulated drive's emergency stop from the fatal-signal handler: plain stores only.
+void stop_sim_drive(void* drive) { static_cast<hal::Drive*>(drive)->set_servo(false); }
+
 // The line settings of a serial port from its (validated) configuration words.
 hal::SerialSettings line_settings(std::uint32_t baud, const std::string& parity, std::uint32_t stop_bits,
                                   const std::string& flow, std::uint32_t retry_ms) {
@@ -73,7 +96,9 @@ class NoSonarRing final : public hal::SonarRing {
 
 Firmware::Firmware(const Config& cfg, const FirmwareOptions& opt) : cfg_(cfg), opt_(opt) {}
 
-Firmware::~Firmware() = default;
+Firmware::~Firmware() {
+  if (sim_) signals::remove_fatal_hooks(static_cast<hal::Drive*>(&sim_->drive()));
+}
 
 std::vector<std::string> Firmware::pty_slaves() const {
   std::vector<std::string> out;
@@ -95,7 +120,11 @@ std::optional<std::string> Firmware::setup_hardware() {
   hal::can::FrameTransport* bus = opt_.can_transport;
   if (bus == nullptr) {
     std::string err;
-    can_bus_ = hal::can::SocketCanTransport::open(cfg_.can.interface, err);
+    const std::string& ifname = cfg_.can.interface;
+    if (ifname.rfind("unix:", 0) == 0)  // a bus between processes: robuter-can-nodes (docs/CAN.md)
+      can_bus_ = hal::can::UnixTransport::open(ifname.substr(5), hal::can::UnixTransport::Role::client, err);
+    else
+      can_bus_ = hal::can::SocketCanTransport::open(ifname, err);
     if (!can_bus_) return err;
     bus = can_bus_.get();
   }
@@ -123,15 +152,23 @@ std::optional<std::string> Firmware::setup() {
     sim_ = std::make_unique<hal::SimRobot>(cfg_, opt_.sim_options);
     if (sim_->error()) return *sim_->error();
     drive_ = &sim_->drive();
+    signals::add_fatal_hook(stop_sim_drive, drive_, "drive stopped (simulated drive: zero speed, servo off)");
     ring_ = &sim_->ring();
     bumpers_ = &sim_->bumpers();
   } else if (auto err = setup_hardware()) {
     return err;
   }
 
-  for (const auto& path : opt_.ptys) {
-    auto pty = std::make_unique<hal::PtyLink>(path);
-    if (pty->error()) return *pty->error();
+  for (std::size_t i = 0; i < opt_.ptys.size(); ++i) {
+    const std::string& path = opt_.ptys[i];
+    const auto same = [&](const std::string& other) {
+      return std::filesystem::absolute(other).lexically_normal() == std::filesystem::absolute(path).lexically_normal();
+    };
+    for (std::size_t j = 0; j < i; ++j)
+      if (same(opt_.ptys[j])) return "--pty " + path + ": given twice (one link per path)";
+    if (!opt_.ptu_pty.empty() && same(opt_.ptu_pty)) return "--pty " + path + ": also the --ptu-pty path";
+    auto pty = std::make_unique<hal::PtyLink>(path, hal::PtyLink::Mode::sessions);
+    if (pty->error()) return "--pty " + path + ": " + *pty->error();
     links_.push_back(std::move(pty));
   }
   // The serial command link: [links.serial], --serial and --baud override (docs/HARDWARE.md).
@@ -196,10 +233,17 @@ std::optional<std::string> Firmware::setup() {
   emergency->set_modes(cfg_.gate.hand_over, cfg_.demo.enabled);
   planner->set_emergency(emergency.get());
   if (!opt_.planner_pictures.empty()) {
+    // Decided: a missing folder is created (a new run's output folder), and the log says so; an
+    // existing path that is not a folder is refused.
     std::error_code ec;
-    std::filesystem::create_directories(opt_.planner_pictures, ec);
-    if (ec || !std::filesystem::is_directory(opt_.planner_pictures, ec))
-      return "--planner-pictures " + opt_.planner_pictures + ": not a folder that can be created";
+    const std::string& dir = opt_.planner_pictures;
+    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+      return "--planner-pictures " + dir + ": exists and is not a folder";
+    if (!std::filesystem::exists(dir, ec)) {
+      std::filesystem::create_directories(dir, ec);
+      if (ec) return "--planner-pictures " + dir + ": cannot create the folder: " + ec.message();
+      log::info("planner: --planner-pictures {} did not exist: created it", dir);
+    }
     picture_box_ = std::make_unique<planner::PictureMailbox>();
     picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_);
     planner->set_pictures(picture_box_.get());
@@ -228,9 +272,21 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(gate));
   processes_.push_back(std::move(doors));
   processes_.push_back(std::move(demo));
+  // Rows of the firmware itself (not in the configurable table), budgets within one tick.
+  const std::uint32_t small_budget = std::min<std::uint32_t>(1000, cfg_.kernel.tick_us);
+  if (!opt_.notify_socket.empty()) {
+    auto notify = std::make_unique<NotifyModule>(opt_.notify_socket, opt_.watchdog_usec);
+    if (notify->error()) return *notify->error();
+    processes_.push_back(std::move(notify));
+    table.push_back(ProcessRow{"notify", processes_.back().get(), 1, 0, 0, small_budget});
+  }
   if (opt_.ticks > 0) {
     processes_.push_back(std::make_unique<TickLimit>(opt_.ticks));
-    table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, 1000});
+    table.push_back(ProcessRow{"ticklimit", processes_.back().get(), 1, 0, 0, small_budget});
+  }
+  if (opt_.test_raise_signal != 0) {
+    processes_.push_back(std::make_unique<TestRaise>(opt_.test_raise_signal, opt_.test_raise_tick));
+    table.push_back(ProcessRow{"test-raise", processes_.back().get(), 1, 0, 0, small_budget});
   }
   kernel_ = std::make_unique<Kernel>(*clock_, static_cast<Nanos>(cfg_.kernel.tick_us) * kNanosPerMicro);
   if (auto err = kernel_->set_table(table)) return "process table: " + *err;

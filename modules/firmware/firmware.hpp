@@ -47,6 +47,10 @@ struct FirmwareOptions {
   bool open_devices = true;           // open serial devices and GPIO chips (false: --check-config)
   std::string planner_pictures;       // folder for a PNG of every plan (map and path), empty = none
   hal::can::FrameTransport* can_transport = nullptr;  // tests: the CAN backends use this bus instead of SocketCAN
+  std::string notify_socket;          // systemd's $NOTIFY_SOCKET (Type=notify), empty = none
+  std::uint64_t watchdog_usec = 0;    // systemd's $WATCHDOG_USEC, µs (0: no watchdog pings)
+  int test_raise_signal = 0;          // tests (ROBUTERD_TEST_RAISE): raise this signal from the periodic path…
+  std::uint64_t test_raise_tick = 0;  // …at this tick
 };
 
 class Firmware {

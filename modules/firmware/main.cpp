@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -10,7 +11,9 @@
 #include "kernel/config.hpp"
 #include "kernel/log.hpp"
 #include "kernel/realtime.hpp"
+#include "kernel/signals.hpp"
 #include "modules/firmware/firmware.hpp"
+#include "modules/notify/notify_socket.hpp"
 
 namespace {
 constexpr int kExitOk = 0;       // clean stop
@@ -76,6 +79,24 @@ int main(int argc, char** argv) {
     }
   }
 
+  // Tests of the fatal-signal path: ROBUTERD_TEST_RAISE=SIGNAL:TICK (e.g. 11:50) raises SIGNAL from
+  // the periodic path at TICK, as a crashing module would.
+  if (const char* raise_at = std::getenv("ROBUTERD_TEST_RAISE")) {
+    int sig = 0;
+    unsigned long long tick = 0;
+    if (std::sscanf(raise_at, "%d:%llu", &sig, &tick) != 2 || sig <= 0 || sig >= 32) {
+      fmt::print(stderr, "robuterd: ROBUTERD_TEST_RAISE '{}': expected SIGNAL:TICK, e.g. 11:50\n", raise_at);
+      return kExitUsage;
+    }
+    opt.test_raise_signal = sig;
+    opt.test_raise_tick = tick;
+  }
+
+  // systemd (Type=notify, WatchdogSec=): READY=1 and WATCHDOG=1 from the periodic path.
+  const NotifyEnvironment notify = notify_environment();
+  opt.notify_socket = notify.socket;
+  opt.watchdog_usec = notify.watchdog_usec;
+
   Config cfg;
   if (!config_path.empty()) {
     if (auto err = load_config(config_path, cfg)) {
@@ -90,6 +111,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   log::set_level(level);
+  if (check_only) opt.notify_socket.clear();  // ExecStartPre= is not the service's main process
   if (check_only) opt.sim = true;  // validate the table as the simulator would compose it
   if (check_only) opt.open_devices = false;  // a robot's configuration checks on any machine
   if (opt.sim && opt.sim_options.world_file.empty()) opt.sim_options.world_file = installed_default_world();
@@ -120,6 +142,7 @@ int main(int argc, char** argv) {
                                                                    : opt.sim_options.world_file);
   }
   const int status = fw.run();
+  if (const int sig = signals::stop_signal()) log::info("robuterd: {} received: stopped cleanly", signals::name(sig));
   log::info("robuterd stopped after {} ticks", fw.kernel().tick());
   log::stop();
   if (stats) fw.kernel().print_stats(stdout);

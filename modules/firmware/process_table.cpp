@@ -59,12 +59,30 @@ std::optional<std::string> build_table(const Config& cfg, std::span<const NamedP
     for (const auto& m : modules)
       if (std::strcmp(m.name, d.name) == 0) r.process = m.process;
     if (r.process == nullptr) continue;  // not composed in this run (e.g. "sim" on hardware)
+    const ProcessOverride* over = nullptr;
     for (const auto& o : cfg.processes) {
       if (o.name != d.name) continue;
+      over = &o;
       if (o.period) r.period = *o.period;
       if (o.offset) r.offset = *o.offset;
       if (o.priority) r.priority = *o.priority;
       if (o.budget_us) r.budget_us = *o.budget_us;
+    }
+    // A default budget never exceeds its period: with a tick under 5 ms the "sim" row's 5000 µs
+    // would (docs/CONFIG.md, kernel.tick_us); a budget given in the file is checked, not cut.
+    const std::uint64_t period_us = static_cast<std::uint64_t>(r.period) * cfg.kernel.tick_us;
+    if (!(over && over->budget_us) && r.budget_us > period_us) r.budget_us = static_cast<std::uint32_t>(period_us);
+    if (over) {
+      const auto at = [&](int line, const char* key, const std::string& what) {
+        return fmt::format("{}:{}: key 'process.{}.{}': {}", cfg.source, line ? line : over->line, d.name, key, what);
+      };
+      if (r.offset >= r.period)
+        return at(over->offset ? over->offset_line : over->period_line, over->offset ? "offset" : "period",
+                  fmt::format("offset {} must be less than the period {}", r.offset, r.period));
+      if (r.budget_us > period_us)
+        return at(over->budget_us ? over->budget_line : over->period_line, over->budget_us ? "budget_us" : "period",
+                  fmt::format("budget {} µs exceeds the period of {} µs ({} ticks of {} µs)", r.budget_us, period_us,
+                              r.period, cfg.kernel.tick_us));
     }
     out.push_back(r);
   }

@@ -10,7 +10,8 @@ SerialModule::SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::Byt
     : writers_{bb.link_motion.writer(), bb.servo_request.writer(), bb.odometry_set.writer(), bb.go_to.writer(),
                bb.us_settings.writer(), bb.link_status.writer(),  bb.modes.writer(),
                bb.planner_goal.writer(), bb.operator_events.writer()},
-      port_(bb, writers_, cfg) {
+      port_(bb, writers_, cfg),
+      stop_when_clients_leave_(cfg.links.stop_when_clients_leave) {
   for (hal::ByteStream* s : links) {
     if (link_count_ == kMaxLinks) break;
     links_[link_count_++].stream = s;
@@ -49,6 +50,70 @@ void SerialModule::note_closed(Link& l) {
   l.lost_device = true;
 }
 
+void SerialModule::start_session(Link& l) {
+  l.codec.reset();
+  l.out.clear();
+  l.stream->discard_unread_output();
+  l.discarded = 0;
+  writers_.status.modify([](LinkStatus& st) { ++st.sessions; });
+  log::info("serial: client attached on {}", l.stream->name());
+}
+
+void SerialModule::end_session(Link& l) {
+  l.codec.reset();
+  l.out.clear();
+  l.stream->discard_unread_output();
+  if (stop_when_clients_leave_) {
+    log::info("serial: last client left {}: stopping the robot ([links] stop_when_clients_leave)", l.stream->name());
+    port_.immediate_stop();
+  } else {
+    log::info("serial: client left {}", l.stream->name());
+  }
+}
+
+void SerialModule::feed(Link& l, std::span<const std::uint8_t> bytes) {
+  std::uint64_t dropped = 0;
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    const auto one = bytes.subspan(i, 1);
+    if (l.out.free() >= protocol::kReplyCapacity) {
+      l.codec.feed(one, port_, [&](std::string_view reply) { l.out.push(reply); });
+    } else {
+      dropped += l.codec.discard(one, port_);
+    }
+  }
+  if (dropped == 0) {
+    if (l.discarded > 0 && l.out.free() >= protocol::kReplyCapacity) {
+      log::info("serial: {} reads its replies again ({} lines were dropped unexecuted)", l.stream->name(), l.discarded);
+      l.discarded = 0;
+    }
+    return;
+  }
+  if (l.discarded == 0)
+    log::warn("serial: {}: client does not read its replies ({} bytes queued): lines dropped unexecuted",
+              l.stream->name(), l.out.size());
+  l.discarded += dropped;
+  writers_.status.modify([&](LinkStatus& st) { st.lines_discarded += dropped; });
+}
+
+bool SerialModule::pump(Kernel& k, Link& l) {
+  hal::ByteStream& s = *l.stream;
+  for (std::size_t reads = 0; reads < kMaxReadsPerRun; ++reads) {
+    const hal::IoResult r = s.read(l.in);
+    if (r.closed) {
+      note_closed(l);
+      k.unwatch_fd(l.watched_fd);
+      l.watched_fd = -1;
+      return false;
+    }
+    if (r.bytes == 0) break;
+    feed(l, std::span<const std::uint8_t>(l.in.data(), r.bytes));
+    flush(l);
+  }
+  return true;
+}
+
+// Every readable byte is read and scanned: the stop byte acts whatever the output's state, and
+// a line whose reply cannot be queued is dropped, never left waiting to run unseen later.
 void SerialModule::serve(Kernel& k, Link& l) {
   hal::ByteStream& s = *l.stream;
   if (!s.connected()) {
@@ -67,35 +132,22 @@ void SerialModule::serve(Kernel& k, Link& l) {
     }
     l.codec.reset();
     l.out.clear();
-    l.in_len = l.in_pos = 0;
   }
   if (l.watched_fd < 0 && k.watch_fd(s.fd(), this)) l.watched_fd = s.fd();
+  if (l.watched_event_fd < 0 && s.event_fd() >= 0 && k.watch_fd(s.event_fd(), this)) l.watched_event_fd = s.event_fd();
 
-  flush(l);
-  for (;;) {
-    // Read more only when everything read before has been answered.
-    if (l.in_pos == l.in_len) {
-      const hal::IoResult r = s.read(l.in);
-      if (r.closed) {
-        note_closed(l);
-        k.unwatch_fd(l.watched_fd);
-        l.watched_fd = -1;
-        return;
-      }
-      if (r.bytes == 0) break;
-      l.in_len = r.bytes;
-      l.in_pos = 0;
+  // Client sessions in the order they happened; what a leaving client wrote is served in its
+  // own session before the session ends.
+  for (hal::ClientEvent e = s.next_client_event(); e != hal::ClientEvent::none; e = s.next_client_event()) {
+    if (e == hal::ClientEvent::session_start) {
+      start_session(l);
+    } else {
+      if (!pump(k, l)) return;
+      end_session(l);
     }
-    // Feed one byte at a time while a whole reply still fits: replies are never dropped, and
-    // a client that does not read only stalls its own link.
-    while (l.in_pos < l.in_len && l.out.free() >= protocol::kReplyCapacity) {
-      l.codec.feed(std::span<const std::uint8_t>(&l.in[l.in_pos], 1), port_,
-                   [&](std::string_view reply) { l.out.push(reply); });
-      ++l.in_pos;
-    }
-    flush(l);
-    if (l.in_pos < l.in_len) break;  // output full: wait for the client to read
   }
+  flush(l);
+  if (!pump(k, l)) return;
   if (const auto line = l.codec.poll_stream(port_); line && l.out.free() >= line->size()) l.out.push(*line);
   flush(l);
 }
@@ -104,7 +156,7 @@ void SerialModule::run(Kernel& k) {
   std::uint32_t open = 0;
   for (std::size_t i = 0; i < link_count_; ++i) {
     serve(k, links_[i]);
-    if (links_[i].stream->connected()) ++open;
+    if (links_[i].stream->client_present()) ++open;
   }
   if (open != writers_.status.current().links_open) writers_.status.modify([&](LinkStatus& s) { s.links_open = open; });
   if (port_.shutdown_requested()) {
@@ -118,6 +170,7 @@ void SerialModule::close(Kernel& k) {
   for (std::size_t i = 0; i < link_count_; ++i) {
     flush(links_[i]);
     if (links_[i].watched_fd >= 0) k.unwatch_fd(links_[i].watched_fd);
+    if (links_[i].watched_event_fd >= 0) k.unwatch_fd(links_[i].watched_event_fd);
   }
 }
 

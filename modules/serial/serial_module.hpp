@@ -20,6 +20,8 @@ class SerialModule final : public Process {
   static constexpr std::size_t kMaxLinks = 4;           // links served at once
   static constexpr std::size_t kOutputBytes = 64 * 1024;  // replies queued per link, bytes
   static constexpr std::size_t kReadChunk = 512;        // bytes read per read() call
+  static constexpr std::size_t kMaxReadsPerRun = 256;   // read() calls per link per activation (128 kB: more
+                                                        // than a pty or a serial driver buffers)
 
   // `links` must outlive the module; at most kMaxLinks are used.
   SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links);
@@ -34,14 +36,24 @@ class SerialModule final : public Process {
     hal::ByteStream* stream = nullptr;          // transport
     protocol::LinkCodec codec;                  // framing, session, replies
     OutputRing<kOutputBytes> out;               // replies not yet written
-    std::array<std::uint8_t, kReadChunk> in{};  // bytes read, not yet fed
-    std::size_t in_len = 0, in_pos = 0;         // unfed bytes are in[in_pos, in_len)
+    std::array<std::uint8_t, kReadChunk> in{};  // bytes of the last read
     int watched_fd = -1;                        // descriptor that wakes the kernel, -1 none
+    int watched_event_fd = -1;                  // the stream's client-event descriptor, watched, -1 none
     bool lost_device = false;                   // the device went away (not a client leaving)
+    std::uint64_t discarded = 0;                // lines dropped unexecuted since the client stopped reading
   };
 
-  // Serves one link: attach/detach, flush, read, answer, flush.
+  // Serves one link: attach/detach, client sessions, flush, read, answer, flush.
   void serve(Kernel& k, Link& l);
+  // Reads every byte waiting (bounded) and feeds it; false when the stream closed.
+  bool pump(Kernel& k, Link& l);
+  // Feeds bytes read: lines are executed while a whole reply still fits the output ring, and
+  // dropped unexecuted (counted) when it does not; the stop byte acts in both cases.
+  void feed(Link& l, std::span<const std::uint8_t> bytes);
+  // A new client session: previous replies, half line and settings are dropped.
+  void start_session(Link& l);
+  // The last client left: its unsent replies go; the robot stops if so configured.
+  void end_session(Link& l);
   // Logs and counts a link that closed (device lost or client gone).
   void note_closed(Link& l);
   // Writes queued replies as far as the transport takes them.
@@ -51,6 +63,7 @@ class SerialModule final : public Process {
   LinkPort port_;             // the protocol's view of the robot
   std::array<Link, kMaxLinks> links_{};
   std::size_t link_count_ = 0;
+  bool stop_when_clients_leave_ = false;  // [links] stop_when_clients_leave
 };
 
 }  // namespace robuter

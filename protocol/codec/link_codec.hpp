@@ -37,6 +37,19 @@ class LinkCodec {
     });
   }
 
+  // Frames `bytes` without executing anything: the stop byte still calls
+  // port.immediate_stop(); every line (or framing error) completed is dropped unanswered.
+  // Returns how many were dropped. For a link whose replies cannot be queued (docs/PROTOCOL.md:
+  // a client that does not read).
+  std::size_t discard(std::span<const std::uint8_t> bytes, RobotPort& port) {
+    std::size_t dropped = 0;
+    assembler_.feed(bytes, [&](const FrameEvent& event) {
+      if (event.kind == FrameEvent::Kind::stop) port.immediate_stop();
+      else if (event.kind != FrameEvent::Kind::none) ++dropped;
+    });
+    return dropped;
+  }
+
   // The status line due at `port.clock()` when streaming is on, else nothing. The first line
   // comes at once after XS, then one every stream_period ticks.
   std::optional<std::string_view> poll_stream(const RobotPort& port) noexcept;

@@ -34,7 +34,7 @@ struct CanRig {
     left.step(now);
     right.step(now);
     for (auto& n : nodes) n->step(now);
-    backend.service(now);
+    backend.service(now, loop_on_time);
     can_frame f;
     while (tap.receive(f)) last_tapped = f;  // keep the tap's queue short
   }
@@ -65,6 +65,7 @@ struct CanRig {
   hal::can::CanBackend backend;
   std::int64_t now = 0;  // µs
   can_frame last_tapped{};
+  bool loop_on_time = true;  // what the kernel tells the backend (false: a stalled or late loop)
 };
 
 }  // namespace robuter::test

@@ -26,6 +26,29 @@ check bad-world-env 2 "world: $configs/bad_world.env:2: bad count" "$bin" --sim 
 check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nope.toml --ticks 1
 check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
 
+# Inputs that are not what they should be (issue #14): folders, devices and oversize files are
+# refused with a reason; process-table errors name the key's file and line; a tick of 100 µs
+# (the documented minimum) runs; one link per pty path.
+tmpdir=$(mktemp -d)
+truncate -s 2M "$tmpdir/big.toml"
+check folder-config 2 "configuration error: $tmpdir: is a folder, not a file" "$bin" --check-config --config "$tmpdir"
+check dev-zero-config 2 "configuration error: /dev/zero: is a character device, not a regular file" "$bin" --check-config --config /dev/zero
+check big-config 2 "configuration error: $tmpdir/big.toml: is larger than 1 MB (2097152 bytes)" "$bin" --check-config --config "$tmpdir/big.toml"
+check folder-world 2 "world: $tmpdir: is a folder, not a file" "$bin" --sim --world "$tmpdir" --ticks 1
+check dev-zero-world 2 "world: /dev/zero: is a character device, not a regular file" "$bin" --sim --world /dev/zero --ticks 1
+check bad-row-line 2 "bad_row.toml:3: key 'process.heartbeat.offset': offset 10 must be less than the period 10" "$bin" --sim --config "$configs/bad_row.toml"
+check bad-budget-line 2 "bad_budget.toml:3: key 'process.heartbeat.budget_us': budget 200000 µs exceeds the period of 100000 µs" "$bin" --sim --config "$configs/bad_budget.toml"
+check small-tick-valid 0 "is valid" "$bin" --check-config --config "$configs/small_tick.toml"
+check small-tick-runs 0 "" "$bin" --sim --config "$configs/small_tick.toml" --ticks 200 --log-level off
+check pty-twice 2 "--pty $tmpdir/x.pty: given twice (one link per path)" "$bin" --sim --pty "$tmpdir/x.pty" --pty "$tmpdir/./x.pty" --ticks 1
+out=$("$bin" --sim --planner-pictures "$tmpdir/pictures/new" --ticks 5 --log-level info 2>&1); rc=$?
+if [[ $rc -eq 0 && -d "$tmpdir/pictures/new" && "$out" == *"planner: --planner-pictures $tmpdir/pictures/new did not exist: created it"* ]]; then
+  pass=$((pass+1)); echo "ok   planner-pictures-created: said so"
+else fail=$((fail+1)); echo "FAIL planner-pictures-created: rc=$rc out=[$out]"; fi
+touch "$tmpdir/a-file"
+check planner-pictures-file 2 "--planner-pictures $tmpdir/a-file: exists and is not a folder" "$bin" --sim --planner-pictures "$tmpdir/a-file" --ticks 1
+rm -rf "$tmpdir"
+
 # Hardware backends (docs/CAN.md): without AF_CAN in the kernel the CAN backend fails at start-up
 # naming the missing family; with it, the missing interface is named.
 check no-backend 2 "no hardware backend configured" "$bin" --ticks 1

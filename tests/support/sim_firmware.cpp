@@ -34,7 +34,8 @@ SimFirmware::SimFirmware(const Config& cfg, FirmwareOptions opt) {
 
 void SimFirmware::open(const Config& cfg, FirmwareOptions opt) {
   opt.speed = 0.0;  // virtual clock: the test steps time
-  opt.ptys = {dir_ + "/robuter.pty"};
+  pty_path_ = dir_ + "/robuter.pty";
+  opt.ptys = {pty_path_};
   fw_ = std::make_unique<Firmware>(cfg, opt);
   if (auto err = fw_->setup()) {
     error_ = *err;
@@ -136,6 +137,26 @@ void SimFirmware::unplug_ptu() {
   if (null < 0) return;
   ::dup2(null, fd);
   ::close(null);
+}
+
+bool SimFirmware::reconnect() {
+  close_client();
+  pending_.clear();
+  client_ = ::open(pty_path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  if (client_ < 0) return false;
+  termios t{};
+  tcgetattr(client_, &t);
+  cfmakeraw(&t);
+  tcsetattr(client_, TCSANOW, &t);
+  return true;
+}
+
+bool SimFirmware::one_shot(std::string_view bytes) {
+  const int fd = ::open(pty_path_.c_str(), O_WRONLY | O_NOCTTY);
+  if (fd < 0) return false;
+  const bool ok = ::write(fd, bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size());
+  ::close(fd);
+  return ok;
 }
 
 void SimFirmware::close_client() {

@@ -64,6 +64,13 @@ class SimFirmware {
   void unplug_ptu();
   // The client goes away: its end of the link is closed (ask() fails from then on).
   void close_client();
+  // A new client: the current one closes, another opens the pty (a fresh session).
+  bool reconnect();
+  // Another client opens the pty, writes `bytes` and closes it at once, without a tick in
+  // between (`printf '…' > pty`); the current client stays as it is.
+  bool one_shot(std::string_view bytes);
+  // The pty's path (the symbolic link clients open).
+  const std::string& pty_path() const { return pty_path_; }
   // Lines that arrived without being asked for (stream lines), since the last call.
   std::string take_unsolicited();
 
@@ -78,6 +85,7 @@ class SimFirmware {
   void open(const Config& cfg, FirmwareOptions opt);
 
   std::string dir_;                 // temporary folder of the pty link
+  std::string pty_path_;            // the link's path in dir_
   std::unique_ptr<Firmware> fw_;
   int client_ = -1;                 // the client's end (pty slave)
   std::string pending_;             // bytes read past the last line

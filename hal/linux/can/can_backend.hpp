@@ -1,6 +1,7 @@
 // The kernel process that runs the CAN bus: takes frames, supervises drives and sonar nodes, sends RPDOs and SYNC.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -23,6 +24,7 @@ class CanBackend final : public Process {
   // `with_drive` / `with_sonar`: which HAL parts run on this bus.
   CanBackend(FrameTransport& bus, const CanConfig& cfg, std::uint32_t wheel_base_mm, bool with_drive,
              bool with_sonar);
+  ~CanBackend() override;
   CanDrive* drive() { return drive_ ? &*drive_ : nullptr; }
   CanSonarRing* ring() { return ring_ ? &*ring_ : nullptr; }
   FrameTransport& bus() { return bus_; }
@@ -31,10 +33,18 @@ class CanBackend final : public Process {
   // Bring-up of drives and nodes from `now_us` (init does it at the kernel's time).
   void start(std::int64_t now_us);
   // One activation at `now_us` (run() does it at the kernel's time; tests call it directly).
-  void service(std::int64_t now_us);
+  // `loop_on_time`: every process row ran at its due tick since the last activation — only
+  // then does the host's heartbeat go out (the drives' watchdog, docs/SAFETY.md).
+  void service(std::int64_t now_us, bool loop_on_time = true);
+  // Host heartbeats sent, count.
+  std::uint64_t host_heartbeats() const { return host_heartbeats_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
+
+  // The fatal-signal hook (kernel/signals.hpp): both drives get a prepared RPDO1 with the quick
+  // stop controlword and zero velocity, through the transport's async-signal-safe send.
+  static void quick_stop_from_signal(void* self);
 
  private:
   // Logs what changed since the last activation (transitions only).
@@ -46,6 +56,13 @@ class CanBackend final : public Process {
   BusState last_bus_ = BusState::active;        // for transition logs
   DriveHealth last_health_ = DriveHealth::silent;
   std::uint64_t unknown_ = 0;                    // frames no one took, count
+  std::uint8_t host_node_;                       // node id of the host's heartbeat
+  std::int64_t host_period_us_;                  // host heartbeat period, µs
+  std::int64_t last_host_heartbeat_us_ = -1;     // when it last went out, µs (-1: never)
+  std::uint64_t host_heartbeats_ = 0;            // sent, count
+  std::uint64_t late_seen_ = 0;                  // Kernel::late_events() at the last activation
+  std::array<can_frame, 2> quick_stop_{};        // prepared RPDO1s for the fatal-signal hook
+  bool hooked_ = false;                          // the fatal hook is registered
 };
 
 }  // namespace robuter::hal::can

@@ -55,6 +55,8 @@ DriveLinkSettings link_settings(const CanConfig& c, std::uint32_t node) {
   s.heartbeat_timeout_ms = c.heartbeat_timeout_ms;
   s.sdo_timeout_ms = c.sdo_timeout_ms;
   s.fault_reset_ms = c.fault_reset_ms;
+  s.host_node = static_cast<std::uint8_t>(c.host_node);
+  s.watchdog_ms = static_cast<std::uint16_t>(c.drive_watchdog_ms);
   return s;
 }
 }  // namespace
@@ -85,6 +87,7 @@ void CanDrive::send_commands() {
   left_.poll(now_us_, on, on ? l : 0, out);
   right_.poll(now_us_, on, on ? r : 0, out);
   for (std::size_t i = 0; i < out.count; ++i) bus_.send(out.frames[i]);
+  bus_.flush();  // a stop goes out now, not at the end of the backend's activation
 }
 
 // Off also zeroes the wheels, as the HAL asks.

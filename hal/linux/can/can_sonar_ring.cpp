@@ -41,6 +41,7 @@ bool CanSonarRing::fire(int node, std::uint8_t mask) {
   if (!bus_.send(sonar::fire(id, mask, static_cast<std::uint16_t>(echo_timeout_ms_),
                              static_cast<std::uint16_t>(sound_speed_))))
     return false;
+  bus_.flush();  // fired now, not at the backend's next activation
   c.pending = true;
   c.ready = false;
   c.fired_us = now_us_;

@@ -19,7 +19,11 @@ inline constexpr canid_t kSdoRequest = 0x600;  // + id: host → SDO server
 inline constexpr canid_t kHeartbeat = 0x700;   // + id: NMT state of a node
 
 // Object dictionary entries used (index; sub-index 0 unless noted).
+inline constexpr std::uint16_t kObjConsumerHeartbeat = 0x1016;  // sub 1: u32, node id << 16 | time in ms
 inline constexpr std::uint16_t kObjHeartbeatProducer = 0x1017;  // u16, ms
+inline constexpr std::uint16_t kObjAbortConnection = 0x6007;    // i16: reaction to a lost connection
+inline constexpr std::int16_t kAbortQuickStop = 3;              // 0x6007 value: quick stop (1 fault, 2 disable voltage)
+inline constexpr std::uint16_t kEmcyHeartbeatError = 0x8130;    // EMCY: life guard or heartbeat error
 inline constexpr std::uint16_t kObjControlword = 0x6040;        // u16
 inline constexpr std::uint16_t kObjStatusword = 0x6041;         // u16
 inline constexpr std::uint16_t kObjModesOfOperation = 0x6060;   // i8

@@ -23,10 +23,21 @@ void DriveLink::start(std::int64_t now_us) {
 }
 
 void DriveLink::send_sdo(std::int64_t now_us, FrameBatch& out) {
-  if (st_.phase == LinkPhase::configure_mode)
-    out.push(sdo_download(s_.node, kObjModesOfOperation, 0, static_cast<std::uint8_t>(kModeProfileVelocity), 1));
-  else
-    out.push(sdo_download(s_.node, kObjHeartbeatProducer, 0, s_.heartbeat_ms, 2));
+  switch (st_.phase) {
+    case LinkPhase::configure_mode:
+      out.push(sdo_download(s_.node, kObjModesOfOperation, 0, static_cast<std::uint8_t>(kModeProfileVelocity), 1));
+      break;
+    case LinkPhase::configure_heartbeat:
+      out.push(sdo_download(s_.node, kObjHeartbeatProducer, 0, s_.heartbeat_ms, 2));
+      break;
+    case LinkPhase::configure_consumer:
+      out.push(sdo_download(s_.node, kObjConsumerHeartbeat, 1,
+                            static_cast<std::uint32_t>(s_.host_node) << 16 | s_.watchdog_ms, 4));
+      break;
+    default:
+      out.push(sdo_download(s_.node, kObjAbortConnection, 0, static_cast<std::uint16_t>(kAbortQuickStop), 2));
+      break;
+  }
   sent_us_ = now_us;
   pending_send_ = false;
 }
@@ -52,11 +63,18 @@ bool DriveLink::on_frame(const can_frame& f, std::int64_t now_us) {
   if (node_of(f, kSdoResponse) == s_.node && parse_sdo(f, kSdoResponse, sdo)) {
     const bool mode = st_.phase == LinkPhase::configure_mode && sdo.index == kObjModesOfOperation;
     const bool hb = st_.phase == LinkPhase::configure_heartbeat && sdo.index == kObjHeartbeatProducer;
-    if (!mode && !hb) return true;  // a late answer to an earlier write
+    const bool consumer = st_.phase == LinkPhase::configure_consumer && sdo.index == kObjConsumerHeartbeat;
+    const bool abort = st_.phase == LinkPhase::configure_abort && sdo.index == kObjAbortConnection;
+    if (!mode && !hb && !consumer && !abort) return true;  // a late answer to an earlier write
     last_heard_us_ = now_us;
     if (sdo.command == 0x60) {
       st_.sdo_abort = 0;
-      st_.phase = mode ? LinkPhase::configure_heartbeat : LinkPhase::starting;
+      // The drive-side watchdog (docs/SAFETY.md): after its own heartbeat, the drive learns to
+      // watch the host's and to quick-stop when it stops (skipped when watchdog_ms is 0).
+      if (mode) st_.phase = LinkPhase::configure_heartbeat;
+      else if (hb) st_.phase = s_.watchdog_ms > 0 ? LinkPhase::configure_consumer : LinkPhase::starting;
+      else if (consumer) st_.phase = LinkPhase::configure_abort;
+      else st_.phase = LinkPhase::starting;
       pending_send_ = true;
     } else if (sdo.command == 0x80) {
       st_.sdo_abort = sdo.data == 0 ? 0xFFFFFFFFu : sdo.data;  // retried after fault_reset_ms
@@ -99,7 +117,9 @@ bool DriveLink::on_frame(const can_frame& f, std::int64_t now_us) {
 void DriveLink::poll(std::int64_t now_us, bool enable, std::int32_t target_velocity, FrameBatch& out) {
   switch (st_.phase) {
     case LinkPhase::configure_mode:
-    case LinkPhase::configure_heartbeat: {
+    case LinkPhase::configure_heartbeat:
+    case LinkPhase::configure_consumer:
+    case LinkPhase::configure_abort: {
       const std::int64_t wait = (st_.sdo_abort ? s_.fault_reset_ms : s_.sdo_timeout_ms) * kUsPerMs;
       if (pending_send_ || now_us - sent_us_ >= wait) send_sdo(now_us, out);
       return;

@@ -28,12 +28,16 @@ struct DriveLinkSettings {
   std::uint32_t heartbeat_timeout_ms = 350;  // no heartbeat for this long: the drive is lost, ms
   std::uint32_t sdo_timeout_ms = 100;        // an unanswered SDO write is sent again after this, ms
   std::uint32_t fault_reset_ms = 1000;       // a drive in fault gets a fault reset this often, ms
+  std::uint8_t host_node = 127;              // node id of the host's own heartbeat (0x700 + id)
+  std::uint16_t watchdog_ms = 0;             // consumer heartbeat time written to 0x1016:01, ms (0: not written)
 };
 
 // Where the bring-up is.
 enum class LinkPhase : std::uint8_t {
   configure_mode,       // SDO write 0x6060 = 3 (profile velocity) sent, awaiting the answer
   configure_heartbeat,  // SDO write 0x1017 = heartbeat_ms sent, awaiting the answer
+  configure_consumer,   // SDO write 0x1016:01 = host node, watchdog_ms sent (the drive watches the host)
+  configure_abort,      // SDO write 0x6007 = 3 sent: quick stop when the host's heartbeat is lost
   starting,             // NMT start sent, awaiting an "operational" heartbeat
   running,              // PDOs flow: RPDO1 every poll, TPDO1/2 on SYNC
 };

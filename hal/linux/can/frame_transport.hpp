@@ -40,6 +40,12 @@ class FrameTransport {
   // Takes the next received data frame; false when none is waiting. Error frames are consumed
   // here too: they update bus_state() and are never returned.
   virtual bool receive(can_frame& out) = 0;
+  // Hands frames queued by send() to the bus now (a transport that batches them: the Unix-socket
+  // bus). Called at the end of each backend activation and after an immediate command.
+  virtual void flush() {}
+  // Sends from a fatal-signal handler: async-signal-safe (one write()/sendto(), no counters);
+  // false when the transport cannot (the in-process loopback).
+  virtual bool send_from_signal(const can_frame&) const noexcept { return false; }
   virtual BusState bus_state() const = 0;
   virtual const TransportCounters& counters() const = 0;
 };

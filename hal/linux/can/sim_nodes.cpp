@@ -28,6 +28,26 @@ void SimDriveNode::reboot(std::int64_t now_us) {
   booted_ = false;
   fault_cause_ = false;
   next_heartbeat_us_ = now_us;
+  consumer_node_ = 0;
+  consumer_ms_ = 0;
+  abort_option_ = 1;
+  last_consumed_us_ = -1;
+  consumer_lost_ = false;
+}
+
+void SimDriveNode::lose_connection() {
+  ++heartbeat_events_;
+  consumer_lost_ = true;
+  if (emcy_) send(emcy(node_, kEmcyHeartbeatError, 0x11));  // error register: generic + communication
+  switch (abort_option_) {
+    case 1: fault_cause_ = false; state_ = State::fault_reaction_active; break;
+    case 2: if (state_ != State::fault) state_ = State::switch_on_disabled; break;
+    case 3:
+      if (state_ == State::operation_enabled) state_ = State::quick_stop_active;
+      else if (state_ == State::ready_to_switch_on || state_ == State::switched_on) state_ = State::switch_on_disabled;
+      break;
+    default: break;  // 0: no action
+  }
 }
 
 void SimDriveNode::inject_fault(std::uint16_t code) {
@@ -39,6 +59,15 @@ void SimDriveNode::inject_fault(std::uint16_t code) {
 // NMT for this node or all; SDO writes to the two objects the host configures; RPDO1 and SYNC
 // only while operational (CiA 301: PDOs run in "operational" only).
 void SimDriveNode::take(const can_frame& f, std::int64_t now_us) {
+  NmtState watched{};
+  if (consumer_node_ != 0 && node_of(f, kHeartbeat) == consumer_node_ && parse_heartbeat(f, watched)) {
+    last_consumed_us_ = now_us;
+    if (consumer_lost_) {
+      consumer_lost_ = false;
+      if (emcy_) send(emcy(node_, 0x0000, 0x00));  // error reset: the connection is back
+    }
+    return;
+  }
   NmtCommand cmd{};
   std::uint8_t target_node = 0;
   if (parse_nmt(f, cmd, target_node)) {
@@ -59,6 +88,14 @@ void SimDriveNode::take(const can_frame& f, std::int64_t now_us) {
     if (sdo.index == kObjModesOfOperation && sdo.sub == 0) {
       if (refuse_mode_) return send(sdo_abort(node_, sdo.index, sdo.sub, 0x06090030));
       mode_ = static_cast<std::int8_t>(sdo.data & 0xFF);
+    } else if (sdo.index == kObjConsumerHeartbeat && sdo.sub == 1) {
+      consumer_node_ = static_cast<std::uint8_t>((sdo.data >> 16) & 0x7F);
+      consumer_ms_ = static_cast<std::uint16_t>(sdo.data & 0xFFFF);
+      last_consumed_us_ = -1;  // watching starts with that node's next heartbeat
+      if (consumer_lost_ && emcy_) send(emcy(node_, 0x0000, 0x00));  // the old event is over
+      consumer_lost_ = false;
+    } else if (sdo.index == kObjAbortConnection && sdo.sub == 0) {
+      abort_option_ = static_cast<std::int16_t>(sdo.data & 0xFFFF);
     } else if (sdo.index == kObjHeartbeatProducer && sdo.sub == 0) {
       heartbeat_ms_ = static_cast<std::uint16_t>(sdo.data & 0xFFFF);
       next_heartbeat_us_ = now_us;
@@ -98,6 +135,9 @@ void SimDriveNode::step(std::int64_t now_us) {
   }
   can_frame f;
   while (bus_.receive(f)) take(f, now_us);
+  if (consumer_ms_ > 0 && last_consumed_us_ >= 0 && !consumer_lost_ &&
+      now_us - last_consumed_us_ > static_cast<std::int64_t>(consumer_ms_) * 1000)
+    lose_connection();
   if (state_ == State::fault_reaction_active) state_ = State::fault;  // transition 14: motor stopped
   const double dt = last_us_ < 0 ? 0.0 : static_cast<double>(now_us - last_us_) * 1e-6;
   last_us_ = now_us;

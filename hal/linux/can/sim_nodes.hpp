@@ -10,8 +10,12 @@
 namespace robuter::hal::can {
 
 // A motor drive as the CiA 402 profile describes it, with the object dictionary subset robuterd
-// uses (0x1017, 0x6040/41, 0x6060, 0x6064, 0x606C, 0x60FF) and fault, silence and reboot
-// injection. The motor follows the target velocity within an acceleration limit.
+// uses (0x1016:01, 0x1017, 0x6007, 0x6040/41, 0x6060, 0x6064, 0x606C, 0x60FF) and fault, silence
+// and reboot injection. The motor follows the target velocity within an acceleration limit.
+// Heartbeat consumer (CiA 301): once 0x1016:01 names a node and a time and that node's first
+// heartbeat came, a gap longer than the time is a heartbeat event: EMCY 0x8130 and the 0x6007
+// reaction (1 fault, 2 disable voltage, 3 quick stop: velocity to 0 at the acceleration limit);
+// the next heartbeat of that node sends the EMCY error reset.
 class SimDriveNode {
  public:
   SimDriveNode(FrameTransport& bus, std::uint8_t node, double accel_counts_s2 = 1e9);
@@ -42,10 +46,18 @@ class SimDriveNode {
   void set_position(double counts) { position_ = counts; }    // increments
   std::uint16_t last_controlword() const { return controlword_; }
   std::uint32_t rpdos() const { return rpdos_; }              // RPDO1 frames taken, count
+  std::uint8_t consumer_node() const { return consumer_node_; }   // 0x1016:01 node id (0: none)
+  std::uint16_t consumer_ms() const { return consumer_ms_; }      // 0x1016:01 time, ms
+  std::int16_t abort_option() const { return abort_option_; }     // 0x6007
+  std::uint32_t heartbeat_events() const { return heartbeat_events_; }  // consumer heartbeat losses, count
+  std::int64_t last_consumed_us() const { return last_consumed_us_; }   // last heartbeat of the watched node, µs (-1 none)
+  bool consumer_lost() const { return consumer_lost_; }           // the watched heartbeat is missing now
 
  private:
   void take(const can_frame& f, std::int64_t now_us);
   void send(const can_frame& f);
+  // The 0x6007 reaction to a lost heartbeat of the watched node.
+  void lose_connection();
 
   FrameTransport& bus_;
   std::uint8_t node_;
@@ -66,6 +78,12 @@ class SimDriveNode {
   bool refuse_mode_ = false;
   bool emcy_ = true;                               // EMCY frames are sent
   std::uint32_t rpdos_ = 0;
+  std::uint8_t consumer_node_ = 0;                 // 0x1016:01 bits 16..23: the node watched (0: none)
+  std::uint16_t consumer_ms_ = 0;                  // 0x1016:01 bits 0..15: its heartbeat time, ms (0: off)
+  std::int16_t abort_option_ = 1;                  // 0x6007 (CiA 402 default 1: fault)
+  std::int64_t last_consumed_us_ = -1;             // last heartbeat of the watched node, µs (-1: none yet)
+  bool consumer_lost_ = false;                     // a heartbeat event happened and the node is still silent
+  std::uint32_t heartbeat_events_ = 0;             // heartbeat events, count
 };
 
 // An ultrasonic node of four transducers (docs/CAN.md frame set): fire → ranges after the

@@ -96,6 +96,10 @@ bool SocketCanTransport::send(const can_frame& f) {
   return true;
 }
 
+bool SocketCanTransport::send_from_signal(const can_frame& f) const noexcept {
+  return ::write(fd_, &f, sizeof f) == static_cast<ssize_t>(sizeof f);
+}
+
 // Error frames are folded into the state and skipped; a bounded number per call so a storm of
 // them cannot hold the caller.
 bool SocketCanTransport::receive(can_frame& out) {

@@ -29,6 +29,7 @@ class SocketCanTransport final : public FrameTransport {
   int fd() const override { return fd_; }
   bool send(const can_frame& f) override;
   bool receive(can_frame& out) override;
+  bool send_from_signal(const can_frame& f) const noexcept override;
   BusState bus_state() const override { return state_; }
   const TransportCounters& counters() const override { return counters_; }
 
