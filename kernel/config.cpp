@@ -315,9 +315,9 @@ void bind_demo(Binder& b, DemoConfig& d) {
   b.integer("demo.speed_cm_s", d.speed_cm_s, 1, 100);
   b.integer("demo.slow_cm_s", d.slow_cm_s, 1, 100);
   b.integer("demo.align_cm_s", d.align_cm_s, 1, 100);
-  b.integer("demo.sensor_a", d.sensor_a, 1, 24);
-  b.integer("demo.sensor_b", d.sensor_b, 1, 24);
-  b.integer("demo.front_sensor", d.front_sensor, 1, 24);
+  b.integer("demo.sensor_a", d.sensor_a, 1, robot::kRingSensors);
+  b.integer("demo.sensor_b", d.sensor_b, 1, robot::kRingSensors);
+  b.integer("demo.front_sensor", d.front_sensor, 1, robot::kRingSensors);
   b.integer("demo.align_tolerance_mm", d.align_tolerance_mm, 1, 1000);
   b.integer("demo.laps", d.laps, 0, 1'000'000);
   b.integer("demo.calibration_timeout_ticks", d.calibration_timeout_ticks, 0, 10'000'000);
