@@ -30,6 +30,10 @@ using protocol::EmergencyCause;
 using protocol::ModeReason;
 using protocol::ModeState;
 using protocol::PlannerState;
+using protocol::kDetectAll;         // the detection bits of EmergencyState::enabled and the gate
+using protocol::kDetectBumper;
+using protocol::kDetectComm;
+using protocol::kDetectUltrasonic;
 
 inline constexpr int kSensors = robot::kRingSensors;  // ultrasonic ring sensors, numbered 1..24
 
@@ -118,7 +122,7 @@ struct EmergencyState {
   bool held = false;            // motion held until a watch-dog sensor has data
   bool latched = false;         // stopped by an emergency, waiting for a re-enable
   EmergencyCause cause = EmergencyCause::none;  // the cause (kept while latched)
-  std::uint8_t enabled = 7;     // detections on: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t enabled = kDetectAll;  // detections on: kDetect* bits (bumper 1, ultrasonic 2, communication 4)
   std::int32_t main_sensor = 0; // sensor in the direction of motion (0 when stopped)
   std::uint32_t watch = 0;      // watch-dog sensor set, bit s-1 = sensor s
   std::uint64_t tick = 0;       // tick of the verdict

@@ -32,7 +32,7 @@ class EmergencyModule final : public Process {
   bool add_motion_source(MotionSource source, Reader<MotionRequest> reader);
   // The operator's detections (bumper 1, ultrasonic 2, communication 4); the door crossing may
   // lower them while it is in a door (its DetectionRequest), nothing else.
-  void set_enabled(std::uint8_t mask) { base_mask_ = static_cast<std::uint8_t>(mask & 7u); }
+  void set_enabled(std::uint8_t mask) { base_mask_ = static_cast<std::uint8_t>(mask & kDetectAll); }
   // The detections in force now.
   std::uint8_t enabled() const { return detections(); }
   // Modes the arbiter must know at start-up: the passage finder hands over to the door crossing
