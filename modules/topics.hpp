@@ -285,14 +285,14 @@ struct MotionAuthority {
   MotionSource owner = MotionSource::link;              // link / go_to: the operator; else that automatic mode
   std::array<std::uint32_t, kMotionSources> runs{};     // per source: times the robot was handed to it
   std::array<ModeReason, kMotionSources> ended{};       // per source: why its last run ended (none: never ended)
-  std::uint8_t detections = 7;                          // emergency detections in force: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t detections = kDetectAll;                 // emergency detections in force: kDetect* bits
   std::uint64_t tick = 0;                               // tick of the decision
 };
 
 // The door crossing's wish for lowered detections while it crosses (seed doors(): emerg.on = BUMPER).
 struct DetectionRequest {
   bool lower = false;           // lower the detections while the crossing is in the door
-  std::uint8_t keep = 1;        // detections kept then: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t keep = kDetectBumper;  // detections kept then: kDetect* bits
 };
 
 // The firmware's shared state: one Topic per struct, owner fixed by the type.
