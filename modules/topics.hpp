@@ -30,6 +30,10 @@ using protocol::EmergencyCause;
 using protocol::ModeReason;
 using protocol::ModeState;
 using protocol::PlannerState;
+using protocol::kDetectAll;         // the detection bits of EmergencyState::enabled and the gate
+using protocol::kDetectBumper;
+using protocol::kDetectComm;
+using protocol::kDetectUltrasonic;
 
 inline constexpr int kSensors = robot::kRingSensors;  // ultrasonic ring sensors, numbered 1..24
 
@@ -118,7 +122,7 @@ struct EmergencyState {
   bool held = false;            // motion held until a watch-dog sensor has data
   bool latched = false;         // stopped by an emergency, waiting for a re-enable
   EmergencyCause cause = EmergencyCause::none;  // the cause (kept while latched)
-  std::uint8_t enabled = 7;     // detections on: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t enabled = kDetectAll;  // detections on: kDetect* bits (bumper 1, ultrasonic 2, communication 4)
   std::int32_t main_sensor = 0; // sensor in the direction of motion (0 when stopped)
   std::uint32_t watch = 0;      // watch-dog sensor set, bit s-1 = sensor s
   std::uint64_t tick = 0;       // tick of the verdict
@@ -281,14 +285,14 @@ struct MotionAuthority {
   MotionSource owner = MotionSource::link;              // link / go_to: the operator; else that automatic mode
   std::array<std::uint32_t, kMotionSources> runs{};     // per source: times the robot was handed to it
   std::array<ModeReason, kMotionSources> ended{};       // per source: why its last run ended (none: never ended)
-  std::uint8_t detections = 7;                          // emergency detections in force: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t detections = kDetectAll;                 // emergency detections in force: kDetect* bits
   std::uint64_t tick = 0;                               // tick of the decision
 };
 
 // The door crossing's wish for lowered detections while it crosses (seed doors(): emerg.on = BUMPER).
 struct DetectionRequest {
   bool lower = false;           // lower the detections while the crossing is in the door
-  std::uint8_t keep = 1;        // detections kept then: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t keep = kDetectBumper;  // detections kept then: kDetect* bits
 };
 
 // The firmware's shared state: one Topic per struct, owner fixed by the type.

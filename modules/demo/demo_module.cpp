@@ -65,7 +65,7 @@ void DemoModule::run(Kernel& k) {
     if (why != ModeReason::none) {
       course_.stop();
       running_ = false;
-      log::info("demo: ended ({})", why == ModeReason::emergency ? "emergency" : "operator");
+      log::info("demo: ended ({})", word(why));  // the reason XD reports
       demo::CourseOutput last;
       last.phase = demo::Phase::done;
       last.lap = status_out_.current().laps;

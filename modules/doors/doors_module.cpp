@@ -11,7 +11,7 @@ namespace robuter {
 DoorsModule::DoorsModule(Blackboard& bb, const Config& cfg, EmergencyModule* emergency)
     : crossing_(doors::crossing_settings(cfg)),
       emergency_(emergency),
-      crossing_mask_(static_cast<std::uint8_t>(cfg.doors.emergency_mask & 7u)),
+      crossing_mask_(static_cast<std::uint8_t>(cfg.doors.emergency_mask & kDetectAll)),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),

@@ -12,7 +12,7 @@ namespace {
 safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig& robot, const EmergencyTuning& t,
                                    Nanos tick_ns) {
   safety::GateSettings s;
-  s.enabled = static_cast<std::uint8_t>(cfg.mask & 7u);
+  s.enabled = static_cast<std::uint8_t>(cfg.mask & kDetectAll);
   s.comm_limit_ticks = cfg.comm_limit_ticks;
   s.min_safety_mm = cfg.min_safety_mm;
   s.safety_mm_per_cm_s = cfg.safety_mm_per_cm_s;

@@ -32,7 +32,7 @@ class EmergencyModule final : public Process {
   bool add_motion_source(MotionSource source, Reader<MotionRequest> reader);
   // The operator's detections (bumper 1, ultrasonic 2, communication 4); the door crossing may
   // lower them while it is in a door (its DetectionRequest), nothing else.
-  void set_enabled(std::uint8_t mask) { base_mask_ = static_cast<std::uint8_t>(mask & 7u); }
+  void set_enabled(std::uint8_t mask) { base_mask_ = static_cast<std::uint8_t>(mask & kDetectAll); }
   // The detections in force now.
   std::uint8_t enabled() const { return detections(); }
   // Modes the arbiter must know at start-up: the passage finder hands over to the door crossing
@@ -93,7 +93,7 @@ class EmergencyModule final : public Process {
   std::uint32_t seen_reenable_ = 0;   // LinkStatus.reenable_seq last seen
   std::uint32_t seen_servo_ = 0;      // ServoRequest.seq last seen
   std::uint32_t seen_actions_ = 0;    // OperatorEvents.count last seen
-  std::uint8_t base_mask_ = 7;        // the operator's detections (configuration, set_enabled)
+  std::uint8_t base_mask_ = kDetectAll;  // the operator's detections (configuration, set_enabled)
   bool hand_over_ = false;            // [gate] hand_over
   bool demo_at_boot_ = false;         // [demo] enabled
   ModeState gate_seen_ = ModeState::off;  // the passage finder's state at the last run

@@ -8,11 +8,6 @@
 
 namespace robuter::safety {
 
-// Detection bits of the `enabled` mask (seed emerg.on).
-inline constexpr std::uint8_t kDetectBumper = 1;      // contact bumpers
-inline constexpr std::uint8_t kDetectUltrasonic = 2;  // watch-dog sensors under the safety distance
-inline constexpr std::uint8_t kDetectComm = 4;        // link silent for longer than the limit
-
 // Whether a command that would move the robot (or power its servo, start a mode) is taken now:
 // while an emergency is latched the gate drops every request, so the link answers such a
 // command `error` rather than `ack` — the link's replies follow this one rule.
@@ -20,7 +15,7 @@ constexpr bool admits_motion(const EmergencyState& s) { return !s.latched; }
 
 // Everything the gate needs to know, in ticks and mm.
 struct GateSettings {
-  std::uint8_t enabled = 7;                  // detections on: bumper 1, ultrasonic 2, communication 4
+  std::uint8_t enabled = kDetectAll;         // detections on: kDetect* bits (modules/topics.hpp, the vocabulary's)
   std::uint32_t comm_limit_ticks = 18'000;   // link silence that trips, ticks
   std::uint32_t min_safety_mm = 220;         // smallest safety distance, mm
   std::uint32_t safety_mm_per_cm_s = 10;     // safety distance per cm/s of the faster wheel, mm
@@ -73,7 +68,7 @@ class MotionGate {
   // Decides for one activation.
   GateDecision step(const GateInputs& in);
   // Switches detections on or off (mask bits kDetect*), effective at the next step.
-  void set_enabled(std::uint8_t mask) { s_.enabled = static_cast<std::uint8_t>(mask & 7u); }
+  void set_enabled(std::uint8_t mask) { s_.enabled = static_cast<std::uint8_t>(mask & kDetectAll); }
   std::uint8_t enabled() const { return s_.enabled; }
   const GateSettings& settings() const { return s_; }
 

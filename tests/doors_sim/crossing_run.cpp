@@ -45,25 +45,16 @@ std::string moved_world(const std::string& file, double dx, double dy, double dh
   return out;
 }
 
-// XD's words for a state and a reason.
+// XD's words for a state, and the reason when it failed.
 std::string words(const ModeStatus& s) {
-  static const char* states[] = {"off", "starting", "scanning", "searching", "moving", "aligned", "crossing",
-                                 "waiting", "leaving", "crossed", "failed", "running", "finished"};
-  static const char* reasons[] = {"none", "no-unit", "unit-silent", "unit-garbage", "unit-refused", "unit-lost",
-                                  "no-passage", "cannot-align", "cant-cross", "emergency", "operator", "scanner",
-                                  "cancelled", "link-lost", "timeout", "shutdown", "no-landmark"};
-  std::string w = states[static_cast<int>(s.state)];
-  if (s.state == ModeState::failed) w += std::string(" ") + reasons[static_cast<int>(s.reason)];
+  std::string w(word(s.state));
+  if (s.state == ModeState::failed) w += " " + std::string(word(s.reason));
   return w;
 }
 
+// How a mode ended: `ok`, or "failed <reason>" in XD's words.
 std::string mode_end(const ModeStatus& s, const char* ok) {
-  if (s.state == ModeState::failed) {
-    static const char* names[] = {"none", "no-unit", "unit-silent", "unit-garbage", "unit-refused", "unit-lost",
-                                  "no-passage", "cannot-align", "cant-cross", "emergency", "operator", "scanner",
-                                  "cancelled", "link-lost", "timeout", "shutdown", "no-landmark"};
-    return std::string("failed ") + names[static_cast<int>(s.reason)];
-  }
+  if (s.state == ModeState::failed) return "failed " + std::string(word(s.reason));
   return ok;
 }
 }  // namespace

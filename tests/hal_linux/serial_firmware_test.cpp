@@ -7,6 +7,7 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <thread>
 
 #include "hal/link/pty_link.hpp"
@@ -123,13 +124,8 @@ TEST(SerialFirmware, MissingGpioChipIsNamed) {
   EXPECT_NE(fw.error().find("/dev/gpiochip-robuter-test"), std::string::npos) << fw.error();
 }
 
-const char* ptu_state(test::SimFirmware& fw) {
-  switch (fw.bb().pan_tilt_status.reader().peek().state) {
-    case ModeState::scanning: return "scanning";
-    case ModeState::failed: return "failed";
-    default: return "other";
-  }
-}
+// The pan-tilt's state as XD words it.
+std::string_view ptu_state(test::SimFirmware& fw) { return word(fw.bb().pan_tilt_status.reader().peek().state); }
 
 // The pan-tilt unit's port (SerialStream too): unplugged, failed; a new unit at the same path
 // is found by the operator's next Ap without a restart.

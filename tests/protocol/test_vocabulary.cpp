@@ -45,7 +45,7 @@ TEST(Vocabulary, EveryEnumeratorHasItsOwnWord) {
 // One word per enumerator: each table ends with the enum's last enumerator.
 TEST(Vocabulary, OneWordPerEnumerator) {
   EXPECT_EQ(kEnumerators<EmergencyCause>, static_cast<std::size_t>(EmergencyCause::bus_off) + 1);
-  EXPECT_EQ(kEnumerators<PlannerState>, static_cast<std::size_t>(PlannerState::cancelled) + 1);
+  EXPECT_EQ(kEnumerators<PlannerState>, static_cast<std::size_t>(PlannerState::operator_ended) + 1);
   EXPECT_EQ(kEnumerators<ModeState>, static_cast<std::size_t>(ModeState::finished) + 1);
   EXPECT_EQ(kEnumerators<ModeReason>, static_cast<std::size_t>(ModeReason::no_landmark) + 1);
   EXPECT_EQ(kEnumerators<DemoPhase>, static_cast<std::size_t>(DemoPhase::failed) + 1);
@@ -57,7 +57,7 @@ TEST(Vocabulary, WireWordsInOrder) {
             "none bumper obstacle comm-loss stop-byte motion-timeout drive-fault other heartbeat-lost "
             "bus-error-passive bus-off");
   EXPECT_EQ(all_words<PlannerState>(),
-            "idle scanning planning moving reached unreachable blocked outside stopped cancelled");
+            "idle scanning planning moving reached unreachable blocked outside stopped cancelled operator");
   EXPECT_EQ(all_words<ModeState>(),
             "off starting scanning searching moving aligned crossing waiting leaving crossed failed running finished");
   EXPECT_EQ(all_words<ModeReason>(),
@@ -70,6 +70,7 @@ TEST(Vocabulary, RoundTrips) {
   EXPECT_EQ(from_word<EmergencyCause>(word(EmergencyCause::heartbeat_lost)), EmergencyCause::heartbeat_lost);
   EXPECT_EQ(word(*from_word<ModeReason>("cant-cross")), "cant-cross");
   EXPECT_EQ(from_word<PlannerState>("unreachable"), PlannerState::unreachable);
+  EXPECT_EQ(from_word<PlannerState>("operator"), PlannerState::operator_ended);  // XP's word, not the enumerator's name
   EXPECT_EQ(from_word<DemoPhase>("advance"), DemoPhase::advance);
   EXPECT_EQ(from_word<EmergencyCause>("comm_loss"), std::nullopt);  // the enumerator's name is not its word
   EXPECT_EQ(from_word<ModeState>(kAbsentWord), std::nullopt);       // XD's "absent" stands for no state

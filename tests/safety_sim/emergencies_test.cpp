@@ -22,7 +22,7 @@ std::string wall_world(double gap) {
 // Config with the ultrasonic detection masked off, so the bumper is what stops the robot.
 Config bumper_only() {
   Config c;
-  c.emergency.mask = 5;  // bumper 1 + communication 4
+  c.emergency.mask = kDetectBumper | kDetectComm;
   return c;
 }
 

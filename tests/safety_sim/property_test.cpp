@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hal/sim/rng.hpp"
@@ -106,7 +107,7 @@ struct Totals {
   long longest_disagreement = 0;          // longest such run, ticks
   long contact_sequences = 0;             // sequences with a contact while the sonar watched
   std::string contact_seeds;              // their seeds, main sensor and body point, for the report
-  std::array<long, 11> trips_by_cause{};  // by EmergencyCause of the verdict that tripped
+  std::array<long, protocol::kEnumerators<EmergencyCause>> trips_by_cause{};  // by EmergencyCause of the verdict that tripped
   long trips = 0;
   double min_clearance_us_on = 1e9;
 };
@@ -281,15 +282,15 @@ Totals run_shard(int shard, bool contacts_fail) {
     run_sequence(seed, tot, report, contacts_fail);
     if (!report.empty() && ++failures <= 3) ADD_FAILURE() << report;
   }
-  const char* causes[] = {"none", "bumper", "obstacle", "comm-loss", "stop-byte", "motion-timeout", "drive-fault", "other",
-                          "heartbeat-lost", "bus-error-passive", "bus-off"};
   std::printf("shard %d/%d: %ld sequences, %ld ticks (%.0f simulated s), %ld commands + %ld stop bytes, %ld unanswered\n",
               shard + 1, kShards, tot.sequences, tot.ticks, static_cast<double>(tot.ticks) / 100.0, tot.commands,
               tot.stop_bytes, tot.no_reply);
   std::printf("  ticks moving %ld, latched %ld, sonar on %ld; trips %ld:", tot.moving_ticks, tot.latched_ticks,
               tot.us_on_ticks, tot.trips);
-  for (std::size_t c = 1; c < tot.trips_by_cause.size(); ++c)
-    if (tot.trips_by_cause[c]) std::printf(" %s %ld", causes[c], tot.trips_by_cause[c]);
+  for (std::size_t c = 1; c < tot.trips_by_cause.size(); ++c) {
+    const std::string_view cause = word(static_cast<EmergencyCause>(c));
+    if (tot.trips_by_cause[c]) std::printf(" %.*s %ld", static_cast<int>(cause.size()), cause.data(), tot.trips_by_cause[c]);
+  }
   std::printf("\n  speed at the drive while latched: %ld ticks; drive behind the gate's verdict: %ld ticks "
               "(longest %ld)\n",
               tot.latched_moving, tot.ungranted, tot.longest_disagreement);

@@ -195,7 +195,7 @@ void SafetyMonitor::check() {
     violation(ungranted, "tick " + std::to_string(tick) + ": drive at " + std::to_string(w.left) + " " +
                              std::to_string(w.right) + " cm/s, gate grants " + std::to_string(c.left) + " " +
                              std::to_string(c.right) + (c.stop ? " (stop)" : ""));
-  const bool us_on = (e.enabled & 2u) != 0;
+  const bool us_on = (e.enabled & kDetectUltrasonic) != 0;
   const auto& robot = fw.sim().robot();
   if (us_on) {
     ++us_on_ticks;

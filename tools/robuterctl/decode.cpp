@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "protocol/codec/vocabulary.hpp"
+
 namespace robuter::ctl {
 
 namespace {
@@ -54,8 +56,10 @@ std::string describe_reply(const std::string& sent, const std::string& reply) {
                        clock_text(f[73]));
   if (h == "E" && f.size() == 6)
     return fmt::format("emergency: {}{}cause {}  detectors {}{}{}  {}", f[2] == "1" ? "LATCHED  " : "",
-                       f[1] == "1" ? "HELD (waiting for sensor data)  " : "", f[3], (num(f[4]) & 1) ? "bumper " : "",
-                       (num(f[4]) & 2) ? "ultrasonic " : "", (num(f[4]) & 4) ? "comm-loss" : "", clock_text(f[5]));
+                       f[1] == "1" ? "HELD (waiting for sensor data)  " : "", f[3],
+                       (num(f[4]) & protocol::kDetectBumper) ? "bumper " : "",
+                       (num(f[4]) & protocol::kDetectUltrasonic) ? "ultrasonic " : "",
+                       (num(f[4]) & protocol::kDetectComm) ? "comm-loss" : "", clock_text(f[5]));
   if (h == "error" && f.size() > 1) return "error: " + reply.substr(6);
   if (h == "error") return sent.empty() ? "error" : "error (XB1 for the reason)";
   return reply;
