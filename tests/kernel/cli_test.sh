@@ -40,7 +40,7 @@ check bad-row-line 2 "bad_row.toml:3: key 'process.heartbeat.offset': offset 10 
 check bad-budget-line 2 "bad_budget.toml:3: key 'process.heartbeat.budget_us': budget 200000 µs exceeds the period of 100000 µs" "$bin" --sim --config "$configs/bad_budget.toml"
 check small-tick-valid 0 "is valid" "$bin" --check-config --config "$configs/small_tick.toml"
 check small-tick-runs 0 "" "$bin" --sim --config "$configs/small_tick.toml" --ticks 200 --log-level off
-check pty-twice 2 "--pty $tmpdir/x.pty: given twice (one link per path)" "$bin" --sim --pty "$tmpdir/x.pty" --pty "$tmpdir/./x.pty" --ticks 1
+check pty-twice 2 "--pty $tmpdir/./x.pty: given twice (one link per path)" "$bin" --sim --pty "$tmpdir/x.pty" --pty "$tmpdir/./x.pty" --ticks 1
 out=$("$bin" --sim --planner-pictures "$tmpdir/pictures/new" --ticks 5 --log-level info 2>&1); rc=$?
 if [[ $rc -eq 0 && -d "$tmpdir/pictures/new" && "$out" == *"planner: --planner-pictures $tmpdir/pictures/new did not exist: created it"* ]]; then
   pass=$((pass+1)); echo "ok   planner-pictures-created: said so"
