@@ -76,7 +76,11 @@ def start_robuterd():
         if "link on" in open(log).read():
             break
         time.sleep(0.05)
-    fd = os.open(pty, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    try:
+        fd = os.open(pty, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    except OSError:
+        p.kill()  # never leave a robuterd behind
+        raise
     tty.setraw(fd)
     return p, fd
 
