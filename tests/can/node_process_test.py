@@ -60,15 +60,27 @@ class Lines:
                     pass
 
 
+starts = 0
+
+
 def start_robuterd():
+    """Starts robuterd and opens its pty once robuterd says it made it: a killed robuterd's link
+    dangles, and its /dev/pts/N may meanwhile belong to another program."""
+    global starts
+    starts += 1
+    log = os.path.join(tmp, f"robuterd-{starts}.log")
     p = subprocess.Popen([robuterd, "--config", cfg, "--pty", pty, "--log-level", "info"],
-                         stdout=open(os.path.join(tmp, "robuterd.log"), "a"), stderr=subprocess.STDOUT,
+                         stdout=open(log, "w"), stderr=subprocess.STDOUT,
                          preexec_fn=lambda: __import__("resource").setrlimit(__import__("resource").RLIMIT_CORE, (0, 0)))
-    for _ in range(600):  # exists(): the link resolves (a killed robuterd's link dangles)
-        if os.path.exists(pty):
+    for _ in range(600):
+        if "link on" in open(log).read():
             break
         time.sleep(0.05)
-    fd = os.open(pty, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    try:
+        fd = os.open(pty, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    except OSError:
+        p.kill()  # never leave a robuterd behind
+        raise
     tty.setraw(fd)
     return p, fd
 
@@ -147,7 +159,7 @@ try:
         if m:
             qs[m.group(1)] = float(m.group(2))
     early = [line for line in out.seen[mark:] if "heartbeat of node 127 lost" in line]
-    log = open(os.path.join(tmp, "robuterd.log")).read()
+    log = open(os.path.join(tmp, f"robuterd-{starts}.log")).read()
     check("SIGSEGV: the fatal handler's quick stop reaches both drives before their watchdog",
           rc == -signal.SIGSEGV and len(qs) == 2 and all(v < WATCHDOG_MS for v in qs.values())
           and "fatal signal SIGSEGV: drives sent quick stop" in log,
@@ -162,7 +174,8 @@ finally:
         nodes.kill()
     if failed:
         print("--- robuter-can-nodes\n" + "\n".join(out.seen))
-        print("--- robuterd\n" + open(os.path.join(tmp, "robuterd.log")).read())
+        for i in range(1, starts + 1):
+            print(f"--- robuterd {i}\n" + open(os.path.join(tmp, f"robuterd-{i}.log")).read())
     subprocess.run(["rm", "-rf", tmp])
 print(f"{failed} failed")
 sys.exit(1 if failed else 0)

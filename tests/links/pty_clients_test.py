@@ -71,11 +71,14 @@ def printf(text, path):
 
 
 def start(*extra):
-    log = open(os.path.join(tmp, "robuterd.log"), "a")
+    """Starts robuterd and waits until it says its links are made: a killed robuterd's links
+    dangle, and their /dev/pts/N may meanwhile belong to another program."""
+    log_path = os.path.join(tmp, "robuterd.log")
+    before = open(log_path).read().count("link on") if os.path.exists(log_path) else 0
     p = subprocess.Popen([robuterd, "--sim", "--pty", A, "--pty", B, "--log-level", "info", *extra],
-                         stdout=log, stderr=subprocess.STDOUT)
-    for _ in range(600):  # exists(): the link resolves (a killed robuterd's link dangles)
-        if os.path.exists(A) and os.path.exists(B):
+                         stdout=open(log_path, "a"), stderr=subprocess.STDOUT)
+    for _ in range(600):
+        if open(log_path).read().count("link on") >= before + 2:
             break
         time.sleep(0.05)
     return p
@@ -88,13 +91,13 @@ def cause(client):
 
 
 def turn(b):
-    """XR (refused while the robot still brakes: asked again), ASN, AM 20 -20."""
-    for _ in range(50):
-        if b.ask("XR") == "ack":
-            break
-        time.sleep(0.1)
-    for line in ("ASN", "AM 20 -20"):
-        b.ask(line)
+    """XR, ASN, AM 20 -20, each asked again until acknowledged: XR is refused while the robot
+    still brakes, and a request right after XR may still meet the latch (docs/SAFETY.md §4)."""
+    for line in ("XR", "ASN", "AM 20 -20"):
+        for _ in range(50):
+            if b.ask(line) == "ack":
+                break
+            time.sleep(0.1)
     return b.wheels_become(20, -20)
 
 
