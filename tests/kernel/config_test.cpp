@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "kernel/config.hpp"
+#include "tests/support/missing_path.hpp"
 
 namespace robuter {
 namespace {
@@ -91,9 +92,11 @@ TEST(Config, SyntaxErrorGivesTheLine) {
 
 TEST(Config, MissingFileIsClear) {
   Config c;
-  const auto err = load_config("/nonexistent/robot.toml", c);
+  const robuter::test::MissingPaths paths;
+  const std::string file = paths.missing("robot.toml");
+  const auto err = load_config(file, c);
   ASSERT_TRUE(err);
-  EXPECT_EQ(err->message(), "/nonexistent/robot.toml: cannot open: No such file or directory");
+  EXPECT_EQ(err->message(), file + ": cannot open: No such file or directory");
 }
 
 TEST(Config, ShippedDefaultFileParsesToTheDefaults) {

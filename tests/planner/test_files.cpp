@@ -5,6 +5,7 @@
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/lib/thesis_files.hpp"
 #include "tests/planner/test_util.hpp"
+#include "tests/support/missing_path.hpp"
 
 namespace robuter::plan {
 namespace {
@@ -41,9 +42,11 @@ TEST(ThesisParameters, ErrorsNameFileAndLine) {
 }
 
 TEST(ThesisParameters, MissingFileIsAnError) {
-  const auto e = load_parameters("/nonexistent/params.txt");
+  const robuter::test::MissingPaths paths;
+  const std::string file = paths.missing("params.txt");
+  const auto e = load_parameters(file);
   ASSERT_FALSE(e.ok());
-  EXPECT_EQ(e.error().file, "/nonexistent/params.txt");
+  EXPECT_EQ(e.error().file, file);
   EXPECT_NE(e.error().text().find("cannot open"), std::string::npos);
 }
 
@@ -184,9 +187,10 @@ TEST(Loaders, ABrokenFileChangesNothing) {
   auto p = load_parameters(bad_params);
   ASSERT_FALSE(p.ok());
   EXPECT_EQ(p.error().file, bad_params);
-  auto missing = load_map("/nonexistent/robuter.map");
+  const robuter::test::MissingPaths paths;
+  auto missing = load_map(paths.missing("robuter.map"));
   ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.error().text().find("/nonexistent/robuter.map"), std::string::npos);
+  EXPECT_NE(missing.error().text().find(paths.missing("robuter.map")), std::string::npos);
   // Nothing changed: the map cell by cell, no change logged, the same plan.
   ASSERT_EQ(planner.map().cell_count(), lab.cell_count());
   for (int y = 0; y < 300; ++y)

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "hal/sim/sim_config.hpp"
+#include "tests/support/missing_path.hpp"
 
 namespace robuter::sim {
 namespace {
@@ -82,7 +83,8 @@ TEST(SimConfig, ErrorsNameTheLine) {
 }
 
 TEST(SimConfig, MissingFile) {
-  const auto r = load_sim_config("/nonexistent/sim.toml");
+  const robuter::test::MissingPaths paths;
+  const auto r = load_sim_config(paths.missing("sim.toml"));
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().line, 0);
 }

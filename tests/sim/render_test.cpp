@@ -11,6 +11,7 @@
 #include "hal/sim/robot.hpp"
 #include "hal/sim/world_io.hpp"
 #include "tests/sim/sim_test_util.hpp"
+#include "tests/support/missing_path.hpp"
 
 namespace robuter::sim {
 namespace {
@@ -121,7 +122,8 @@ TEST(Render, EveryShippedWorld) {
 
 TEST(Render, UnwritablePathIsAnError) {
   Picture pic;
-  const Status s = render_png(pic.scene, RenderOptions{}, "/nonexistent/dir/x.png");
+  const robuter::test::MissingPaths paths;
+  const Status s = render_png(pic.scene, RenderOptions{}, paths.under_file("x.png"));
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.error().message.find("cannot write"), std::string::npos);
 }

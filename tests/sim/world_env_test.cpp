@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "hal/sim/world_io.hpp"
+#include "tests/support/missing_path.hpp"
 
 namespace robuter::sim {
 namespace {
@@ -90,7 +91,8 @@ TEST(EnvFormat, MalformedLines) {
 }
 
 TEST(EnvFormat, MissingFileIsAnError) {
-  const auto r = load_world("/nonexistent/none.env");
+  const robuter::test::MissingPaths paths;
+  const auto r = load_world(paths.missing("none.env"));
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().line, 0);
   EXPECT_NE(r.error().message.find("cannot open"), std::string::npos);
