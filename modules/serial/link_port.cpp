@@ -25,11 +25,59 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
       demo_status_(bb.demo_status.reader()),
-      cfg_(cfg) {}
+      cfg_(cfg),
+      command_(bb.motion_command.reader()) {}
 
-void LinkPort::wake_emergency() const {
-  if (kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
+// An owner without a row in this run's table (`modules.enabled`) is never waited for.
+void LinkPort::attach(Kernel& k) {
+  kernel_ = &k;
+  emergency_runs_ = executor_runs_ = false;
+  for (std::size_t i = 0; i < k.process_count(); ++i) {
+    emergency_runs_ = emergency_runs_ || (emergency_process_ && k.row(i).process == emergency_process_);
+    executor_runs_ = executor_runs_ || (executor_process_ && k.row(i).process == executor_process_);
+  }
 }
+
+// Generations only grow; the owners publish on every run (state, posture), so "changed since
+// the start of the wait" is "ran since". The executor must also have applied the emergency's
+// latest command: with the default priorities it runs right after the emergency module, but a
+// refused trigger or another table may order them otherwise.
+bool LinkPort::waiting() {
+  if (!waiting_) return false;
+  const bool emergency_ran = !emergency_runs_ || emergency_.generation() != wait_emergency_gen_;
+  const bool executor_ran = !executor_runs_ || (posture_.generation() != wait_posture_gen_ &&
+                                                posture_.peek().command_seq == command_.peek().seq);
+  if (emergency_ran && executor_ran) {
+    waiting_ = false;
+    return false;
+  }
+  trigger_owners();
+  return true;
+}
+
+// The owners must run after the latest request: a new one restarts the wait from now.
+void LinkPort::await_owners() {
+  waiting_ = true;
+  wait_emergency_gen_ = emergency_.generation();
+  wait_posture_gen_ = posture_.generation();
+  trigger_owners();
+}
+
+void LinkPort::trigger_owners() const {
+  if (!kernel_) return;
+  if (emergency_runs_ && emergency_.generation() == wait_emergency_gen_) kernel_->trigger(emergency_process_);
+  if (executor_runs_) kernel_->trigger(executor_process_);
+}
+
+bool LinkPort::revive_link() {
+  const std::uint64_t t = tick(), last = w_.status.current().last_message_tick;
+  if (!(t > last && t - last > cfg_.emergency.comm_limit_ticks)) return false;
+  message_received();
+  await_owners();
+  return true;
+}
+
+void LinkPort::wake_emergency() { await_owners(); }
 
 void LinkPort::act(OperatorAction a) {
   const std::uint64_t t = tick();
@@ -130,6 +178,7 @@ PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
     o.theta = p.theta;
     ++o.seq;
   });
+  await_owners();  // the executor sets the odometry: BO after the ack reads it
   return PortResult::ok;
 }
 

@@ -71,6 +71,8 @@ class LinkCodec {
   const SessionState& session() const noexcept { return session_; }
   // Drops a partial line and returns the session to seed behaviour (link reopened).
   void reset() noexcept;
+  // True when byte `b`, fed next, would complete a line (its reply or error).
+  bool ends_line(std::uint8_t b) const noexcept { return assembler_.ends_line(b); }
 
  private:
   SessionState session_{};               // options switched on by the client
