@@ -39,15 +39,15 @@ void LinkPort::attach(Kernel& k) {
 }
 
 // Generations only grow; the owners publish on every run (state, posture), so "changed since
-// the start of the wait" is "ran since". The executor must also have applied the emergency's
-// latest command: with the default priorities it runs right after the emergency module, but a
-// refused trigger or another table may order them otherwise.
+// the start of the wait" is "ran since". The executor must also have applied the emergency
+// module's latest command (which it triggers the executor for): with the default priorities it
+// runs right after the emergency module, but a refused trigger or another table may delay it.
+// The executor is run for the wait only when the request is its own (AS, AC): an extra posture
+// sample changes nothing else, but the emergency module's at-rest test compares postures of
+// different ticks, so it is not asked for without need.
 bool LinkPort::waiting() {
   if (!waiting_) return false;
-  const bool emergency_ran = !emergency_runs_ || emergency_.generation() != wait_emergency_gen_;
-  const bool executor_ran = !executor_runs_ || (posture_.generation() != wait_posture_gen_ &&
-                                                posture_.peek().command_seq == command_.peek().seq);
-  if (emergency_ran && executor_ran) {
+  if (emergency_ran() && executor_done()) {
     waiting_ = false;
     return false;
   }
@@ -55,9 +55,19 @@ bool LinkPort::waiting() {
   return true;
 }
 
+bool LinkPort::emergency_ran() const { return !emergency_runs_ || emergency_.generation() != wait_emergency_gen_; }
+
+bool LinkPort::executor_done() const {
+  if (!executor_runs_) return true;
+  if (wait_executor_ && posture_.generation() == wait_posture_gen_) return false;
+  return posture_.peek().command_seq == command_.peek().seq;
+}
+
 // The owners must run after the latest request: a new one restarts the wait from now.
-void LinkPort::await_owners() {
+void LinkPort::await_owners(bool executor) {
+  if (!waiting_) wait_executor_ = false;
   waiting_ = true;
+  wait_executor_ = wait_executor_ || executor;
   wait_emergency_gen_ = emergency_.generation();
   wait_posture_gen_ = posture_.generation();
   trigger_owners();
@@ -65,19 +75,19 @@ void LinkPort::await_owners() {
 
 void LinkPort::trigger_owners() const {
   if (!kernel_) return;
-  if (emergency_runs_ && emergency_.generation() == wait_emergency_gen_) kernel_->trigger(emergency_process_);
-  if (executor_runs_) kernel_->trigger(executor_process_);
+  if (!emergency_ran()) kernel_->trigger(emergency_process_);
+  if (executor_runs_ && !executor_done()) kernel_->trigger(executor_process_);
 }
 
 bool LinkPort::revive_link() {
   const std::uint64_t t = tick(), last = w_.status.current().last_message_tick;
   if (!(t > last && t - last > cfg_.emergency.comm_limit_ticks)) return false;
   message_received();
-  await_owners();
+  await_owners(false);
   return true;
 }
 
-void LinkPort::wake_emergency() { await_owners(); }
+void LinkPort::wake_emergency() { await_owners(false); }
 
 void LinkPort::act(OperatorAction a) {
   const std::uint64_t t = tick();
@@ -158,6 +168,7 @@ PortResult LinkPort::set_servo(bool on) noexcept {
     ++s.seq;
   });
   act(OperatorAction::servo);
+  await_owners(true);  // the executor switches the servo: BO after the ack reads it
   return PortResult::ok;
 }
 
@@ -178,7 +189,7 @@ PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
     o.theta = p.theta;
     ++o.seq;
   });
-  await_owners();  // the executor sets the odometry: BO after the ack reads it
+  await_owners(true);  // the executor sets the odometry: BO after the ack reads it
   return PortResult::ok;
 }
 

@@ -122,11 +122,17 @@ class LinkPort final : public protocol::RobotPort {
   Reader<MotionCommand> command_;          // the emergency's command, to know the executor applied it
   // Read-your-writes: a wait for the owners, and their topics' generations when it began.
   bool waiting_ = false;
+  bool wait_executor_ = false;             // the wait needs a run of the executor itself (AS, AC)
   std::uint64_t wait_emergency_gen_ = 0;   // EmergencyState generation at the start of the wait
   std::uint64_t wait_posture_gen_ = 0;     // Posture generation at the start of the wait
-  // Starts a wait for the emergency module and the executor (from now), and triggers them.
-  void await_owners();
-  // Triggers the owners of the current wait that have not run since it began.
+  // Starts a wait (from now) for the emergency module, and for the executor's own run when
+  // `executor`; triggers them.
+  void await_owners(bool executor);
+  // The emergency module has run since the wait began (or has no row).
+  bool emergency_ran() const;
+  // The executor has run if the wait needs it, and has applied the emergency's latest command.
+  bool executor_done() const;
+  // Triggers the owners of the current wait that have not done their part yet.
   void trigger_owners() const;
   // Asks the emergency module to judge a new request in this tick.
   void wake_emergency();
