@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Link figures: pty round-trip latency of BO over 10,000 requests with the 10 ms tick running,
-# as a normal process and with SCHED_FIFO (robuterd realtime = true, the client under chrt).
+# as a normal process and with SCHED_FIFO (robuterd realtime = true, the client under chrt),
+# against the floor measured in the same run: a bare pty that answers each line at once.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 n=${ROBUTER_BENCH_LINK_REQUESTS:-10000}
@@ -15,9 +16,25 @@ run_case() {
   local pid=$!
   for _ in $(seq 100); do [[ -L "$pty" ]] && break; sleep 0.05; done
   echo -n "$label: "
-  "$@" "$bin/robuterctl" --port "$pty" --bench "$n" --bench-line BO
+  local out
+  out=$("$@" "$bin/robuterctl" --port "$pty" --bench "$n" --bench-line BO)
+  echo "$out"
+  local a b
+  a=$(p50 "$out"); b=$(p50 "$floor")
+  [[ -n "$a" && -n "$b" && "$b" -gt 0 ]] && echo "  p50 ratio to the bare pty's floor: $(awk -v a="$a" -v b="$b" 'BEGIN{printf "%.2f", a/b}')"
   kill -INT $pid; wait $pid || true
 }
+
+# The floor: the same client against a bare pty echo (tools/bench/pty_echo), then robuterd.
+echo_pty="$dir/echo.pty"
+"$bin/robuter_pty_echo" "$echo_pty" &
+echo_pid=$!
+for _ in $(seq 100); do [[ -L "$echo_pty" ]] && break; sleep 0.05; done
+echo -n "bare pty echo (floor), SCHED_OTHER: "
+floor=$("$bin/robuterctl" --port "$echo_pty" --bench "$n" --bench-line BO)
+echo "$floor"
+kill -INT $echo_pid; wait $echo_pid || true
+p50() { sed -n 's/.*p50 \([0-9]*\) us.*/\1/p' <<<"$1"; }
 
 run_case "robuterd --sim, 10 ms tick, pty, SCHED_OTHER" ""
 if chrt -f 70 true 2>/dev/null; then
