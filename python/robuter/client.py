@@ -168,6 +168,7 @@ class Robot:
         self.status: Deque[Status] = collections.deque(maxlen=status_keep)
         self._buf = b""
         self._checksums = False
+        self._lost = False  # a reply did not come in time: pairing unknown from then on
         self._serial = serial.Serial(port, baud, timeout=0.05)
         try:
             # Whatever an earlier client left unread is not ours (robuterd also starts a fresh
@@ -243,6 +244,11 @@ class Robot:
     def send(self, line: str) -> str:
         """Sends one line and returns its reply, as written (without terminator and checksum);
         ``error`` replies are returned, not raised."""
+        if any(c in line for c in "\r\n\x18"):
+            raise ValueError(f"one line without terminator or stop byte, got {line!r}")
+        if self._lost:
+            raise ProtocolError("a reply did not come in time: which reply answers which line is "
+                                "no longer known; open the Robot again")
         text = line
         if self._checksums:
             text = f"{line}*{crc16(line.encode('ascii')):04X}"
@@ -251,6 +257,7 @@ class Robot:
         while True:
             got = self._read_line(deadline)
             if got is None:
+                self._lost = True
                 raise ProtocolError(f"no reply to {line!r} within {self.timeout} s")
             got = self._unwrap(got)
             if got.startswith("@"):

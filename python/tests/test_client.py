@@ -136,3 +136,8 @@ def test_no_reply_is_a_protocol_error(fake):
     with Robot(peer.path, timeout=0.3) as robot:
         with pytest.raises(ProtocolError):
             robot.send("BO")
+        # A late reply would answer the next line: the client refuses to guess.
+        with pytest.raises(ProtocolError):
+            robot.send("BC")
+        with pytest.raises(ValueError):
+            robot.send("BC\rBO")
