@@ -401,6 +401,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("sonar.node_delay_ticks", c.sonar.node_delay_ticks, 0, 1000);
   b.integer("sonar.timeout_ms", c.sonar.timeout_ms, 1, 1000);
   b.integer("sonar.sound_speed_m_s", c.sonar.sound_speed_m_s, 200, 400);
+  b.string("sonar.schedule", c.sonar.schedule, {"watch", "seed"});
+  b.integer("sonar.moving_timeout_ms", c.sonar.moving_timeout_ms, 0, 1000);
 
   b.integer("emergency.mask", c.emergency.mask, 0, 7);
   b.integer("emergency.comm_limit_ticks", c.emergency.comm_limit_ticks, 1, kU32);

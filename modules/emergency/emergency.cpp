@@ -1,9 +1,12 @@
 // Emergency process glue: reads the topics, runs the gate, publishes verdict, command and table.
 #include "modules/emergency/emergency.hpp"
 
+#include <algorithm>
+
 #include "hal/api/drive.hpp"
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
+#include "modules/emergency/obstacle_check.hpp"
 
 namespace robuter {
 
@@ -194,7 +197,14 @@ void EmergencyModule::run(Kernel& k) {
     command_out_.publish(MotionCommand{d.left, d.right, d.stop, seq, d.source});
     if (executor_) k.trigger(executor_);
   }
-  if (selection_out_.current().active != d.selection) selection_out_.publish(SonarSelection{d.selection});
+  // The ring fires the watch-dog set first and most often, listening 200 mm past the largest
+  // safety distance (a reading never looks clear for lack of range): docs/SAFETY.md §5.
+  const std::uint32_t priority = (gate_.enabled() & safety::kDetectUltrasonic) ? d.state.watch & d.selection : 0;
+  const auto top = static_cast<std::int32_t>(robot_.max_speed_cm_s);
+  const std::uint32_t reach = std::max(d.state.safety_mm, safety::safety_distance_mm(top, top, cfg_.min_safety_mm, cfg_.safety_mm_per_cm_s));
+  const SonarSelection sel{d.selection, priority, priority ? reach + 200 : 0};
+  const SonarSelection& had = selection_out_.current();
+  if (had.active != sel.active || had.priority != sel.priority || had.listen_mm != sel.listen_mm) selection_out_.publish(sel);
   log_transitions(d);
   last_ = d.state;
 }

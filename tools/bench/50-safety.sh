@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Safety figures: range read to zero speed at the drive, seeded trials on the simulated firmware.
+# Safety figures, before/after the watch schedule: range read to zero speed, ring latency, stopped full-scan time.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 trials=${ROBUTER_BENCH_SAFETY_TRIALS:-200}
