@@ -8,6 +8,7 @@
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/emergency/motion_gate.hpp"
+#include "modules/emergency/ring_envelope.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter {
@@ -32,6 +33,8 @@ class EmergencyModule final : public Process {
   // Switches detections on or off (bumper 1, ultrasonic 2, communication 4).
   void set_enabled(std::uint8_t mask) { gate_.set_enabled(mask); }
   std::uint8_t enabled() const { return gate_.enabled(); }
+  // The envelope's grid and pose (tests, figures).
+  const safety::RingEnvelope& envelope() const { return envelope_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -56,6 +59,7 @@ class EmergencyModule final : public Process {
   RobotConfig robot_;
   EmergencyTuning tuning_;
   safety::MotionGate gate_;
+  safety::RingEnvelope envelope_;     // the swept envelope and its evidence grid ([emergency] rule = "envelope")
   std::array<Source, kMaxSources> sources_{};
   std::size_t source_count_ = 0;
   Reader<LinkStatus> link_;

@@ -98,8 +98,10 @@ void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits&
     if (go_to_.active()) log::info("executor: go-to cancelled by a motion request");
     end_go_to(tick, false);
   }
-  if (go_to_.active() && (e.cause != EmergencyCause::none || e.latched || e.trips != go_to_trips_)) {
-    log::info("executor: go-to cancelled by an emergency");
+  // A protective stop forgets an operator's motion, and the go-to is one (docs/SAFETY.md §13).
+  if (go_to_.active() && (e.cause != EmergencyCause::none || e.latched || e.trips != go_to_trips_ ||
+                          e.protective_stops != go_to_protective_)) {
+    log::info("executor: go-to cancelled by an emergency or a protective stop");
     end_go_to(tick, true);
   }
   if (go_to_request_.updated()) {
@@ -107,6 +109,7 @@ void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits&
     if (g.active) {
       go_to_.start(motion::PostureUnits{g.x, g.y, g.theta});
       go_to_trips_ = e.trips;
+      go_to_protective_ = e.protective_stops;
       log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
     } else {
       end_go_to(tick, true);

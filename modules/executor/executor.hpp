@@ -46,6 +46,7 @@ class ExecutorModule final : public Process {
   std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
   std::uint32_t seen_link_seq_ = 0;      // MotionRequest.seq of link_motion last seen
   std::uint32_t go_to_trips_ = 0;        // EmergencyState.trips when the go-to started
+  std::uint32_t go_to_protective_ = 0;   // EmergencyState.protective_stops when the go-to started
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
 };
 

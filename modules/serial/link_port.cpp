@@ -211,6 +211,9 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
   s.held = e.held;
   s.latched = e.latched;
   s.enabled = e.enabled;
+  s.granted_pct = e.granted_pct;
+  s.envelope = e.envelope;
+  s.protective = e.protective;
   switch (e.cause) {
     case EmergencyCause::none: s.cause = protocol::EmergencyCause::none; break;
     case EmergencyCause::bumper: s.cause = protocol::EmergencyCause::bumper; break;

@@ -144,7 +144,9 @@ std::optional<XeReply> parse_xe(const std::optional<std::string>& reply) {
   std::istringstream in(*reply);
   std::string tag;
   XeReply r;
-  if (!(in >> tag >> r.held >> r.latched >> r.cause >> r.enabled >> r.clock) || tag != "E") return std::nullopt;
+  if (!(in >> tag >> r.held >> r.latched >> r.cause >> r.enabled >> r.clock >> r.granted_pct >> r.rule >> r.protective) ||
+      tag != "E")
+    return std::nullopt;
   return r;
 }
 

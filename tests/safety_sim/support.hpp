@@ -58,12 +58,15 @@ struct BoReply {
 };
 std::optional<BoReply> parse_bo(const std::optional<std::string>& reply);
 
-// `XE` reply: E <held> <latched> <cause> <enabled> <clock>.
+// `XE` reply: E <held> <latched> <cause> <enabled> <clock> <granted-%> <rule> <protective>.
 struct XeReply {
   int held = 0, latched = 0;
   std::string cause;
   int enabled = 0;
   long long clock = 0;
+  int granted_pct = 0;   // share of the request granted, %
+  std::string rule;      // envelope or seed
+  int protective = 0;    // protective stop in force
 };
 std::optional<XeReply> parse_xe(const std::optional<std::string>& reply);
 
