@@ -99,7 +99,10 @@ GateDecision MotionGate::step(const GateInputs& in) {
       d.state.sensor = v.sensor;
     }
   }
-  // A paused automatic request waits until its envelope has been clear for the clear time.
+  // A paused automatic request waits until its envelope has been clear for the clear time; new
+  // evidence starts the clock over.
+  const bool evidence = protective_now;
+  if (evidence) clear_timing_ = false;
   if (protective_ && !protective_now && has_request_ && automatic_ && cause == EmergencyCause::none && !latched_) {
     if (held || !moving) {
       clear_timing_ = false;

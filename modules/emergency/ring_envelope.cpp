@@ -35,6 +35,7 @@ EnvelopeSettings envelope_settings(const EmergencyConfig& cfg, const RobotConfig
   e.near = robot::kRobuter.ring.blanking;
   e.step = grid_settings(cfg).cell;
   e.free_age_ticks = static_cast<std::uint64_t>(std::ceil(cfg.free_age_ms / 1000.0 / tick_s));
+  e.near_age_ticks = 4 * e.free_age_ticks;
   return e;
 }
 
@@ -47,7 +48,8 @@ RingEnvelope::RingEnvelope(const EmergencyConfig& cfg, const RobotConfig& robot,
 
 void RingEnvelope::set_tick(double tick_s) {
   tick_s_ = tick_s;
-  env_.set_free_age_ticks(envelope_settings(cfg_, robot_, tick_s).free_age_ticks);
+  const EnvelopeSettings e = envelope_settings(cfg_, robot_, tick_s);
+  env_.set_ages(e.free_age_ticks, e.near_age_ticks);
 }
 
 void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges) {
@@ -73,6 +75,7 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
     seen_[i] = read;
     const std::uint32_t bit = 1u << i;
     if (ranges.mm[i] == 0 || read < reset_tick_) continue;  // no data, or from an old frame
+    last_reading_ = std::max(last_reading_, read);
     const bool no_echo = (ranges.no_echo & bit) != 0;
     // One no-echo may be a lost echo: it certifies free space but contradicts obstacle evidence
     // only when the sensor's previous reading was a no-echo too.
@@ -101,7 +104,9 @@ EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right) {
     return v;
   }
   const double l = left / 100.0, r = right / 100.0;
-  v = env_.judge(grid_, now_, l, r, tick_);
+  // A creep through the blind near field needs a ring that is reading: a dead ring holds.
+  const bool alive = last_reading_ != 0 && tick_ - last_reading_ <= env_.settings().free_age_ticks;
+  v = env_.judge(grid_, now_, l, r, tick_, alive);
   const Twist2 t = history_.velocity();
   const double speed = t.v / tick_s_, turn = t.w / tick_s_;
   const double half_base = 0.5 * robot_.wheel_base_mm / 1000.0;

@@ -49,6 +49,7 @@ class RingEnvelope final : public EnvelopeJudge {
   std::uint64_t body_tick_ = 0;          // tick the body was last certified
   std::uint64_t reset_tick_ = 0;         // readings older than this belong to an old odometry frame
   std::uint64_t tick_ = 0;               // tick of the current activation
+  std::uint64_t last_reading_ = 0;       // read tick of the newest reading taken, ticks
   Pose2 now_;                            // the robot's pose now (extrapolated), odometry frame
   std::uint32_t resets_ = 0;             // odometry frame changes seen (count)
 };

@@ -40,7 +40,7 @@ double SweptEnvelope::fraction_for(double tau, double w, double decel) const {
 // A point under the body now is the body; within `near` of it a missing certificate is the blind
 // near field's; farther it is missing data.
 SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau,
-                                          std::uint64_t tick) const {
+                                          std::uint64_t tick, Eigen::Vector2d* where) const {
   const Pose2 pose = advance(now, v, w, tau);
   const double c = std::cos(pose.theta), sn = std::sin(pose.theta);
   const double c0 = std::cos(now.theta), s0 = std::sin(now.theta);
@@ -56,8 +56,15 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
     if (ex == 0.0 && ey == 0.0) continue;  // under the body now
     const CellState st = g.state(q, tick, s_.free_age_ticks);
     if (st == CellState::free) continue;
-    if (st == CellState::obstacle) return Meets::obstacle;
-    const Meets m = ex * ex + ey * ey <= s_.near * s_.near ? Meets::near_unknown : Meets::missing;
+    const bool near = ex * ex + ey * ey <= s_.near * s_.near;
+    // No reading can refresh a certificate inside the blind near field: an older one counts there.
+    if (st == CellState::stale && near && g.state(q, tick, s_.near_age_ticks) == CellState::free) continue;
+    if (st == CellState::obstacle) {
+      if (where) *where = o.q;
+      return Meets::obstacle;
+    }
+    const Meets m = near ? Meets::near_unknown : Meets::missing;
+    if (m > worst && where) *where = o.q;
     worst = std::max(worst, m);
   }
   return worst;
@@ -66,7 +73,7 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
 // Poses every `step` of the fastest outline point's travel; the first bad pose is refined by
 // bisection against the last good one.
 double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-                            std::uint64_t tick, Meets& what, int& poses) const {
+                            std::uint64_t tick, Meets& what, int& poses, Eigen::Vector2d* where) const {
   what = Meets::clear;
   const double speed = std::abs(v) + std::abs(w) * reach_;  // fastest outline point, m/s
   if (speed <= 1e-9 || tau_max <= 0.0) return tau_max + 1.0;
@@ -75,7 +82,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
   for (int i = 1; i <= n; ++i) {
     const double tau = tau_max * i / n;
     ++poses;
-    const Meets m = meets(g, now, v, w, tau, tick);
+    const Meets m = meets(g, now, v, w, tau, tick, where);
     if (m < level) {
       good = tau;
       continue;
@@ -99,7 +106,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
 }
 
 EnvelopeVerdict SweptEnvelope::judge(const EvidenceGrid& g, const Pose2& now, double left, double right,
-                                     std::uint64_t tick) const {
+                                     std::uint64_t tick, bool creep_ok) const {
   EnvelopeVerdict out;
   const double wmax = std::max(std::abs(left), std::abs(right));
   if (wmax <= 0.0) return out;
@@ -107,7 +114,7 @@ EnvelopeVerdict SweptEnvelope::judge(const EvidenceGrid& g, const Pose2& now, do
   const double tau_max = horizon(1.0, wmax, s_.decel);
   // Where the request first meets anything not certified free (near field included) …
   Meets what_near = Meets::clear;
-  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, tick, what_near, out.poses);
+  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, tick, what_near, out.poses, &out.where);
   if (tau_near > tau_max) return out;  // all clear: the whole request
   double k = fraction_for(tau_near, wmax, s_.decel);
   // … and where it first meets missing data or an obstacle (the near field allows a creep there).
@@ -115,11 +122,12 @@ EnvelopeVerdict SweptEnvelope::judge(const EvidenceGrid& g, const Pose2& now, do
   double tau_hard = tau_near;
   if (what_near == Meets::near_unknown) tau_hard = first(g, now, v, w, tau_max, Meets::missing, tick, what_hard, out.poses);
   const double k_hard = tau_hard > tau_max ? 1.0 : fraction_for(tau_hard, wmax, s_.decel);
-  if (what_near == Meets::near_unknown) k = std::max(k, std::min(k_hard, s_.creep / wmax));
+  const double creep = creep_ok ? s_.creep : 0.0;
+  if (what_near == Meets::near_unknown) k = std::max(k, std::min(k_hard, creep / wmax));
   out.fraction = std::clamp(k, 0.0, 1.0);
   out.missing = what_hard == Meets::missing || what_near == Meets::near_unknown;
   // Nothing may move and what stops even a creep is obstacle evidence: a protective stop.
-  const double creep_tau = horizon(std::min(1.0, s_.creep / wmax), wmax, s_.decel);
+  const double creep_tau = horizon(std::min(1.0, std::max(creep, 0.01) / wmax), wmax, s_.decel);
   out.obstacle = what_hard == Meets::obstacle && tau_hard <= creep_tau && out.fraction * wmax < 0.01;
   return out;
 }

@@ -23,6 +23,7 @@ struct EnvelopeSettings {
   double near = 0.15;            // depth of the blind near field around the body (the blanking range), m
   double step = 0.025;           // spacing of outline samples and of poses along the arc, m
   std::uint64_t free_age_ticks = 300;  // free certificates older than this do not count, ticks
+  std::uint64_t near_age_ticks = 1200; // in the blind near field, which no reading can refresh, this long, ticks
 };
 
 // The envelope's verdict on one request.
@@ -31,6 +32,7 @@ struct EnvelopeVerdict {
   bool obstacle = false;   // k = 0 because obstacle evidence lies in the creep envelope (protective stop)
   bool missing = false;    // the request's own envelope reaches free space not certified recently
   int poses = 0;           // poses examined (work done), count
+  Eigen::Vector2d where = Eigen::Vector2d::Zero();  // outline point (robot frame, m) that met the first limit
 };
 
 // Tests a request (left, right wheel speeds) against the evidence grid: the rectangle grown by the
@@ -48,8 +50,10 @@ class SweptEnvelope {
 
   // Precomputes the outline samples (the only allocation).
   explicit SweptEnvelope(const EnvelopeSettings& s);
-  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`.
-  EnvelopeVerdict judge(const EvidenceGrid& g, const Pose2& now, double left, double right, std::uint64_t tick) const;
+  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`; `creep_ok`
+  // false (the ring has not read anything within the age limit) allows no creep either.
+  EnvelopeVerdict judge(const EvidenceGrid& g, const Pose2& now, double left, double right, std::uint64_t tick,
+                        bool creep_ok = true) const;
   // Whether braking now from the motion (v m/s, w rad/s) at `decel` m/s² sweeps obstacle evidence.
   bool braking_meets_obstacle(const EvidenceGrid& g, const Pose2& now, double v, double w, double decel,
                               std::uint64_t tick) const;
@@ -58,7 +62,10 @@ class SweptEnvelope {
   // Its inverse: the largest k whose horizon is at most tau.
   double fraction_for(double tau, double w, double decel) const;
   const EnvelopeSettings& settings() const { return s_; }
-  void set_free_age_ticks(std::uint64_t ticks) { s_.free_age_ticks = ticks; }
+  void set_ages(std::uint64_t free_ticks, std::uint64_t near_ticks) {
+    s_.free_age_ticks = free_ticks;
+    s_.near_age_ticks = near_ticks;
+  }
   std::size_t outline_points() const { return outline_.size(); }
 
  private:
@@ -70,11 +77,12 @@ class SweptEnvelope {
   // What one pose meets, worst first.
   enum class Meets : std::uint8_t { clear, near_unknown, missing, obstacle };
   // The worst the leading outline meets at the pose `tau` along the arc of (v, w) from `now`.
-  Meets meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau, std::uint64_t tick) const;
+  Meets meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau, std::uint64_t tick,
+              Eigen::Vector2d* where = nullptr) const;
   // Scans the arc from 0 to tau_max; returns the (refined) first tau at which the pose meets at
   // least `level`, or a value above tau_max when none; `what` gets what it met there.
   double first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-               std::uint64_t tick, Meets& what, int& poses) const;
+               std::uint64_t tick, Meets& what, int& poses, Eigen::Vector2d* where = nullptr) const;
 
   EnvelopeSettings s_;
   std::vector<OutlinePoint> outline_;  // faces of the rectangles grown by 0, step, …, margin
