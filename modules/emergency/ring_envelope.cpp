@@ -77,10 +77,11 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
     if (ranges.mm[i] == 0 || read < reset_tick_) continue;  // no data, or from an old frame
     last_reading_ = std::max(last_reading_, read);
     const bool no_echo = (ranges.no_echo & bit) != 0;
-    // One no-echo may be a lost echo: it certifies free space but contradicts obstacle evidence
-    // only when the sensor's previous reading was a no-echo too.
-    const bool contradicts = !no_echo || (no_echo_before_ & bit) != 0;
-    no_echo_before_ = no_echo ? (no_echo_before_ | bit) : (no_echo_before_ & ~bit);
+    // A no-echo certifies free space but never contradicts obstacle evidence: it may be a lost
+    // echo, or a face too oblique to echo — the random sequences found a box whose evidence two
+    // no-echoes in a row had cleared (seed 1631, docs/SAFETY.md §13). Only an echo from farther
+    // away, or the body itself, clears evidence.
+    const bool contradicts = !no_echo;
     const Pose2 at = history_.at(read);
     const robot::SonarMount& m = robot::kRobuter.ring.sensor(s).mount;
     grid_.add_reading(read, to_world(at, robot::position(m)), at.theta + m.direction, ranges.mm[i] / 1000.0, no_echo,

@@ -44,7 +44,6 @@ class RingEnvelope final : public EnvelopeJudge {
   SweptEnvelope env_;                    // the swept body
   PoseHistory history_;                  // recent postures
   std::array<std::uint64_t, kSensors> seen_{};  // read tick of each sensor's last reading taken
-  std::uint32_t no_echo_before_ = 0;     // bit s-1: sensor s's previous reading was a no-echo
   std::uint64_t posture_tick_ = ~0ull;   // tick of the last posture taken
   std::uint64_t body_tick_ = 0;          // tick the body was last certified
   std::uint64_t reset_tick_ = 0;         // readings older than this belong to an old odometry frame

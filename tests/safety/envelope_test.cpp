@@ -51,7 +51,7 @@ TEST(EvidenceGrid, ANewerReadingThroughTheArcContradictsIt) {
   EXPECT_EQ(g.state({2.0, 0.0}, 20, kAge), CellState::obstacle);
 }
 
-TEST(EvidenceGrid, OneNoEchoDoesNotClearEvidenceTwoInARowDo) {
+TEST(EvidenceGrid, AReadingThatDoesNotContradictLeavesEvidenceOneThatDoesClearsIt) {
   EvidenceGrid g = placed_grid();
   g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
   g.add_reading(20, {0.0, 0.0}, 0.0, 4.95, true, false);  // a lost echo
@@ -59,7 +59,7 @@ TEST(EvidenceGrid, OneNoEchoDoesNotClearEvidenceTwoInARowDo) {
   EXPECT_EQ(g.state({0.5, 0.0}, 20, kAge), CellState::free);
   EXPECT_EQ(g.state({2.0, 0.0}, 20, kAge), CellState::free) << "free beyond, up to the reach";
   EXPECT_EQ(g.state({2.6, 0.0}, 20, kAge), CellState::unknown) << "past the reach";
-  g.add_reading(30, {0.0, 0.0}, 0.0, 4.95, true, true);  // the second no-echo in a row
+  g.add_reading(30, {0.0, 0.0}, 0.0, 4.95, true, true);  // allowed to contradict
   EXPECT_EQ(g.state({1.01, 0.0}, 30, kAge), CellState::free);
 }
 
