@@ -111,6 +111,7 @@ std::pair<int, int> random_speeds(sim::Rng& rng) {
 struct Totals {
   long sequences = 0, ticks = 0, commands = 0, stop_bytes = 0, no_reply = 0, noisy = 0;
   long protective_stops = 0;              // protective stops (envelope: obstacle evidence in the way)
+  double emergency_max_us = 0;            // longest activation of the emergency process, µs
   long latched_ticks = 0, moving_ticks = 0, us_on_ticks = 0, contacts_us_off = 0;
   long latched_moving = 0;                // ticks with a non-zero speed at the drive while latched
   long ungranted = 0;                     // ticks with a non-zero speed the gate no longer grants
@@ -264,6 +265,8 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   }
   ++tot.sequences;
   tot.protective_stops += fw.bb().emergency.reader().peek().protective_stops;
+  if (const auto row = fw.kernel().find("emergency"))
+    tot.emergency_max_us = std::max(tot.emergency_max_us, static_cast<double>(fw.kernel().stats(*row).max_ns) / 1000.0);
   tot.ticks += static_cast<long>(mon.ticks);
   tot.latched_ticks += static_cast<long>(mon.latched_ticks);
   tot.moving_ticks += static_cast<long>(mon.moving_ticks);
@@ -311,9 +314,10 @@ Totals run_shard(int shard, bool contacts_fail) {
   const char* causes[] = {"none", "bumper", "obstacle", "comm-loss", "stop-byte", "motion-timeout", "drive-fault", "other",
                           "heartbeat-lost", "bus-error-passive", "bus-off"};
   std::printf("shard %d/%d (rule %s): %ld sequences (%ld with sonar and odometry noise), %ld ticks (%.0f simulated s), "
-              "%ld commands + %ld stop bytes, %ld unanswered, %ld protective stops\n",
+              "%ld commands + %ld stop bytes, %ld unanswered, %ld protective stops, worst emergency activation %.0f us\n",
               shard + 1, kShards, rule_under_test().c_str(), tot.sequences, tot.noisy, tot.ticks,
-              static_cast<double>(tot.ticks) / 100.0, tot.commands, tot.stop_bytes, tot.no_reply, tot.protective_stops);
+              static_cast<double>(tot.ticks) / 100.0, tot.commands, tot.stop_bytes, tot.no_reply, tot.protective_stops,
+              tot.emergency_max_us);
   std::printf("  ticks moving %ld, latched %ld, sonar on %ld; trips %ld:", tot.moving_ticks, tot.latched_ticks,
               tot.us_on_ticks, tot.trips);
   for (std::size_t c = 1; c < tot.trips_by_cause.size(); ++c)
