@@ -72,7 +72,7 @@ ReactionResult run_trial(const ReactionTrial& t) {
   TempWorld file(toml);
   hal::SimOptions opt;
   opt.seed = t.seed;
-  SimFirmware fw(file.path(), core_config(), opt);
+  SimFirmware fw(file.path(), seed_rule_config(core_config()), opt);
   if (!fw.ok()) {
     out.error = fw.error();
     return out;

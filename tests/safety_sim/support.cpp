@@ -36,6 +36,11 @@ Config core_config() {
   return c;
 }
 
+Config seed_rule_config(Config c) {
+  c.emergency.rule = "seed";
+  return c;
+}
+
 // The same conversion as SimRobot, so clearances are measured on the body the simulator moves.
 sim::RobotGeometry geometry(const Config& cfg) {
   sim::RobotGeometry g;
