@@ -183,6 +183,7 @@ TEST(EnvelopeWall, EverySpeedNodeDelayAndAutoToggleStopsBetweenTheMarginAndTheSt
       }
     }
   }
+  // Under the virtual clock the kernel's execution times read 0: run robuterd --stats for them.
   std::printf("emergency process: worst activation %.0f us, mean %.1f us over the runs, %llu over budget; worst cap "
               "ratio %.3f\n",
               worst_us, mean_us / std::max(runs, 1), static_cast<unsigned long long>(overruns), worst_ratio);
