@@ -135,6 +135,10 @@ struct EmergencyState {
   bool clearable = false;       // latched and the cause is gone: a re-enable (XR) now clears it
   std::uint32_t safety_mm = 0;  // safety distance in force, mm (0 when stopped)
   std::int32_t sensor = 0;      // sensor that tripped (obstacle) or is awaited (held), 0 none
+  bool envelope = false;        // obstacle rule in force: true = swept envelope, false = the seed's watch sets
+  bool protective = false;      // protective stop: obstacle evidence in the envelope (resets itself, no XR)
+  std::uint8_t granted_pct = 0; // granted share of the requested speeds, % (100 = all, 0 = none or stopped)
+  std::uint32_t protective_stops = 0;  // protective stops since start (count; not emergencies, not in trips)
 };
 
 // What the executor is allowed to send to the motors: the only path to a non-zero speed.

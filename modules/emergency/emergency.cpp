@@ -25,6 +25,9 @@ safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig
   s.wheel_base_mm = robot.wheel_base_mm;
   s.stale_ticks = t.stale_ticks;
   s.hold_limit_ticks = t.hold_limit_ticks;
+  s.envelope = cfg.rule != "seed";
+  const Nanos clear = static_cast<Nanos>(cfg.protective_clear_ms) * kNanosPerMilli;
+  s.protective_clear_ticks = tick_ns > 0 ? static_cast<std::uint32_t>((clear + tick_ns - 1) / tick_ns) : 0;
   return s;
 }
 
@@ -48,6 +51,7 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
       robot_(robot),
       tuning_(tuning),
       gate_(gate_settings(cfg, robot, tuning, 10 * kNanosPerMilli)),
+      envelope_(cfg, robot, 0.01),
       link_(bb.link_status.reader()),
       servo_(bb.servo_request.reader()),
       settings_(bb.us_settings.reader()),
@@ -83,6 +87,7 @@ bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionReques
 bool EmergencyModule::init(Kernel& k) {
   gate_ = safety::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
   gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
+  envelope_.set_tick(static_cast<double>(k.tick_ns()) / 1e9);
   for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen_seq = sources_[i].reader.peek().seq;
   seen_stop_ = link_.peek().stop_seq;
   seen_reenable_ = link_.peek().reenable_seq;
@@ -138,6 +143,7 @@ void EmergencyModule::take_requests(safety::GateInputs& in) {
     in.left = r.left;
     in.right = r.right;
     in.source = s.source;
+    in.automatic = safety::automatic(s.source);
   }
 }
 
@@ -175,6 +181,10 @@ void EmergencyModule::run(Kernel& k) {
   in.servo_on = posture.servo;
   in.at_rest = at_rest(posture);
   in.ranges = &ranges_.peek();
+  if (gate_.settings().envelope) {
+    envelope_.observe(in.tick, posture, *in.ranges);
+    in.envelope = &envelope_;
+  }
   if (settings_.generation() > 0) {
     in.user_table = us.user_table;
     in.auto_toggle = us.auto_toggle;
@@ -184,6 +194,7 @@ void EmergencyModule::run(Kernel& k) {
 
   const safety::GateDecision d = gate_.step(in);
   if (d.tripped) arbiter_.emergency_stop();
+  else if (d.protective_started) arbiter_.protective_stop();
   state_out_.publish(d.state);
   MotionAuthority a = arbiter_.authority();
   a.detections = gate_.enabled();
@@ -231,6 +242,8 @@ void EmergencyModule::log_transitions(const safety::GateDecision& d) {
   if (d.cleared) log::info("emergency: re-enabled");
   if (s.held && !last_.held) log::info("emergency: motion held for data of sensor {}", s.sensor);
   if (d.hold_expired) log::warn("emergency: held motion forgotten (no sensor data)");
+  if (d.protective_started) log::info("emergency: protective stop (obstacle in the envelope)");
+  if (d.resumed) log::info("emergency: automatic motion resumed, envelope clear");
 }
 
 }  // namespace robuter

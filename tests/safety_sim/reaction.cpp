@@ -85,7 +85,7 @@ ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
   TempWorld file(toml);
   hal::SimOptions opt;
   opt.seed = t.seed;
-  SimFirmware fw(file.path(), cfg, opt);
+  SimFirmware fw(file.path(), seed_rule_config(cfg), opt);
   if (!fw.ok()) {
     out.error = fw.error();
     return out;
