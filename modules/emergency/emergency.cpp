@@ -210,7 +210,7 @@ void EmergencyModule::run(Kernel& k) {
   }
   // The ring fires the watch-dog set first and most often, listening 200 mm past the largest
   // safety distance (a reading never looks clear for lack of range): docs/SAFETY.md §5.
-  const std::uint32_t priority = (gate_.enabled() & safety::kDetectUltrasonic) ? d.state.watch & d.selection : 0;
+  const std::uint32_t priority = (gate_.enabled() & kDetectUltrasonic) ? d.state.watch & d.selection : 0;
   const auto top = static_cast<std::int32_t>(robot_.max_speed_cm_s);
   const std::uint32_t reach = std::max(d.state.safety_mm, safety::safety_distance_mm(top, top, cfg_.min_safety_mm, cfg_.safety_mm_per_cm_s));
   const SonarSelection sel{d.selection, priority, priority ? reach + 200 : 0};

@@ -70,7 +70,7 @@ struct Approach {
 // repeating the AM until a protective stop leaves the robot at rest facing the wall.
 Approach approach(int speed, int ud, bool uu, bool check_cap) {
   Approach out;
-  const Config cfg = core_config();
+  const Config cfg = envelope_rule_config(core_config());
   const StopModel model(cfg);
   SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", cfg);
   EXPECT_TRUE(fw.ok()) << fw.error();
@@ -147,7 +147,7 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
 // contact, clearance at rest between the margin and margin + stopping distance + 100 mm, the
 // granted speed ≥ 90 % of the analytic cap wherever the ring's data is fresh (UD 3 and 10).
 TEST(EnvelopeWall, EverySpeedNodeDelayAndAutoToggleStopsBetweenTheMarginAndTheStoppingDistance) {
-  const Config cfg = core_config();
+  const Config cfg = envelope_rule_config(core_config());
   const StopModel model(cfg);
   std::printf("speed  UD    Uu  clearance at rest  min clearance  time to rest  protective  cap ratio (samples)\n");
   double worst_ratio = 1e9, worst_us = 0, mean_us = 0;
@@ -194,7 +194,7 @@ TEST(EnvelopeWall, EverySpeedNodeDelayAndAutoToggleStopsBetweenTheMarginAndTheSt
 // Not a toy: 30 cm/s down the middle of a 1.2 m corridor (0.25 m each side of the body) keeps a
 // mean of at least 27 cm/s over 4 m once past the start's blind near field, without a stop.
 TEST(EnvelopeCorridor, ThirtyCmPerSecondDownA1_2mCorridorKeepsItsSpeed) {
-  const Config cfg = core_config();
+  const Config cfg = envelope_rule_config(core_config());
   SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/corridor.toml", cfg);
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;

@@ -41,6 +41,11 @@ Config seed_rule_config(Config c) {
   return c;
 }
 
+Config envelope_rule_config(Config c) {
+  c.emergency.rule = "envelope";
+  return c;
+}
+
 // The same conversion as SimRobot, so clearances are measured on the body the simulator moves.
 sim::RobotGeometry geometry(const Config& cfg) {
   sim::RobotGeometry g;

@@ -40,6 +40,8 @@ Config core_config();
 // the acceptance tests of §12 that measure that rule (wall stop, reaction, watch sets, obstacle
 // trips, auto-toggle) run on it; the envelope (§13) has its own.
 Config seed_rule_config(Config c = Config{});
+// The same configuration on the envelope's obstacle rule (docs/SAFETY.md §13; not yet the default).
+Config envelope_rule_config(Config c = Config{});
 
 // The simulator's body geometry for a firmware configuration (as SimRobot builds it).
 sim::RobotGeometry geometry(const Config& cfg = Config{});
