@@ -53,6 +53,7 @@ struct Posture {
   std::int32_t right = 0;       // cm/s
   std::uint64_t tick = 0;       // tick of the odometry read
   hal::DriveHealth drive_health = hal::DriveHealth::ok;  // the drive's health as its backend sees it
+  std::uint32_t command_seq = 0;  // MotionCommand.seq applied by this run (the link's read-your-writes)
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).

@@ -11,6 +11,9 @@ class StdioLink final : public FdStream {
   const char* name() const override { return "stdio"; }
   // Standard input does not come back after EOF.
   bool reopen() override { return connected_; }
+  // Standard output stays writable after standard input's EOF: the replies to lines read before
+  // it (some may wait for a command's owner to run) still go out.
+  IoResult write(std::span<const std::uint8_t> in) override;
 };
 
 }  // namespace robuter::hal

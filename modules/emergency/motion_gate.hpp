@@ -41,7 +41,7 @@ struct GateInputs {
   bool stop_byte = false;                    // the link's immediate stop byte arrived
   bool reenable = false;                     // a re-enable (XR) arrived
   std::uint32_t bumpers = 0;                 // bumpers pressed, bit per bumper
-  std::uint64_t last_message_tick = 0;       // tick of the link's last well-formed message
+  std::uint64_t last_message_tick = 0;       // tick of the link's last complete line
   bool drive_fault = false;                  // the drive reports a fault or went silent
   EmergencyCause drive_cause = EmergencyCause::none;  // which (heartbeat, bus…); none = drive_fault
   bool servo_on = false;                     // the drive's servo is on (executor's posture)

@@ -41,7 +41,7 @@ bool ExecutorModule::init(Kernel& k) {
   go_to_request_.copy();
   applied_seq_ = command_.peek().seq;
   const motion::PostureUnits p = motion::to_posture(drive_.odometry());
-  posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), drive_.health()});
+  posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), drive_.health(), applied_seq_});
   return true;
 }
 
@@ -144,6 +144,7 @@ void ExecutorModule::run(Kernel& k) {
   drive_.commanded(p.left, p.right);
   p.tick = tick;
   p.drive_health = health;
+  p.command_seq = applied_seq_;
   posture_out_.publish(p);
 }
 

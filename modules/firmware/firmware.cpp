@@ -252,6 +252,7 @@ std::optional<std::string> Firmware::setup() {
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
+  serial->set_executor(executor.get());  // read-your-writes: ASN, AC then BO
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"can", can_},
                                   {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},

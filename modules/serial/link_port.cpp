@@ -25,11 +25,69 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
       demo_status_(bb.demo_status.reader()),
-      cfg_(cfg) {}
+      cfg_(cfg),
+      command_(bb.motion_command.reader()) {}
 
-void LinkPort::wake_emergency() const {
-  if (kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
+// An owner without a row in this run's table (`modules.enabled`) is never waited for.
+void LinkPort::attach(Kernel& k) {
+  kernel_ = &k;
+  emergency_runs_ = executor_runs_ = false;
+  for (std::size_t i = 0; i < k.process_count(); ++i) {
+    emergency_runs_ = emergency_runs_ || (emergency_process_ && k.row(i).process == emergency_process_);
+    executor_runs_ = executor_runs_ || (executor_process_ && k.row(i).process == executor_process_);
+  }
 }
+
+// Generations only grow; the owners publish on every run (state, posture), so "changed since
+// the start of the wait" is "ran since". The executor must also have applied the emergency
+// module's latest command (which it triggers the executor for): with the default priorities it
+// runs right after the emergency module, but a refused trigger or another table may delay it.
+// The executor is run for the wait only when the request is its own (AS, AC): an extra posture
+// sample changes nothing else, but the emergency module's at-rest test compares postures of
+// different ticks, so it is not asked for without need.
+bool LinkPort::waiting() {
+  if (!waiting_) return false;
+  if (emergency_ran() && executor_done()) {
+    waiting_ = false;
+    return false;
+  }
+  trigger_owners();
+  return true;
+}
+
+bool LinkPort::emergency_ran() const { return !emergency_runs_ || emergency_.generation() != wait_emergency_gen_; }
+
+bool LinkPort::executor_done() const {
+  if (!executor_runs_) return true;
+  if (wait_executor_ && posture_.generation() == wait_posture_gen_) return false;
+  return posture_.peek().command_seq == command_.peek().seq;
+}
+
+// The owners must run after the latest request: a new one restarts the wait from now.
+void LinkPort::await_owners(bool executor) {
+  if (!waiting_) wait_executor_ = false;
+  waiting_ = true;
+  wait_executor_ = wait_executor_ || executor;
+  wait_emergency_gen_ = emergency_.generation();
+  wait_posture_gen_ = posture_.generation();
+  trigger_owners();
+}
+
+void LinkPort::trigger_owners() const {
+  if (!kernel_) return;
+  if (!emergency_ran()) kernel_->trigger(emergency_process_);
+  if (executor_runs_ && !executor_done()) kernel_->trigger(executor_process_);
+}
+
+bool LinkPort::revive_link() {
+  const std::uint64_t t = tick(), last = w_.status.current().last_message_tick;
+  if (!(t > last && t - last > cfg_.emergency.comm_limit_ticks)) return false;
+  message_received();
+  await_owners(false);
+  return true;
+}
+
+void LinkPort::wake_emergency() { await_owners(false); }
 
 void LinkPort::act(OperatorAction a) {
   const std::uint64_t t = tick();
@@ -110,6 +168,7 @@ PortResult LinkPort::set_servo(bool on) noexcept {
     ++s.seq;
   });
   act(OperatorAction::servo);
+  await_owners(true);  // the executor switches the servo: BO after the ack reads it
   return PortResult::ok;
 }
 
@@ -130,6 +189,7 @@ PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
     o.theta = p.theta;
     ++o.seq;
   });
+  await_owners(true);  // the executor sets the odometry: BO after the ack reads it
   return PortResult::ok;
 }
 

@@ -29,10 +29,24 @@ struct LinkWriters {
 class LinkPort final : public protocol::RobotPort {
  public:
   LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg);
-  // The kernel, for the clock and XK (set at init).
-  void attach(Kernel& k) { kernel_ = &k; }
+  // The kernel, for the clock, XK and the owners' runs (set at init, after the table).
+  void attach(Kernel& k);
   // The emergency module, triggered on a stop byte or a motion request so it acts this tick.
   void set_emergency(Process* p) { emergency_process_ = p; }
+  // The executor, run before the next line after a command it acts on (ASN, AC, …).
+  void set_executor(Process* p) { executor_process_ = p; }
+
+  // Read-your-writes (docs/PROTOCOL.md, "What `ack` means"). A request handed to another
+  // module (the emergency module, the executor) starts a wait: both are triggered, and no
+  // further line is handled, on any link, until both have run since — the executor after the
+  // emergency module's latest command. True while that wait lasts; re-triggers the owners that
+  // have not run yet (a trigger the kernel refused for its per-tick bound is asked again).
+  bool waiting();
+  // Before the line ending with the next byte is handled: when the link has been silent past
+  // the communication limit, stamps it now and starts a wait, so that the emergency module
+  // judges that line (XR after a communication-loss trip) on a link it knows is alive again.
+  // True when the caller must stop before that byte.
+  bool revive_link();
   // True once AX was accepted: the serial module flushes the ack, then stops the kernel.
   bool shutdown_requested() const { return shutdown_; }
 
@@ -102,8 +116,26 @@ class LinkPort final : public protocol::RobotPort {
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
+  Process* executor_process_ = nullptr;    // triggered on servo and odometry requests
+  bool emergency_runs_ = false;            // the emergency module has a row in the kernel's table
+  bool executor_runs_ = false;             // the executor has a row
+  Reader<MotionCommand> command_;          // the emergency's command, to know the executor applied it
+  // Read-your-writes: a wait for the owners, and their topics' generations when it began.
+  bool waiting_ = false;
+  bool wait_executor_ = false;             // the wait needs a run of the executor itself (AS, AC)
+  std::uint64_t wait_emergency_gen_ = 0;   // EmergencyState generation at the start of the wait
+  std::uint64_t wait_posture_gen_ = 0;     // Posture generation at the start of the wait
+  // Starts a wait (from now) for the emergency module, and for the executor's own run when
+  // `executor`; triggers them.
+  void await_owners(bool executor);
+  // The emergency module has run since the wait began (or has no row).
+  bool emergency_ran() const;
+  // The executor has run if the wait needs it, and has applied the emergency's latest command.
+  bool executor_done() const;
+  // Triggers the owners of the current wait that have not done their part yet.
+  void trigger_owners() const;
   // Asks the emergency module to judge a new request in this tick.
-  void wake_emergency() const;
+  void wake_emergency();
   // Hands an operator's action to the motion arbiter (in order) and wakes it.
   void act(OperatorAction a);
   bool shutdown_ = false;                  // AX accepted

@@ -1,6 +1,9 @@
 // Link service: attach and re-attach clients, feed bytes to the codec, queue and flush replies.
 #include "modules/serial/serial_module.hpp"
 
+#include <algorithm>
+#include <cstring>
+
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 
@@ -51,6 +54,7 @@ void SerialModule::note_closed(Link& l) {
 }
 
 void SerialModule::start_session(Link& l) {
+  clear_backlog(l);
   l.codec.reset();
   l.out.clear();
   l.stream->discard_unread_output();
@@ -59,7 +63,10 @@ void SerialModule::start_session(Link& l) {
   log::info("serial: client attached on {}", l.stream->name());
 }
 
+// What the leaving client wrote is handled first, without waiting: nobody reads its replies.
 void SerialModule::end_session(Link& l) {
+  handle(l, true);
+  clear_backlog(l);
   l.codec.reset();
   l.out.clear();
   l.stream->discard_unread_output();
@@ -71,9 +78,16 @@ void SerialModule::end_session(Link& l) {
   }
 }
 
-void SerialModule::feed(Link& l, std::span<const std::uint8_t> bytes) {
+std::size_t SerialModule::feed(Link& l, std::span<const std::uint8_t> bytes, bool all) {
   std::uint64_t dropped = 0;
-  for (std::size_t i = 0; i < bytes.size(); ++i) {
+  std::size_t i = 0;
+  for (; i < bytes.size(); ++i) {
+    const std::uint8_t b = bytes[i];
+    // Read-your-writes: the next line waits until the owners of the last command have run; a
+    // line on a link silent past the communication limit waits for the emergency module to see
+    // it alive. A stop byte further on is not kept waiting: what comes before it is handled now.
+    if (!all && l.stops == 0 && (port_.waiting() || (l.codec.ends_line(b) && port_.revive_link()))) break;
+    if (b == protocol::kStopByte) --l.stops;
     const auto one = bytes.subspan(i, 1);
     if (l.out.free() >= protocol::kReplyCapacity) {
       l.codec.feed(one, port_, [&](std::string_view reply) { l.out.push(reply); });
@@ -86,13 +100,36 @@ void SerialModule::feed(Link& l, std::span<const std::uint8_t> bytes) {
       log::info("serial: {} reads its replies again ({} lines were dropped unexecuted)", l.stream->name(), l.discarded);
       l.discarded = 0;
     }
-    return;
+    return i;
   }
   if (l.discarded == 0)
     log::warn("serial: {}: client does not read its replies ({} bytes queued): lines dropped unexecuted",
               l.stream->name(), l.out.size());
   l.discarded += dropped;
   writers_.status.modify([&](LinkStatus& st) { st.lines_discarded += dropped; });
+  return i;
+}
+
+void SerialModule::handle(Link& l, bool all) {
+  if (l.head == l.tail) return;
+  l.head += feed(l, std::span<const std::uint8_t>(l.backlog.data() + l.head, l.tail - l.head), all);
+  if (l.head == l.tail) l.head = l.tail = 0;
+}
+
+// The backlog is bounded: when bytes read do not fit behind lines still waiting, those lines
+// are handled now, without waiting (a client that pipelines more than kBacklogBytes behind
+// commands gets its replies in order, but not each query after the command before it).
+void SerialModule::take(Link& l, std::span<const std::uint8_t> bytes) {
+  if (l.backlog.size() - l.tail < bytes.size() && l.head > 0) {
+    std::memmove(l.backlog.data(), l.backlog.data() + l.head, l.tail - l.head);
+    l.tail -= l.head;
+    l.head = 0;
+  }
+  if (l.backlog.size() - l.tail < bytes.size()) handle(l, true);
+  std::copy(bytes.begin(), bytes.end(), l.backlog.begin() + static_cast<std::ptrdiff_t>(l.tail));
+  l.tail += bytes.size();
+  l.stops += static_cast<std::size_t>(std::count(bytes.begin(), bytes.end(), protocol::kStopByte));
+  handle(l, false);
 }
 
 bool SerialModule::pump(Kernel& k, Link& l) {
@@ -106,7 +143,7 @@ bool SerialModule::pump(Kernel& k, Link& l) {
       return false;
     }
     if (r.bytes == 0) break;
-    feed(l, std::span<const std::uint8_t>(l.in.data(), r.bytes));
+    take(l, std::span<const std::uint8_t>(l.in.data(), r.bytes));
     flush(l);
   }
   return true;
@@ -122,6 +159,13 @@ void SerialModule::serve(Kernel& k, Link& l) {
       k.unwatch_fd(l.watched_fd);
       l.watched_fd = -1;
     }
+    // Lines read before the end (standard input's EOF) still wait for their owners, in order;
+    // their replies go out where the transport still writes (standard output).
+    if (l.head != l.tail) {
+      handle(l, false);
+      flush(l);
+      if (l.head != l.tail) return;
+    }
     if (!s.reopen()) return;  // cheap for a pty; a serial device is looked for off this path
     if (l.lost_device) {
       log::info("serial: {} is back", s.name());
@@ -130,6 +174,7 @@ void SerialModule::serve(Kernel& k, Link& l) {
     } else {
       log::info("serial: client attached on {}", s.name());
     }
+    clear_backlog(l);
     l.codec.reset();
     l.out.clear();
   }
@@ -147,17 +192,29 @@ void SerialModule::serve(Kernel& k, Link& l) {
     }
   }
   flush(l);
+  handle(l, false);  // lines that waited for an owner, before the bytes read now
+  flush(l);
   if (!pump(k, l)) return;
   if (const auto line = l.codec.poll_stream(port_); line && l.out.free() >= line->size()) l.out.push(*line);
   flush(l);
 }
 
+// Links take turns at being served first, so one that pipelines commands (each waiting for
+// its owner) cannot keep the others' lines waiting for long.
 void SerialModule::run(Kernel& k) {
   std::uint32_t open = 0;
-  for (std::size_t i = 0; i < link_count_; ++i) {
-    serve(k, links_[i]);
-    if (links_[i].stream->client_present()) ++open;
+  bool backlog = false;
+  for (std::size_t n = 0; n < link_count_; ++n) {
+    Link& l = links_[(first_link_ + n) % link_count_];
+    serve(k, l);
+    if (l.stream->client_present()) ++open;
+    backlog = backlog || l.head != l.tail;
   }
+  if (link_count_ > 0) first_link_ = (first_link_ + 1) % link_count_;
+  // Lines wait for the owners of a command: run again once they have (they are triggered and
+  // run first, by priority), within the kernel's bound on triggered runs; else at the next
+  // period or bytes.
+  if (backlog) k.trigger(this);
   if (open != writers_.status.current().links_open) writers_.status.modify([&](LinkStatus& s) { s.links_open = open; });
   if (port_.shutdown_requested()) {
     for (std::size_t i = 0; i < link_count_; ++i) flush(links_[i]);  // the `ack` goes out first

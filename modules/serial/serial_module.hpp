@@ -22,11 +22,15 @@ class SerialModule final : public Process {
   static constexpr std::size_t kReadChunk = 512;        // bytes read per read() call
   static constexpr std::size_t kMaxReadsPerRun = 256;   // read() calls per link per activation (128 kB: more
                                                         // than a pty or a serial driver buffers)
+  static constexpr std::size_t kBacklogBytes = 16 * 1024;  // bytes read and scanned but not yet handled per
+                                                           // link: lines waiting for a command's owner to run
 
   // `links` must outlive the module; at most kMaxLinks are used.
   SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links);
   // The emergency module, woken in the same tick by a stop byte or a motion request.
   void set_emergency(Process* p) { port_.set_emergency(p); }
+  // The executor, run before the next line after a servo or odometry request (read-your-writes).
+  void set_executor(Process* p) { port_.set_executor(p); }
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
   void close(Kernel& k) override;
@@ -41,15 +45,27 @@ class SerialModule final : public Process {
     int watched_event_fd = -1;                  // the stream's client-event descriptor, watched, -1 none
     bool lost_device = false;                   // the device went away (not a client leaving)
     std::uint64_t discarded = 0;                // lines dropped unexecuted since the client stopped reading
+    std::array<std::uint8_t, kBacklogBytes> backlog{};  // bytes read, not yet handled: [head, tail)
+    std::size_t head = 0;
+    std::size_t tail = 0;
+    std::size_t stops = 0;                      // stop bytes in the backlog
   };
 
   // Serves one link: attach/detach, client sessions, flush, read, answer, flush.
   void serve(Kernel& k, Link& l);
   // Reads every byte waiting (bounded) and feeds it; false when the stream closed.
   bool pump(Kernel& k, Link& l);
-  // Feeds bytes read: lines are executed while a whole reply still fits the output ring, and
-  // dropped unexecuted (counted) when it does not; the stop byte acts in both cases.
-  void feed(Link& l, std::span<const std::uint8_t> bytes);
+  // Feeds bytes in order: lines are executed while a whole reply still fits the output ring, and
+  // dropped unexecuted (counted) when it does not; the stop byte acts in both cases. Unless
+  // `all`, stops before a line that must wait for the owners of an earlier command (a stop byte
+  // further on lifts the wait up to it). Returns how many bytes were fed.
+  std::size_t feed(Link& l, std::span<const std::uint8_t> bytes, bool all);
+  // Appends bytes read to the link's backlog (its stop bytes counted) and handles what can be.
+  void take(Link& l, std::span<const std::uint8_t> bytes);
+  // Handles the backlog as far as it can now; `all`: to the end, without waiting.
+  void handle(Link& l, bool all);
+  // Drops the backlog (a new session, a device back).
+  static void clear_backlog(Link& l) { l.head = l.tail = l.stops = 0; }
   // A new client session: previous replies, half line and settings are dropped.
   void start_session(Link& l);
   // The last client left: its unsent replies go; the robot stops if so configured.
@@ -63,6 +79,7 @@ class SerialModule final : public Process {
   LinkPort port_;             // the protocol's view of the robot
   std::array<Link, kMaxLinks> links_{};
   std::size_t link_count_ = 0;
+  std::size_t first_link_ = 0;            // the link served first, rotated every activation
   bool stop_when_clients_leave_ = false;  // [links] stop_when_clients_leave
 };
 

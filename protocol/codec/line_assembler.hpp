@@ -55,6 +55,8 @@ class LineAssembler {
 
   // Drops any partial line (e.g. when the link is reopened).
   void reset() noexcept;
+  // True when `b`, fed next, would end a line (CR, or an LF that does not follow a CR).
+  bool ends_line(std::uint8_t b) const noexcept { return b == 13 || (b == 10 && !after_cr_); }
   // Bytes of the unfinished line so far (saturates at MAX_LENGTH + 1).
   std::size_t pending() const noexcept { return count_; }
 

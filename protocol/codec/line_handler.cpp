@@ -1,4 +1,5 @@
-// The per-line path: checksum check (when on), decode, stamp the watchdog, run the handler.
+// The per-line path: checksum check (when on), decode, run the handler. (The communication
+// watchdog is stamped by the codec for every complete line, before this.)
 #include "protocol/codec/line_handler.hpp"
 
 #include "protocol/codec/checksum.hpp"
@@ -6,8 +7,6 @@
 
 namespace robuter::protocol {
 
-// Only lines that decode to a command count as a message for the communication watchdog, so
-// noise on a dead link does not keep the robot believing its client is alive.
 std::string_view handle_line(std::string_view line, RobotPort& port, ReplyWriter& out) noexcept {
   out.begin();
   std::string_view body = line;
@@ -20,7 +19,6 @@ std::string_view handle_line(std::string_view line, RobotPort& port, ReplyWriter
     out.error(d.error);
     return out.finish();
   }
-  port.message_received();
   d.row->handler(d.command, port, out);
   return out.finish();
 }

@@ -24,13 +24,21 @@ class LinkCodec {
 
   // For every event in `bytes`: a line → its reply to `sink(std::string_view)`; a framing
   // error → `error` to the sink; the stop byte → port.immediate_stop() and nothing written.
+  // Every complete line, valid or not, first stamps the communication watchdog
+  // (port.message_received(), as the seed's serial.c did).
   // Each reply view is valid until the sink returns; write it out (or copy it) there.
   template <class Sink>
   void feed(std::span<const std::uint8_t> bytes, RobotPort& port, Sink&& sink) {
     assembler_.feed(bytes, [&](const FrameEvent& event) {
       switch (event.kind) {
-        case FrameEvent::Kind::line: sink(handle_line(event.line, port, writer_)); break;
-        case FrameEvent::Kind::error: sink(reply_error(event.error, writer_)); break;
+        case FrameEvent::Kind::line:
+          port.message_received();
+          sink(handle_line(event.line, port, writer_));
+          break;
+        case FrameEvent::Kind::error:
+          port.message_received();
+          sink(reply_error(event.error, writer_));
+          break;
         case FrameEvent::Kind::stop: port.immediate_stop(); break;
         case FrameEvent::Kind::none: break;
       }
@@ -38,14 +46,18 @@ class LinkCodec {
   }
 
   // Frames `bytes` without executing anything: the stop byte still calls
-  // port.immediate_stop(); every line (or framing error) completed is dropped unanswered.
-  // Returns how many were dropped. For a link whose replies cannot be queued (docs/PROTOCOL.md:
-  // a client that does not read).
+  // port.immediate_stop(); every line (or framing error) completed is dropped unanswered (it
+  // still stamps the watchdog: the client is there). Returns how many were dropped. For a link
+  // whose replies cannot be queued (docs/PROTOCOL.md: a client that does not read).
   std::size_t discard(std::span<const std::uint8_t> bytes, RobotPort& port) {
     std::size_t dropped = 0;
     assembler_.feed(bytes, [&](const FrameEvent& event) {
-      if (event.kind == FrameEvent::Kind::stop) port.immediate_stop();
-      else if (event.kind != FrameEvent::Kind::none) ++dropped;
+      if (event.kind == FrameEvent::Kind::stop) {
+        port.immediate_stop();
+      } else if (event.kind != FrameEvent::Kind::none) {
+        port.message_received();
+        ++dropped;
+      }
     });
     return dropped;
   }
@@ -59,6 +71,8 @@ class LinkCodec {
   const SessionState& session() const noexcept { return session_; }
   // Drops a partial line and returns the session to seed behaviour (link reopened).
   void reset() noexcept;
+  // True when byte `b`, fed next, would complete a line (its reply or error).
+  bool ends_line(std::uint8_t b) const noexcept { return assembler_.ends_line(b); }
 
  private:
   SessionState session_{};               // options switched on by the client

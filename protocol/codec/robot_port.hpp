@@ -47,7 +47,8 @@ class RobotPort {
   virtual PortResult set_auto_toggle(bool on) noexcept = 0;                    // Uu
 
   // ---- link events ----
-  // A line decoded to a known command arrived: stamp it for the communication-loss watchdog.
+  // A complete line arrived (valid or not, as the seed): stamp it for the communication-loss
+  // watchdog. Called by the codec before the line is handled.
   virtual void message_received() noexcept = 0;
   // The immediate stop byte (0x18) arrived: stop the robot now; no reply is written.
   virtual void immediate_stop() noexcept = 0;

@@ -185,12 +185,18 @@ TEST_F(Messages, PortRefusalsBecomeError) {
   }
 }
 
-TEST_F(Messages, OnlyDecodedLinesStampTheWatchdog) {
+// As the seed's serial.c: every complete line, valid or not (not the stop byte, not a half line).
+TEST_F(Messages, EveryCompleteLineStampsTheWatchdog) {
   h.ask("BC");
   h.ask("Zz");
   h.ask("AM 1");
   h.ask("AM 1 1");
-  EXPECT_EQ(h.port.messages, 2);
+  h.ask("A");
+  EXPECT_EQ(h.port.messages, 5);
+  h.feed("\x18" "BO");
+  EXPECT_EQ(h.port.messages, 5);
+  h.feed(std::string_view("\x00\r", 2));
+  EXPECT_EQ(h.port.messages, 6);
 }
 
 TEST_F(Messages, WorkedExchangeOfTheSpec) {

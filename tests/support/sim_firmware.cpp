@@ -105,11 +105,21 @@ void SimFirmware::send_raw(std::string_view bytes) {
 }
 
 std::optional<std::string> SimFirmware::ask(const std::string& line, int max_ticks) {
-  send_raw(line + "\r");
+  auto r = exchange(line + "\r", 1, max_ticks);
+  if (r.empty()) return std::nullopt;
+  return r.front();
+}
+
+std::vector<std::string> SimFirmware::exchange(std::string_view bytes, std::size_t replies, int max_ticks) {
+  std::vector<std::string> out;
+  send_raw(bytes);
   for (int i = 0; i <= max_ticks; ++i) {
     char buf[4096];
-    const ssize_t n = ::read(client_, buf, sizeof buf);
-    if (n > 0) pending_.append(buf, static_cast<std::size_t>(n));
+    for (;;) {
+      const ssize_t n = ::read(client_, buf, sizeof buf);
+      if (n <= 0) break;
+      pending_.append(buf, static_cast<std::size_t>(n));
+    }
     for (;;) {
       const auto cr = pending_.find('\r');
       if (cr == std::string::npos) break;
@@ -119,11 +129,12 @@ std::optional<std::string> SimFirmware::ask(const std::string& line, int max_tic
         unsolicited_ += reply + "\n";
         continue;
       }
-      return reply;
+      out.push_back(std::move(reply));
+      if (out.size() == replies) return out;
     }
     step();
   }
-  return std::nullopt;
+  return out;
 }
 
 // Why dup2 over the master: the emulator's PtyLink keeps its descriptor number, but the pty's

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "modules/firmware/firmware.hpp"
 
@@ -33,6 +34,9 @@ class SimFirmware {
 
   // Sends `line` and steps the kernel until its reply arrives (at most `max_ticks`).
   std::optional<std::string> ask(const std::string& line, int max_ticks = 50);
+  // Writes `bytes` in one write (pipelined lines, stop bytes…) and steps the kernel until
+  // `replies` reply lines arrived (at most `max_ticks`); returns those that did, in order.
+  std::vector<std::string> exchange(std::string_view bytes, std::size_t replies, int max_ticks = 50);
   // Writes raw bytes to the link (no terminator added).
   void send_raw(std::string_view bytes);
   // Reads what the firmware wrote and counts complete lines without keeping them (no
