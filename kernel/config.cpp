@@ -393,6 +393,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("robot.wheel_base_mm", c.robot.wheel_base_mm, 100, 10'000);
   b.integer("robot.max_speed_cm_s", c.robot.max_speed_cm_s, 1, 500);
   b.integer("robot.max_accel_cm_s2", c.robot.max_accel_cm_s2, 1, 10'000);
+  b.integer("robot.max_decel_cm_s2", c.robot.max_decel_cm_s2, 1, 10'000);
 
   if (c.robot.axle_to_front_mm >= c.robot.length_mm)
     return b.fail_key("robot.axle_to_front_mm", fmt::format("{} must be shorter than robot.length_mm {}",
@@ -401,6 +402,8 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("sonar.node_delay_ticks", c.sonar.node_delay_ticks, 0, 1000);
   b.integer("sonar.timeout_ms", c.sonar.timeout_ms, 1, 1000);
   b.integer("sonar.sound_speed_m_s", c.sonar.sound_speed_m_s, 200, 400);
+  b.string("sonar.schedule", c.sonar.schedule, {"watch", "seed"});
+  b.integer("sonar.moving_timeout_ms", c.sonar.moving_timeout_ms, 0, 1000);
 
   b.integer("emergency.mask", c.emergency.mask, 0, 7);
   b.integer("emergency.comm_limit_ticks", c.emergency.comm_limit_ticks, 1, kU32);
@@ -409,6 +412,12 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("emergency.motion_timeout_ms", c.emergency.motion_timeout_ms, 0, 3'600'000);
   b.boolean("emergency.auto_toggle", c.emergency.auto_toggle);
   b.boolean("emergency.latch", c.emergency.latch);
+  b.string("emergency.rule", c.emergency.rule, {"envelope", "seed"});
+  b.integer("emergency.margin_mm", c.emergency.margin_mm, 0, 500);
+  b.integer("emergency.creep_cm_s", c.emergency.creep_cm_s, 0, 50);
+  b.integer("emergency.free_age_ms", c.emergency.free_age_ms, 10, 600'000);
+  b.integer("emergency.protective_clear_ms", c.emergency.protective_clear_ms, 0, 600'000);
+  b.integer("emergency.reaction_ms", c.emergency.reaction_ms, 0, 10'000);
 
   b.boolean("permissions.pass_through", c.permissions.pass_through);
   b.strings("permissions.pass_through_allow", c.permissions.pass_through_allow);

@@ -43,6 +43,7 @@ struct RobotConfig {
   std::uint32_t wheel_base_mm = robot::mm_u(robot::kRobuter.wheels.base);     // distance between the drive wheels (DBW), mm
   std::uint32_t max_speed_cm_s = robot::mm_u(robot::kRobuter.wheels.max_speed) / 10;  // largest wheel speed accepted, cm/s
   std::uint32_t max_accel_cm_s2 = robot::mm_u(robot::kRobuter.wheels.max_accel) / 10; // wheel acceleration limit, cm/s²
+  std::uint32_t max_decel_cm_s2 = robot::mm_u(robot::kRobuter.wheels.max_decel) / 10; // braking deceleration, cm/s²
 };
 
 // Ultrasonic ring timing (us.c).
@@ -50,6 +51,10 @@ struct SonarConfig {
   std::uint32_t node_delay_ticks = 3;    // delay between firing two nodes, ticks
   std::uint32_t timeout_ms = 33;         // echo time-out, ms (≈ 5 m at 300 m/s)
   std::uint32_t sound_speed_m_s = 300;   // calibrated speed of sound, m/s
+  std::string schedule = "watch";        // firing order while moving: "watch" (where the robot goes
+                                         // first and most often) or "seed" (node order, as stopped)
+  std::uint32_t moving_timeout_ms = 20;  // echo time-out of the rotation's firings between two watch
+                                         // firings while moving, ms (≈ 3 m; 0 = timeout_ms)
 };
 
 // Emergency watchdog (emerg.c).
@@ -61,6 +66,12 @@ struct EmergencyConfig {
   std::uint32_t motion_timeout_ms = 0;       // stop when no motion command for this long while moving; 0 = off
   bool auto_toggle = false;                  // only the watch-dog sensors fire
   bool latch = true;                         // a tripped emergency holds until re-enabled
+  std::string rule = "seed";                 // obstacle rule: "seed" (watch-dog sets) or "envelope" (swept body, not yet the default: docs/SAFETY.md §13)
+  std::uint32_t margin_mm = 30;              // envelope: clearance kept around the body, mm
+  std::uint32_t creep_cm_s = 10;             // envelope: fastest wheel where only the blind near field is unknown, cm/s
+  std::uint32_t free_age_ms = 3000;          // envelope: free space older than this is unknown again, ms
+  std::uint32_t protective_clear_ms = 1000;  // envelope: an automatic mode resumes after this long clear, ms
+  std::uint32_t reaction_ms = 110;           // envelope: from a decision to the next one reaching the drive, ms
 };
 
 // What operators may do over the link.

@@ -103,7 +103,8 @@ struct UltrasonicRanges {
   std::array<std::uint16_t, kSensors> mm{};      // range of sensor s at [s-1], mm; 0 = inactive / none
   std::array<std::uint64_t, kSensors> read_tick{};  // tick each range was read
   std::uint32_t scans = 0;                       // full passes over the active nodes
-  std::uint32_t no_echo = 0;                     // bit s-1: sensor s heard no echo (mm = time-out range)
+  std::uint32_t no_echo = 0;                     // bit s-1: sensor s heard no echo within mm (the firing's reach:
+                                                 // the time-out range, or less for a shortened firing)
   std::uint64_t tick = 0;                        // tick of the latest read
 };
 
@@ -116,6 +117,10 @@ struct UltrasonicTiming {
 // Which sensors the ring fires, decided by the emergency module (watch-dog set, auto-toggle).
 struct SonarSelection {
   std::uint32_t active = 0xFFFFFF;     // bit s-1 = sensor s fires
+  std::uint32_t priority = 0;          // bit s-1 = sensor s watches where the robot goes: its node
+                                       // fires first and most often (0: stopped, the seed's order)
+  std::uint32_t listen_mm = 0;         // range the safety check needs from a priority firing, mm
+                                       // (its time-out is shortened to it; 0 = the full time-out)
 };
 
 // The emergency module's verdict.
@@ -131,6 +136,10 @@ struct EmergencyState {
   bool clearable = false;       // latched and the cause is gone: a re-enable (XR) now clears it
   std::uint32_t safety_mm = 0;  // safety distance in force, mm (0 when stopped)
   std::int32_t sensor = 0;      // sensor that tripped (obstacle) or is awaited (held), 0 none
+  bool envelope = false;        // obstacle rule in force: true = swept envelope, false = the seed's watch sets
+  bool protective = false;      // protective stop: obstacle evidence in the envelope (resets itself, no XR)
+  std::uint8_t granted_pct = 0; // granted share of the requested speeds, % (100 = all, 0 = none or stopped)
+  std::uint32_t protective_stops = 0;  // protective stops since start (count; not emergencies, not in trips)
 };
 
 // What the executor is allowed to send to the motors: the only path to a non-zero speed.

@@ -37,6 +37,8 @@ struct Wheels {
   double base = 0.600;      // between the two drive wheels (DBW), m (seed 002)
   double max_speed = 1.00;  // largest wheel speed accepted, m/s
   double max_accel = 0.50;  // wheel acceleration limit, m/s²
+  double max_decel = 1.00;  // wheel deceleration when told to slow down or stop, m/s² (the drive
+                            // brakes at twice its acceleration limit; the simulator likewise)
 };
 
 // Where a sonar transducer sits in the robot frame and where it looks.
@@ -57,6 +59,7 @@ struct RingSensor {
 struct Ring {
   std::array<RingSensor, kRingSensors> sensors{};  // sensors 1..24
   double half_angle = 12.5 * kDeg;                 // beam cone half-angle, rad (Polaroid 600-series)
+  double blanking = 0.15;                          // nearer echoes are lost while the transducer rings, m
 
   constexpr const RingSensor& sensor(int s) const { return sensors[static_cast<std::size_t>(s - 1)]; }
 };

@@ -28,9 +28,14 @@ class SonarRing {
   // Echo time-out (ms) and speed of sound (m/s) used to turn echo times into ranges.
   virtual void configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) = 0;
   // Fires the sensors of `mask` (bit i = index i) on `node` (0..5, or kPanTiltChannel with
-  // mask bits 0 and 1 for the pan-tilt's two sonars). False if the node is busy or absent.
-  virtual bool fire(int node, std::uint8_t mask) = 0;
-  // The ranges of the last firing of `node` once its time-out has passed; false until then.
+  // mask bits 0 and 1 for the pan-tilt's two sonars). `timeout_ms` is this firing's listening
+  // time-out, ms: 0 = the configured one; a shorter one makes the node report sooner and only
+  // echoes within timeout_ms · c / 2 (ignored on the pan-tilt channel, which has its own).
+  // False if the node is busy or absent. Every override declares the same default.
+  virtual bool fire(int node, std::uint8_t mask, std::uint32_t timeout_ms = 0) = 0;
+  // The ranges of the last firing of `node` once the node reported them: when every fired
+  // sensor has heard its echo, or at the firing's time-out when one has not (0 for it); false
+  // until then. A node never reports later than its time-out (plus bus delays).
   virtual bool read(int node, NodeRanges& out) = 0;
 };
 

@@ -21,7 +21,8 @@ struct NodeFiring {
   double ready = 0.0;  // when its four readings are available, s
 };
 
-// When a node fired at `fire` has its results: single-shot mode waits for the whole time-out.
+// When a node fired at `fire` has its results at the latest: the whole time-out, when one of its
+// sensors hears nothing (with every echo in, the last echo_time() after the firing).
 constexpr double node_ready_time(double fire, double timeout) { return fire + timeout; }
 
 // Round-trip time of an echo from `range` metres, s (2 r / c).

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "hal/sim/sim_config.hpp"
+#include "hal/sim/sonar_timing.hpp"
 #include "hal/sim/world_io.hpp"
 #include "kernel/sim_section.hpp"
 
@@ -132,13 +133,35 @@ void SimSonarRing::configure(std::uint32_t timeout_ms, std::uint32_t sound_speed
   r_.sonar_->set_params(p);
 }
 
-bool SimSonarRing::fire(int node, std::uint8_t mask) {
+// Measured when fired: the echo comes from where the body was then (the robot moves ≤ 3 cm in
+// a 33 ms time-out). The node reports when its last echo is in — echo time 2·range / c with the
+// node's own speed of sound, the inverse of the range it reports — or at the firing's time-out
+// when a fired sensor heard nothing within it.
+bool SimSonarRing::fire(int node, std::uint8_t mask, std::uint32_t timeout_ms) {
   if (node == kPanTiltChannel) return r_.fire_pan_tilt(mask);
   if (node < 0 || node >= kSonarNodes) return false;
   auto& f = r_.firings_[static_cast<std::size_t>(node)];
+  const sim::SonarParams& p = r_.sonar_->params();
+  const double timeout = timeout_ms > 0 ? std::min(p.timeout, timeout_ms / 1000.0) : p.timeout;
+  const double c = p.ranging_speed > 0.0 ? p.ranging_speed : p.sound_speed;
+  double last_echo = 0.0;
+  for (int i = 0; i < kSensorsPerNode; ++i) {
+    auto& out = f.mm[static_cast<std::size_t>(i)];
+    out = 0;
+    if (!(mask & (1u << i))) continue;
+    const auto& mount = r_.layout_[static_cast<std::size_t>(sensor_number(node, i) - 1)];
+    const double m = std::max(0.0, r_.sonar_->measure(r_.robot_->pose(), mount, r_.sonar_noise_ ? &r_.rng_ : nullptr));
+    const double echo = sim::echo_time(m, c);
+    if (m <= 0.0 || echo > timeout) {
+      last_echo = timeout;  // nothing heard in time: the node listens to the end
+      continue;
+    }
+    out = static_cast<std::uint16_t>(std::lround(m * 1000.0));
+    last_echo = std::max(last_echo, echo);
+  }
   f.pending = true;
   f.mask = mask;
-  f.ready_s = r_.time_ + r_.sonar_->params().timeout;
+  f.ready_s = r_.time_ + last_echo;
   return true;
 }
 
@@ -151,13 +174,7 @@ bool SimSonarRing::read(int node, NodeRanges& out) {
     out = {f.pan_tilt_mm[0], f.pan_tilt_mm[1], 0, 0};
     return true;
   }
-  for (int i = 0; i < kSensorsPerNode; ++i) {
-    out[static_cast<std::size_t>(i)] = 0;
-    if (!(f.mask & (1u << i))) continue;
-    const auto& mount = r_.layout_[static_cast<std::size_t>(sensor_number(node, i) - 1)];
-    const double m = r_.sonar_->measure(r_.robot_->pose(), mount, r_.sonar_noise_ ? &r_.rng_ : nullptr);
-    out[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(std::lround(std::max(0.0, m) * 1000.0));
-  }
+  out = f.mm;
   return true;
 }
 

@@ -68,7 +68,9 @@ class SimDrive final : public Drive {
   SimRobot& r_;
 };
 
-// The ring: nodes fire single-shot; results are ready a time-out after firing. Channel 7
+// The ring: nodes fire single-shot; a node measures when it fires and reports when every fired
+// sensor has heard its echo, or at the firing's time-out when one has not (seed 002: a full scan
+// of READs took ≈ 29 ticks with a 33 ms time-out, so a READ returned once its echoes were in). Channel 7
 // (kPanTiltChannel) fires the pan-tilt's two sonars (mask bits 0 and 1) at the emulated unit's
 // current pan angle, with the pan-tilt's own time-out and sound speed (15 ms, 335 m/s: the
 // seed's READ C=7 T=15 V=335); configure() changes the ring's only.
@@ -76,7 +78,7 @@ class SimSonarRing final : public SonarRing {
  public:
   explicit SimSonarRing(SimRobot& r) : r_(r) {}
   void configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) override;
-  bool fire(int node, std::uint8_t mask) override;
+  bool fire(int node, std::uint8_t mask, std::uint32_t timeout_ms = 0) override;
   bool read(int node, NodeRanges& out) override;
 
  private:
@@ -134,6 +136,7 @@ class SimRobot {
     bool pending = false;      // fired, results not yet taken
     double ready_s = 0.0;      // simulated time the results are ready, s
     std::uint8_t mask = 0;     // sensors fired, bit i = index i
+    NodeRanges mm{};           // ring node: ranges measured at firing, mm (0: no echo in time)
     std::array<std::uint16_t, 2> pan_tilt_mm{};  // channel 7: ranges measured at firing, mm
   };
 

@@ -61,6 +61,7 @@ double Course::reading(const CourseInputs& in, int s) const {
   const auto i = static_cast<std::size_t>(s - 1);
   const std::uint64_t t = in.ranges->read_tick[i];
   if (in.ranges->mm[i] == 0 || t == 0 || in.tick - t > s_.stale_ticks) return -1.0;
+  if ((in.ranges->no_echo >> i) & 1u) return -1.0;
   return in.ranges->mm[i];
 }
 

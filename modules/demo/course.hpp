@@ -70,7 +70,8 @@ class Course {
   CourseOutput follow_line(double x0, double y0, double h, const Local& at, std::int32_t speed) const;
   // Wheel speeds that follow the circle of centre (cx, cy), radius r, clockwise (right turns).
   CourseOutput follow_arc(double cx, double cy, double r, const Local& at, std::int32_t speed) const;
-  // A fresh reading of ring sensor `s` (1..24), mm, or < 0.
+  // A fresh echo of ring sensor `s` (1..24), mm, or < 0 (none, stale, or no echo: nothing within
+  // the firing's reach says where a box is not, not where it is).
   double reading(const CourseInputs& in, int s) const;
   CourseOutput out(std::int32_t l, std::int32_t r) const;
 

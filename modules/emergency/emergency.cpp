@@ -1,9 +1,12 @@
 // Emergency process glue: reads the topics, runs the gate, publishes verdict, command and table.
 #include "modules/emergency/emergency.hpp"
 
+#include <algorithm>
+
 #include "hal/api/drive.hpp"
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
+#include "modules/emergency/obstacle_check.hpp"
 
 namespace robuter {
 
@@ -22,6 +25,9 @@ safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig
   s.wheel_base_mm = robot.wheel_base_mm;
   s.stale_ticks = t.stale_ticks;
   s.hold_limit_ticks = t.hold_limit_ticks;
+  s.envelope = cfg.rule != "seed";
+  const Nanos clear = static_cast<Nanos>(cfg.protective_clear_ms) * kNanosPerMilli;
+  s.protective_clear_ticks = tick_ns > 0 ? static_cast<std::uint32_t>((clear + tick_ns - 1) / tick_ns) : 0;
   return s;
 }
 
@@ -45,6 +51,7 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
       robot_(robot),
       tuning_(tuning),
       gate_(gate_settings(cfg, robot, tuning, 10 * kNanosPerMilli)),
+      envelope_(cfg, robot, 0.01),
       link_(bb.link_status.reader()),
       servo_(bb.servo_request.reader()),
       settings_(bb.us_settings.reader()),
@@ -80,6 +87,7 @@ bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionReques
 bool EmergencyModule::init(Kernel& k) {
   gate_ = safety::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
   gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
+  envelope_.set_tick(static_cast<double>(k.tick_ns()) / 1e9);
   for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen_seq = sources_[i].reader.peek().seq;
   seen_stop_ = link_.peek().stop_seq;
   seen_reenable_ = link_.peek().reenable_seq;
@@ -135,6 +143,7 @@ void EmergencyModule::take_requests(safety::GateInputs& in) {
     in.left = r.left;
     in.right = r.right;
     in.source = s.source;
+    in.automatic = safety::automatic(s.source);
   }
 }
 
@@ -172,6 +181,10 @@ void EmergencyModule::run(Kernel& k) {
   in.servo_on = posture.servo;
   in.at_rest = at_rest(posture);
   in.ranges = &ranges_.peek();
+  if (gate_.settings().envelope) {
+    envelope_.observe(in.tick, posture, *in.ranges);
+    in.envelope = &envelope_;
+  }
   if (settings_.generation() > 0) {
     in.user_table = us.user_table;
     in.auto_toggle = us.auto_toggle;
@@ -181,6 +194,7 @@ void EmergencyModule::run(Kernel& k) {
 
   const safety::GateDecision d = gate_.step(in);
   if (d.tripped) arbiter_.emergency_stop();
+  else if (d.protective_started) arbiter_.protective_stop();
   state_out_.publish(d.state);
   MotionAuthority a = arbiter_.authority();
   a.detections = gate_.enabled();
@@ -194,7 +208,14 @@ void EmergencyModule::run(Kernel& k) {
     command_out_.publish(MotionCommand{d.left, d.right, d.stop, seq, d.source});
     if (executor_) k.trigger(executor_);
   }
-  if (selection_out_.current().active != d.selection) selection_out_.publish(SonarSelection{d.selection});
+  // The ring fires the watch-dog set first and most often, listening 200 mm past the largest
+  // safety distance (a reading never looks clear for lack of range): docs/SAFETY.md §5.
+  const std::uint32_t priority = (gate_.enabled() & kDetectUltrasonic) ? d.state.watch & d.selection : 0;
+  const auto top = static_cast<std::int32_t>(robot_.max_speed_cm_s);
+  const std::uint32_t reach = std::max(d.state.safety_mm, safety::safety_distance_mm(top, top, cfg_.min_safety_mm, cfg_.safety_mm_per_cm_s));
+  const SonarSelection sel{d.selection, priority, priority ? reach + 200 : 0};
+  const SonarSelection& had = selection_out_.current();
+  if (had.active != sel.active || had.priority != sel.priority || had.listen_mm != sel.listen_mm) selection_out_.publish(sel);
   log_transitions(d);
   last_ = d.state;
 }
@@ -221,6 +242,8 @@ void EmergencyModule::log_transitions(const safety::GateDecision& d) {
   if (d.cleared) log::info("emergency: re-enabled");
   if (s.held && !last_.held) log::info("emergency: motion held for data of sensor {}", s.sensor);
   if (d.hold_expired) log::warn("emergency: held motion forgotten (no sensor data)");
+  if (d.protective_started) log::info("emergency: protective stop (obstacle in the envelope)");
+  if (d.resumed) log::info("emergency: automatic motion resumed, envelope clear");
 }
 
 }  // namespace robuter

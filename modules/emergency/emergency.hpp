@@ -9,6 +9,7 @@
 #include "kernel/process.hpp"
 #include "modules/emergency/motion_arbiter.hpp"
 #include "modules/emergency/motion_gate.hpp"
+#include "modules/emergency/ring_envelope.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter {
@@ -41,6 +42,8 @@ class EmergencyModule final : public Process {
     hand_over_ = gate_hands_over;
     demo_at_boot_ = demo_at_boot;
   }
+  // The envelope's grid and pose (tests, figures).
+  const safety::RingEnvelope& envelope() const { return envelope_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -73,6 +76,7 @@ class EmergencyModule final : public Process {
   EmergencyTuning tuning_;
   safety::MotionGate gate_;
   safety::MotionArbiter arbiter_;
+  safety::RingEnvelope envelope_;     // the swept envelope and its evidence grid ([emergency] rule = "envelope")
   std::array<Source, kMaxSources> sources_{};
   std::size_t source_count_ = 0;
   Reader<LinkStatus> link_;

@@ -63,6 +63,12 @@ void MotionArbiter::emergency_stop() {
   a_.owner = MotionSource::link;
 }
 
+void MotionArbiter::protective_stop() {
+  if (a_.owner != MotionSource::go_to) return;
+  a_.ended[index(MotionSource::go_to)] = ModeReason::protective;
+  a_.owner = MotionSource::link;
+}
+
 void MotionArbiter::hand_over_to_doors() {
   if (a_.owner != MotionSource::gate) return;
   hand_to(MotionSource::doors);

@@ -35,6 +35,10 @@ class MotionArbiter {
   // An emergency tripped (stop byte, bumper, link loss, drive fault, obstacle under the seed's
   // rule…): the automatic mode ends (`emergency`); nothing of it resumes after XR.
   void emergency_stop();
+  // A protective stop began (an obstacle in the envelope, no latch): the operator's motion is
+  // forgotten — the go-to ends (`protective`) — while an automatic mode keeps the robot and
+  // goes on once the envelope is clear (docs/SAFETY.md §13).
+  void protective_stop();
   // The passage finder is aligned and hands the robot to the door crossing ([gate] hand_over).
   void hand_over_to_doors();
   // A mode started at boot by configuration ([demo] enabled).

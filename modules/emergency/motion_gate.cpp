@@ -1,15 +1,26 @@
 // The gate's decision: re-enable, requests, detections, then trip / latch / hold / grant.
 #include "modules/emergency/motion_gate.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "modules/emergency/obstacle_check.hpp"
 
 namespace robuter::safety {
+
+// A wheel speed scaled by the envelope's fraction, truncated towards zero (never above the share).
+std::int32_t scaled(std::int32_t speed, double fraction) {
+  if (fraction >= 1.0) return speed;
+  return static_cast<std::int32_t>(std::trunc(static_cast<double>(speed) * std::max(fraction, 0.0)));
+}
 
 // Forgetting is how the seed's "rtm = FALSE" is made final: an old speed can never come back.
 void MotionGate::forget() {
   has_request_ = false;
   left_ = right_ = 0;
   holding_ = false;
+  automatic_ = false;
+  clear_timing_ = false;
 }
 
 // Order matters: a re-enable is judged on the conditions present now; requests are taken before
@@ -46,6 +57,12 @@ GateDecision MotionGate::step(const GateInputs& in) {
     source_ = in.source;
     request_tick_ = tick;
     holding_ = false;
+    automatic_ = in.automatic;
+    // An operator's new request is judged afresh; an automatic mode's waits out the clear time.
+    if (!in.automatic) {
+      protective_ = false;
+      clear_timing_ = false;
+    }
   }
 
   // 3. Detections.
@@ -65,11 +82,42 @@ GateDecision MotionGate::step(const GateInputs& in) {
   d.state.watch = watch_mask(main);
   d.state.safety_mm = safety;
   bool held = false;
-  if (cause == EmergencyCause::none && moving && (s_.enabled & kDetectUltrasonic) && in.ranges != nullptr) {
-    const WatchVerdict v = check_watch(watch_sensors(main), *in.ranges, safety, tick, s_.stale_ticks);
-    if (v.result == WatchResult::obstacle) cause = EmergencyCause::obstacle;
-    held = v.result == WatchResult::hold;
-    d.state.sensor = v.sensor;
+  const bool use_envelope = s_.envelope && in.envelope != nullptr;
+  bool protective_now = false;  // obstacle evidence stops even a creep
+  double fraction = 1.0;        // share of the request the envelope grants
+  if (cause == EmergencyCause::none && moving && (s_.enabled & kDetectUltrasonic)) {
+    if (use_envelope) {
+      const EnvelopeVerdict v = in.envelope->judge(left_, right_);
+      fraction = v.fraction;
+      const bool nothing = scaled(left_, fraction) == 0 && scaled(right_, fraction) == 0;
+      protective_now = v.obstacle || (nothing && !v.missing);
+      held = nothing && !protective_now;
+    } else if (in.ranges != nullptr) {
+      const WatchVerdict v = check_watch(watch_sensors(main), *in.ranges, safety, tick, s_.stale_ticks);
+      if (v.result == WatchResult::obstacle) cause = EmergencyCause::obstacle;
+      held = v.result == WatchResult::hold;
+      d.state.sensor = v.sensor;
+    }
+  }
+  // A paused automatic request waits until its envelope has been clear for the clear time; new
+  // evidence starts the clock over.
+  const bool evidence = protective_now;
+  if (evidence) clear_timing_ = false;
+  if (protective_ && !protective_now && has_request_ && automatic_ && cause == EmergencyCause::none && !latched_) {
+    if (held || !moving) {
+      clear_timing_ = false;
+    } else if (!clear_timing_) {
+      clear_timing_ = true;
+      clear_since_ = tick;
+    }
+    const bool waited = clear_timing_ && tick - clear_since_ >= s_.protective_clear_ticks;
+    if (waited) {
+      protective_ = false;
+      clear_timing_ = false;
+      d.resumed = true;
+    } else if (moving && !held) {
+      protective_now = true;  // still paused: nothing granted yet
+    }
   }
 
   // 4. Verdict.
@@ -93,6 +141,17 @@ GateDecision MotionGate::step(const GateInputs& in) {
     d.stop = true;
   } else if (latched_) {
     d.stop = true;
+  } else if (protective_now) {
+    // Protective stop: zero speeds, servo as it is, no latch. An operator's motion is forgotten
+    // (send it again); an automatic mode's is kept and resumes once clear for the clear time.
+    if (!protective_) {
+      ++protective_stops_;
+      d.protective_started = true;
+      clear_timing_ = false;
+    }
+    protective_ = true;
+    if (!automatic_) forget();
+    holding_ = false;
   } else if (held) {
     if (!holding_) {
       holding_ = true;
@@ -109,11 +168,19 @@ GateDecision MotionGate::step(const GateInputs& in) {
   } else {
     holding_ = false;
     if (has_request_) {
-      d.left = left_;
-      d.right = right_;
+      d.left = scaled(left_, fraction);
+      d.right = scaled(right_, fraction);
     }
   }
   d.source = source_;
+  if (!has_request_ && !protective_now && (latched_ || cause != EmergencyCause::none)) protective_ = false;
+  d.state.envelope = use_envelope;
+  d.state.protective = protective_;
+  d.state.protective_stops = protective_stops_;
+  const bool granting = has_request_ && (left_ != 0 || right_ != 0) && (d.left != 0 || d.right != 0);
+  d.state.granted_pct = static_cast<std::uint8_t>(
+      !has_request_ || (left_ == 0 && right_ == 0) ? (d.stop || protective_ ? 0 : 100)
+                                                   : (granting ? std::clamp(static_cast<int>(fraction * 100.0), 0, 100) : 0));
 
   d.state.held = held;
   d.state.latched = latched_;

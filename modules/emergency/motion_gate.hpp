@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "modules/emergency/envelope_judge.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
 #include "modules/topics.hpp"
 
@@ -24,6 +25,8 @@ struct GateSettings {
   std::uint32_t wheel_base_mm = 600;         // DBW, mm
   std::uint32_t stale_ticks = 300;           // a watch-dog reading older than this counts as missing, ticks
   std::uint32_t hold_limit_ticks = 500;      // a motion held longer than this is forgotten, ticks
+  bool envelope = true;                      // obstacles: the swept envelope (false: the seed's watch sets)
+  std::uint32_t protective_clear_ticks = 100;  // an automatic request resumes after its envelope is clear this long, ticks
 };
 
 // One activation's view of the world.
@@ -33,6 +36,7 @@ struct GateInputs {
   std::int32_t left = 0;                     // its left wheel speed, cm/s
   std::int32_t right = 0;                    // its right wheel speed, cm/s
   MotionSource source = MotionSource::link;  // who asked
+  bool automatic = false;                    // the request is an automatic mode's own (gate, doors, planner, demo)
   bool servo_request = false;                // an ASN/ASF arrived: any motion stops
   bool stop_byte = false;                    // the link's immediate stop byte arrived
   bool reenable = false;                     // a re-enable (XR) arrived
@@ -45,6 +49,7 @@ struct GateInputs {
   const UltrasonicRanges* ranges = nullptr;  // the ring's latest ranges (never null in use)
   std::uint32_t user_table = kAllSensors;    // the operator's table (UT), bit s-1 = sensor s
   bool auto_toggle = false;                  // only the watch-dog sensors fire (Uu)
+  EnvelopeJudge* envelope = nullptr;         // the swept envelope (used when settings().envelope; null: seed rule)
 };
 
 // One activation's verdict.
@@ -58,7 +63,12 @@ struct GateDecision {
   bool tripped = false;                      // this activation stopped a motion (for the log)
   bool hold_expired = false;                 // this activation forgot a motion held too long
   bool cleared = false;                      // this activation cleared a latched emergency
+  bool protective_started = false;           // this activation began a protective stop
+  bool resumed = false;                      // this activation resumed an automatic request after a protective stop
 };
+
+// A wheel speed (cm/s) scaled by the envelope's fraction, truncated towards zero.
+std::int32_t scaled(std::int32_t speed, double fraction);
 
 // The seed's emergency() made a state machine with an explicit latch: holds the request to
 // move, decides grant / hold / stop every activation. No heap, bounded work.
@@ -89,6 +99,11 @@ class MotionGate {
   bool holding_ = false;                       // the request is held for sensor data
   std::uint64_t hold_since_ = 0;               // when the hold began, ticks
   std::uint32_t trips_ = 0;                    // trips so far
+  bool automatic_ = false;                     // the remembered request is an automatic mode's
+  bool protective_ = false;                    // a protective stop is in force (obstacle evidence in the envelope)
+  bool clear_timing_ = false;                  // the paused automatic request's envelope is clear since clear_since_
+  std::uint64_t clear_since_ = 0;              // when it became clear, ticks
+  std::uint32_t protective_stops_ = 0;         // protective stops so far
 };
 
 }  // namespace robuter::safety

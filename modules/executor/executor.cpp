@@ -101,7 +101,7 @@ void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits&
   } else if (go_to_.active()) {
     const ModeReason why = claim_.ended();
     if (why != ModeReason::none) {
-      log::info("executor: go-to ended by {}", why == ModeReason::emergency ? "an emergency" : "the operator");
+      log::info("executor: go-to ended by {}", why == ModeReason::emergency ? "an emergency" : why == ModeReason::protective ? "a protective stop" : "the operator");
       end_go_to(tick, false);
     }
   }

@@ -89,7 +89,7 @@ class NoBumpers final : public hal::Bumpers {
 class NoSonarRing final : public hal::SonarRing {
  public:
   void configure(std::uint32_t, std::uint32_t) override {}
-  bool fire(int, std::uint8_t) override { return false; }
+  bool fire(int, std::uint8_t, std::uint32_t = 0) override { return false; }
   bool read(int, hal::NodeRanges&) override { return false; }
 };
 }  // namespace

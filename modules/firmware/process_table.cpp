@@ -15,7 +15,8 @@ constexpr DefaultRow kDefaults[] = {
     {"sim", 1, 0, 99, 5000},        // simulated world (SITL only): first in every tick
     {"can", 1, 0, 90, 2000},        // CAN bus (hardware only): frames in, drive/sonar supervision, RPDOs, SYNC
     {"serial", 2, 0, 3, 2000},      // command links (seed serial_spy 2, 3, 0)
-    {"us", 4, 2, 2, 2000},          // ultrasonic ring (seed read_sensors 4, 2, 6: offset 6 ≥ period, so 6 mod 4)
+    {"us", 1, 0, 2, 2000},          // ultrasonic ring (seed read_sensors 4, 2, 6): every tick, so a node is
+                                    // read the tick its echoes are in and fired the tick its delay ends
     {"executor", 10, 2, 4, 2000},   // motors and odometry (seed execute 10, 4, 2)
     {"emergency", 10, 4, 5, 2000},  // watchdog and request-to-move gate (seed emergency 10, 5, 4)
     {"heartbeat", 100, 0, 1, 1000}, // proof of life, once a second

@@ -25,8 +25,9 @@ void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const 
   const double c = std::cos(robot.heading), s = std::sin(robot.heading);
   const plan::Point2 origin{robot.x + c * mount.x - s * mount.y, robot.y + s * mount.x + c * mount.y};
   const double axis = robot.heading + mount.direction;
-  if (no_echo || range >= beam_range) {  // nothing within beam_range: misses only
-    map.integrate_beam(origin, axis, beam_range, beam_range);
+  if (no_echo || range >= beam_range) {  // nothing within beam_range (or a shortened firing's reach): misses only
+    const double reach = no_echo ? std::min(range, beam_range) : beam_range;
+    map.integrate_beam(origin, axis, reach, reach);
     return;
   }
   double best_phi = 0.0;

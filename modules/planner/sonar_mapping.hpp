@@ -16,7 +16,8 @@ using SensorMount = robot::SonarMount;  // a transducer in the robot frame (m, r
 // equals), so an echo from a door's jamb seen at the cone's edge does not close the doorway.
 // A reading at or beyond `beam_range` (m), and a "no echo", only clears along the axis up to
 // `beam_range`: far echoes are too wide to place, and too far to matter before the next stop.
-// `range` in m; `no_echo` true when nothing came back.
+// `range` in m; `no_echo` true when nothing came back within `range` (the firing's reach: a
+// shortened firing clears only that far).
 void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const SensorMount& mount,
                        double range, bool no_echo, double beam_range, double half_angle);
 

@@ -294,6 +294,9 @@ protocol::EmergencyStatus LinkPort::emergency() const noexcept {
   s.latched = e.latched;
   s.enabled = e.enabled;
   s.cause = e.cause;
+  s.granted_pct = e.granted_pct;
+  s.envelope = e.envelope;
+  s.protective = e.protective;
   return s;
 }
 

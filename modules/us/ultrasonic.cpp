@@ -12,20 +12,24 @@ UltrasonicModule::UltrasonicModule(Blackboard& bb, hal::SonarRing& ring, const S
       settings_(bb.us_settings.reader()),
       selection_(bb.sonar_selection.reader()),
       ranges_out_(bb.ranges.writer()),
-      timing_out_(bb.us_timing.writer()) {}
+      timing_out_(bb.us_timing.writer()),
+      watch_(cfg.schedule != "seed") {}
 
 // The first scan configures the ring; nothing else to prepare.
 bool UltrasonicModule::init(Kernel&) {
-  log::info("us: time-out {} ms, sound {} m/s, node delay {} ticks", cfg_.timeout_ms, cfg_.sound_speed_m_s,
-            cfg_.node_delay_ticks);
+  log::info("us: time-out {} ms, sound {} m/s, node delay {} ticks, {} schedule (moving time-out {} ms)",
+            cfg_.timeout_ms, cfg_.sound_speed_m_s, cfg_.node_delay_ticks, watch_ ? "watch" : "seed",
+            cfg_.moving_timeout_ms);
   return true;
 }
 
-// The operator's settings once published, the configuration before; the time-out rounded up
-// to whole ticks because a node cannot be read before its echoes are in.
+// The operator's settings once published, the configuration before; time-outs rounded up to
+// whole ticks because a node cannot be read before its echoes are in. A priority firing listens
+// as far as the emergency module needs (2 · listen_mm / c, in whole ms).
 sonar::ScanRequest UltrasonicModule::request(Nanos tick_ns) const {
   sonar::ScanRequest r;
-  r.active = selection_.peek().active;
+  const SonarSelection& sel = selection_.peek();
+  r.active = sel.active;
   r.sound_speed_m_s = cfg_.sound_speed_m_s;
   if (settings_.generation() > 0) {
     r.node_delay_ticks = settings_.peek().node_delay_ticks;
@@ -34,8 +38,21 @@ sonar::ScanRequest UltrasonicModule::request(Nanos tick_ns) const {
     r.node_delay_ticks = cfg_.node_delay_ticks;
     r.timeout_ms = cfg_.timeout_ms;
   }
-  const Nanos ns = static_cast<Nanos>(r.timeout_ms) * kNanosPerMilli;
-  r.timeout_ticks = tick_ns > 0 ? static_cast<std::uint32_t>((ns + tick_ns - 1) / tick_ns) : 1;
+  const auto ticks = [tick_ns](std::uint32_t ms) {
+    const Nanos ns = static_cast<Nanos>(ms) * kNanosPerMilli;
+    return tick_ns > 0 ? static_cast<std::uint32_t>((ns + tick_ns - 1) / tick_ns) : 1u;
+  };
+  r.timeout_ticks = ticks(r.timeout_ms);
+  r.watch = watch_;
+  r.priority = sel.priority;
+  if (sel.listen_mm > 0 && r.sound_speed_m_s > 0) {
+    r.priority_timeout_ms = (2 * sel.listen_mm + r.sound_speed_m_s - 1) / r.sound_speed_m_s;
+    r.priority_timeout_ticks = ticks(r.priority_timeout_ms);
+  }
+  if (cfg_.moving_timeout_ms > 0) {
+    r.moving_timeout_ms = cfg_.moving_timeout_ms;
+    r.moving_timeout_ticks = ticks(r.moving_timeout_ms);
+  }
   return r;
 }
 

@@ -37,6 +37,7 @@ class UltrasonicModule final : public Process {
   sonar::RingScanner scanner_;
   Process* emergency_ = nullptr;          // triggered on new ranges
   std::uint64_t lost_logged_ = 0;         // lost reads already logged
+  bool watch_ = true;                     // [sonar] schedule = "watch" (else "seed")
 };
 
 }  // namespace robuter

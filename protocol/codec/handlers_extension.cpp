@@ -5,7 +5,8 @@
 
 namespace robuter::protocol {
 
-// XE → `E <held> <latched> <cause> <enabled-mask> <clock>`.
+// XE → `E <held> <latched> <cause> <enabled-mask> <clock> <granted-%> <rule> <protective>`; the
+// last three came later and follow the clock, so a reader of the first five keeps working.
 void handle_get_emergency(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   const EmergencyStatus e = port.emergency();
   out.open("E");
@@ -15,6 +16,9 @@ void handle_get_emergency(const Command&, RobotPort& port, ReplyWriter& out) noe
   out.raw(word(e.cause));
   out.field(e.enabled);
   out.field(port.clock());
+  out.field(e.granted_pct);
+  out.raw(e.envelope ? " envelope" : " seed");
+  out.field(e.protective ? 1 : 0);
 }
 
 // XR: the port refuses (refused_emergency) while the cause is still present.

@@ -53,6 +53,9 @@ struct EmergencyStatus {
   bool latched = false;                       // an emergency stopped the robot and is not cleared
   EmergencyCause cause = EmergencyCause::none;  // why (none when not latched)
   std::uint8_t enabled = 0;                   // detectors on: kDetect* bits
+  std::uint8_t granted_pct = 100;             // share of the requested speeds granted now, % (100: no limit)
+  bool envelope = true;                       // obstacle rule: true = swept envelope, false = the seed's watch sets
+  bool protective = false;                    // a protective stop is in force (resets itself; no XR)
 };
 
 // One kernel process's figures for XK.

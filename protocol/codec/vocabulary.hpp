@@ -135,7 +135,8 @@ ROBUTER_VOCABULARY(ModeState, ROBUTER_MODE_STATES, "off");
   X(link_lost, "link-lost")           /* doors: every command link closed */                           \
   X(timeout, "timeout")               /* doors: the crossing took longer than its limit */             \
   X(shutdown, "shutdown")             /* the firmware stopped */                                       \
-  X(no_landmark, "no-landmark")       /* demonstration: the calibration boxes were not found in time */
+  X(no_landmark, "no-landmark")       /* demonstration: the calibration boxes were not found in time */ \
+  X(protective, "protective")         /* go-to: a protective stop forgot the operator's motion */
 enum class ModeReason : std::uint8_t { ROBUTER_MODE_REASONS(ROBUTER_VOCAB_ENUMERATOR) };
 ROBUTER_VOCABULARY(ModeReason, ROBUTER_MODE_REASONS, "none");
 

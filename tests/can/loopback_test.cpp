@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "hal/linux/can/sonar_frames.hpp"
 #include "tests/can/can_rig.hpp"
 
 namespace robuter::test {
@@ -248,6 +249,45 @@ TEST(CanLoopback, SonarNodesStartFireAndAnswer) {
   ASSERT_TRUE(r.ring().fire(1, 0x01));
   ASSERT_TRUE(r.until([&] { return r.ring().read(1, mm); }, 6));
   EXPECT_EQ(mm[0], 0);
+}
+
+TEST(CanLoopback, AFiringCarriesItsOwnTimeOutAndTheNodeAnswersOnceItsEchoesAreIn) {
+  CanRig r;
+  r.nodes[4]->set_range(0, 600);
+  r.nodes[4]->set_range(1, 900);
+  r.nodes[4]->set_range(2, 2000);
+  ASSERT_TRUE(r.until([&] { return r.ring().alive(4); }, 40));
+  r.ring().configure(33, 300);
+  can_frame f;
+  while (r.tap.receive(f)) {
+  }
+  // Shortened to 8 ms (1200 mm): 600 and 900 mm are in after 6 ms, 2000 mm is out of reach.
+  ASSERT_TRUE(r.ring().fire(4, 0x07, 8));
+  ASSERT_TRUE(r.tap.receive(f));
+  hal::can::sonar::FireRequest req;
+  ASSERT_TRUE(hal::can::sonar::parse_fire(f, req));
+  EXPECT_EQ(req.mask, 0x07);
+  EXPECT_EQ(req.timeout_ms, 8) << "the fire frame carries the firing's own time-out";
+  hal::NodeRanges mm{};
+  ASSERT_TRUE(r.until([&] { return r.ring().read(4, mm); }, 2)) << "answered after 8 ms, not 33";
+  EXPECT_EQ(mm[0], 600);
+  EXPECT_EQ(mm[1], 900);
+  EXPECT_EQ(mm[2], 0);
+  // The full time-out: 2000 mm is heard after 13.3 ms, the node answers then.
+  ASSERT_TRUE(r.ring().fire(4, 0x07));
+  ASSERT_TRUE(r.until([&] { return r.ring().read(4, mm); }, 3));
+  EXPECT_EQ(mm[2], 2000);
+  // A transducer with nothing in reach keeps the node listening to its time-out (33 ms).
+  r.nodes[4]->set_range(2, 6000);
+  ASSERT_TRUE(r.ring().fire(4, 0x07, 0));
+  r.ticks(4);
+  EXPECT_FALSE(r.ring().read(4, mm)) << "not before the 33 ms time-out";
+  ASSERT_TRUE(r.until([&] { return r.ring().read(4, mm); }, 2));
+  EXPECT_EQ(mm[2], 0);
+  // A time-out longer than the configured one is not taken: the configured one caps it.
+  ASSERT_TRUE(r.ring().fire(4, 0x01, 100));
+  ASSERT_TRUE(r.tap.receive(f) && hal::can::sonar::parse_fire(f, req));
+  EXPECT_EQ(req.timeout_ms, 33);
 }
 
 TEST(CanLoopback, FaultyTransducerAndSilentNodeGiveNoData) {

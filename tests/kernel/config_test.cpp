@@ -83,6 +83,9 @@ TEST(Config, OutOfRangeValueIsNamed) {
   EXPECT_EQ(error_of("[emergency]\nmask = 9\n"), "robot.toml:2: key 'emergency.mask': 9 is out of range 0..7");
   EXPECT_EQ(error_of("[kernel]\nlog_level = \"loud\"\n"),
             "robot.toml:2: key 'kernel.log_level': 'loud' is not one of: debug, info, warn, error, off");
+  EXPECT_EQ(error_of("[sonar]\nschedule = \"fast\"\n"), "robot.toml:2: key 'sonar.schedule': 'fast' is not one of: watch, seed");
+  EXPECT_EQ(error_of("[sonar]\nmoving_timeout_ms = 2000\n"),
+            "robot.toml:2: key 'sonar.moving_timeout_ms': 2000 is out of range 0..1000");
 }
 
 TEST(Config, SyntaxErrorGivesTheLine) {
@@ -107,6 +110,8 @@ TEST(Config, ShippedDefaultFileParsesToTheDefaults) {
   EXPECT_EQ(c.kernel.tick_us, d.kernel.tick_us);
   EXPECT_EQ(c.emergency.comm_limit_ticks, d.emergency.comm_limit_ticks);
   EXPECT_EQ(c.sonar.timeout_ms, d.sonar.timeout_ms);
+  EXPECT_EQ(c.sonar.schedule, d.sonar.schedule);
+  EXPECT_EQ(c.sonar.moving_timeout_ms, d.sonar.moving_timeout_ms);
   EXPECT_EQ(c.robot.length_mm, d.robot.length_mm);
 }
 

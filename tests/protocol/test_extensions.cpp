@@ -21,13 +21,18 @@ std::string with_crc(std::string_view body) {
 
 TEST(Extensions, XE) {
   Harness h;
-  EXPECT_EQ(h.ask("XE"), "E 0 0 none 7 1523");
+  EXPECT_EQ(h.ask("XE"), "E 0 0 none 7 1523 100 envelope 0");
   h.port.emerg = {false, true, EmergencyCause::obstacle, kDetectBumper | kDetectComm};
-  EXPECT_EQ(h.ask("XE"), "E 0 1 obstacle 5 1523");
+  EXPECT_EQ(h.ask("XE"), "E 0 1 obstacle 5 1523 100 envelope 0");
   h.port.emerg = {true, false, EmergencyCause::none, 7};
-  EXPECT_EQ(h.ask("XE"), "E 1 0 none 7 1523");
+  EXPECT_EQ(h.ask("XE"), "E 1 0 none 7 1523 100 envelope 0");
   h.port.emerg.cause = EmergencyCause::comm_loss;
   EXPECT_EQ(h.ask("XE").substr(0, 18), "E 1 0 comm-loss 7 ");
+  // The envelope's fields follow the clock: granted share, rule, protective stop.
+  h.port.emerg = {false, false, EmergencyCause::none, 7, 0, true, true};
+  EXPECT_EQ(h.ask("XE"), "E 0 0 none 7 1523 0 envelope 1");
+  h.port.emerg = {false, false, EmergencyCause::none, 7, 40, false, false};
+  EXPECT_EQ(h.ask("XE"), "E 0 0 none 7 1523 40 seed 0");
 }
 
 TEST(Extensions, CauseNames) {

@@ -47,7 +47,7 @@ TEST(Vocabulary, OneWordPerEnumerator) {
   EXPECT_EQ(kEnumerators<EmergencyCause>, static_cast<std::size_t>(EmergencyCause::bus_off) + 1);
   EXPECT_EQ(kEnumerators<PlannerState>, static_cast<std::size_t>(PlannerState::operator_ended) + 1);
   EXPECT_EQ(kEnumerators<ModeState>, static_cast<std::size_t>(ModeState::finished) + 1);
-  EXPECT_EQ(kEnumerators<ModeReason>, static_cast<std::size_t>(ModeReason::no_landmark) + 1);
+  EXPECT_EQ(kEnumerators<ModeReason>, static_cast<std::size_t>(ModeReason::protective) + 1);
   EXPECT_EQ(kEnumerators<DemoPhase>, static_cast<std::size_t>(DemoPhase::failed) + 1);
 }
 
@@ -62,7 +62,7 @@ TEST(Vocabulary, WireWordsInOrder) {
             "off starting scanning searching moving aligned crossing waiting leaving crossed failed running finished");
   EXPECT_EQ(all_words<ModeReason>(),
             "none no-unit unit-silent unit-garbage unit-refused unit-lost no-passage cannot-align cant-cross "
-            "emergency operator scanner cancelled link-lost timeout shutdown no-landmark");
+            "emergency operator scanner cancelled link-lost timeout shutdown no-landmark protective");
   EXPECT_EQ(all_words<DemoPhase>(), "wait out turn lane align advance circle done failed");
 }
 

@@ -62,7 +62,7 @@ class FakeRing final : public hal::SonarRing {
  public:
   explicit FakeRing(hal::PtuEmulator& e) : emu_(e) {}
   void configure(std::uint32_t, std::uint32_t) override {}
-  bool fire(int node, std::uint8_t mask) override {
+  bool fire(int node, std::uint8_t mask, std::uint32_t = 0) override {
     if (node != hal::kPanTiltChannel || mask != 0x3 || pending_) return false;
     pending_ = true;
     angle_ = emu_.angle_deg();

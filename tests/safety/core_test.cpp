@@ -23,7 +23,7 @@ void move(Rig& r, std::int32_t l, std::int32_t rr) {
 }
 
 TEST(Core, AnObstacleStopReachesTheDriveInTheTickTheRangeWasRead) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 30, 30);
   r.ring.world[0] = 250;  // sensor 1, under 300 mm at 30 cm/s
@@ -43,7 +43,7 @@ TEST(Core, AnObstacleStopReachesTheDriveInTheTickTheRangeWasRead) {
 }
 
 TEST(Core, HoldOnMissingDataThenResume) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.uu(true);  // auto-toggle: stopped, every sensor goes off
   r.step(60);
@@ -60,7 +60,7 @@ TEST(Core, HoldOnMissingDataThenResume) {
 }
 
 TEST(Core, AutoToggleFiresOnlyTheWatchDogSensors) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.uu(true);
   r.step(60);
@@ -85,7 +85,7 @@ TEST(Core, AutoToggleFiresOnlyTheWatchDogSensors) {
 }
 
 TEST(Core, BumperStopsAndLatches) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 20, 20);
   r.bumpers.state = 1;
@@ -96,7 +96,7 @@ TEST(Core, BumperStopsAndLatches) {
 }
 
 TEST(Core, CommunicationLossAfterTheLimit) {
-  Config c;
+  Config c = seed_config();
   c.emergency.comm_limit_ticks = 300;
   Rig r(c);
   warm_up(r);
@@ -109,7 +109,7 @@ TEST(Core, CommunicationLossAfterTheLimit) {
 }
 
 TEST(Core, StopByteStopsInTheSameTickWhenTheLinkTriggers) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 40, 40);
   r.link.stop_byte();
@@ -123,7 +123,7 @@ TEST(Core, StopByteStopsInTheSameTickWhenTheLinkTriggers) {
 }
 
 TEST(Core, LatchHoldsUntilReenableAndTheOldSpeedNeverResumes) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 30, 30);
   r.ring.world[0] = 200;
@@ -146,7 +146,7 @@ TEST(Core, LatchHoldsUntilReenableAndTheOldSpeedNeverResumes) {
 }
 
 TEST(Core, WithoutLatchTheOldSpeedStillNeverResumes) {
-  Config c;
+  Config c = seed_config();
   c.emergency.latch = false;
   Rig r(c);
   warm_up(r);
@@ -163,7 +163,7 @@ TEST(Core, WithoutLatchTheOldSpeedStillNeverResumes) {
 }
 
 TEST(Core, ServoOnDoesNotMoveAnything) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.as(true);
   r.step(20);
@@ -181,7 +181,7 @@ TEST(Core, ServoOnDoesNotMoveAnything) {
 }
 
 TEST(Core, ServoOnIsRefusedWhileLatched) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.stop_byte();
   r.step(20);
@@ -193,7 +193,7 @@ TEST(Core, ServoOnIsRefusedWhileLatched) {
 }
 
 TEST(Core, GoToDrivesThroughTheGateAndArrives) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.aw(5000, 2000, 9000);  // 50 cm ahead, 20 cm left, facing +y
   r.step(10);
@@ -211,7 +211,7 @@ TEST(Core, GoToDrivesThroughTheGateAndArrives) {
 }
 
 TEST(Core, GoToIsCancelledByANewerMotionRequest) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.aw(50000, 0, 0);
   ASSERT_TRUE(r.step_until([&] { return r.drive.moving(); }, 50));
@@ -224,7 +224,7 @@ TEST(Core, GoToIsCancelledByANewerMotionRequest) {
 }
 
 TEST(Core, GoToIsCancelledByAnEmergencyAndNeverResumes) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.aw(50000, 0, 0);
   ASSERT_TRUE(r.step_until([&] { return r.drive.moving(); }, 50));
@@ -239,7 +239,7 @@ TEST(Core, GoToIsCancelledByAnEmergencyAndNeverResumes) {
 }
 
 TEST(Core, OdometrySetMovesTheFrame) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.link.ac(12345, -500, 9000);
   r.step(10);
@@ -249,7 +249,7 @@ TEST(Core, OdometrySetMovesTheFrame) {
 }
 
 TEST(Core, DriveFaultSwitchesTheServoOffAndLatches) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 10, 10);
   r.drive.set_health(hal::DriveHealth::fault);
@@ -260,7 +260,7 @@ TEST(Core, DriveFaultSwitchesTheServoOffAndLatches) {
 }
 
 TEST(Core, MotionTimeoutStopsAStaleMotion) {
-  Config c;
+  Config c = seed_config();
   c.emergency.motion_timeout_ms = 500;
   Rig r(c);
   warm_up(r);
@@ -270,7 +270,7 @@ TEST(Core, MotionTimeoutStopsAStaleMotion) {
 }
 
 TEST(Core, ShutdownZeroesAndSwitchesTheServoOff) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   move(r, 10, 10);
   r.kernel.shutdown();
@@ -282,7 +282,7 @@ TEST(Core, ShutdownZeroesAndSwitchesTheServoOff) {
 }
 
 TEST(Core, TimingStatisticsArePublished) {
-  Rig r;
+  Rig r(seed_config());
   warm_up(r);
   r.step(200);
   const UltrasonicTiming& t = r.bb.us_timing.reader().peek();

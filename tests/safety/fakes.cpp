@@ -50,12 +50,14 @@ void FakeDrive::advance(double dt_s, double wheel_base_m) {
   odo_.theta_rad = std::remainder(odo_.theta_rad + w * dt_s, 2.0 * std::numbers::pi);
 }
 
-bool FakeRing::fire(int node, std::uint8_t mask) {
+// A node that always reports at its time-out (the latest the contract allows).
+bool FakeRing::fire(int node, std::uint8_t mask, std::uint32_t timeout_ms) {
   if (refuse_fire || node < 0 || node >= hal::kSonarNodes) return false;
   auto& p = nodes_[static_cast<std::size_t>(node)];
   const Nanos now = clock_.now();
-  p = Pending{true, mask, now + static_cast<Nanos>(timeout_ms_) * kNanosPerMilli};
-  log_[fired_++ % kLog] = Firing{node, mask, now};
+  const std::uint32_t t = timeout_ms > 0 && timeout_ms < timeout_ms_ ? timeout_ms : timeout_ms_;
+  p = Pending{true, mask, now + static_cast<Nanos>(t) * kNanosPerMilli, t * sound_ / 2};
+  log_[fired_++ % kLog] = Firing{node, mask, now, t};
   return true;
 }
 
@@ -64,9 +66,10 @@ bool FakeRing::read(int node, hal::NodeRanges& out) {
   auto& p = nodes_[static_cast<std::size_t>(node)];
   if (!p.pending || never_ready || clock_.now() < p.ready) return false;
   p.pending = false;
-  for (int i = 0; i < hal::kSensorsPerNode; ++i)
-    out[static_cast<std::size_t>(i)] =
-        (p.mask & (1u << i)) ? world[static_cast<std::size_t>(hal::sensor_number(node, i) - 1)] : std::uint16_t{0};
+  for (int i = 0; i < hal::kSensorsPerNode; ++i) {
+    const std::uint16_t mm = world[static_cast<std::size_t>(hal::sensor_number(node, i) - 1)];
+    out[static_cast<std::size_t>(i)] = (p.mask & (1u << i)) && mm <= p.reach_mm ? mm : std::uint16_t{0};
+  }
   return true;
 }
 

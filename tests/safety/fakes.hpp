@@ -82,7 +82,7 @@ class FakeRing final : public hal::SonarRing {
     sound_ = sound_speed_m_s;
     ++configures;
   }
-  bool fire(int node, std::uint8_t mask) override;
+  bool fire(int node, std::uint8_t mask, std::uint32_t timeout_ms = 0) override;
   bool read(int node, hal::NodeRanges& out) override;
 
   std::array<std::uint16_t, hal::kRingSensors> world{};  // what each sensor would see, mm
@@ -96,6 +96,7 @@ class FakeRing final : public hal::SonarRing {
     int node = 0;
     std::uint8_t mask = 0;
     Nanos at = 0;
+    std::uint32_t timeout_ms = 0;  // the firing's time-out, ms (the configured one when none was given)
   };
   std::uint64_t firings() const { return fired_; }
   const Firing& firing(std::uint64_t i) const { return log_[i % kLog]; }
@@ -105,6 +106,7 @@ class FakeRing final : public hal::SonarRing {
     bool pending = false;
     std::uint8_t mask = 0;
     Nanos ready = 0;
+    std::uint32_t reach_mm = 0;  // farthest echo within the firing's time-out, mm
   };
   Clock& clock_;
   std::uint32_t timeout_ms_ = 33, sound_ = 300;

@@ -11,12 +11,16 @@
 namespace robuter::test {
 namespace {
 
-TEST(NoAlloc, TenThousandTicksOfTheSafetyCoreAllocateNothing) {
+// Both obstacle rules: the envelope (default: grid, pose history, sweeps) and the seed's.
+class NoAlloc : public testing::TestWithParam<const char*> {};
+
+TEST_P(NoAlloc, TenThousandTicksOfTheSafetyCoreAllocateNothing) {
 #if defined(ROBUTER_SANITIZE)
   GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
 #else
   log::set_level(log::Level::debug);
   Config cfg;
+  cfg.emergency.rule = GetParam();
   cfg.emergency.comm_limit_ticks = 500;
   auto r = std::make_unique<Rig>(cfg);
   ASSERT_TRUE(r->ok);
@@ -49,6 +53,8 @@ TEST(NoAlloc, TenThousandTicksOfTheSafetyCoreAllocateNothing) {
   log::flush();
 #endif
 }
+
+INSTANTIATE_TEST_SUITE_P(Rules, NoAlloc, testing::Values("envelope", "seed"));
 
 }  // namespace
 }  // namespace robuter::test

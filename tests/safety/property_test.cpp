@@ -28,7 +28,10 @@ testing::AssertionResult run_sequence(std::uint64_t seed, Totals& totals) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   auto chance = [&](double p) { return std::uniform_real_distribution<double>(0, 1)(rng) < p; };
 
-  Config cfg;
+  // Half the sequences on the seed's watch-dog rule, half on the envelope (the scripted distances
+  // have no geometry there: they only feed the grid random evidence).
+  Config cfg = seed_config();
+  if (seed % 2 == 1) cfg.emergency.rule = "envelope";
   cfg.emergency.latch = chance(0.6);
   cfg.emergency.comm_limit_ticks = static_cast<std::uint32_t>(pick(60, 400));
   cfg.emergency.motion_timeout_ms = chance(0.3) ? static_cast<std::uint32_t>(pick(200, 2000)) : 0;
@@ -84,7 +87,8 @@ testing::AssertionResult run_sequence(std::uint64_t seed, Totals& totals) {
       return testing::AssertionFailure() << "seed " << seed << " tick " << r->kernel.tick() - 1 << ": "
                                          << r->drive.first_violation();
     const EmergencyState& e = r->state();
-    if ((e.latched || e.held || e.cause != EmergencyCause::none) && r->drive.moving())
+    if ((e.latched || e.held || e.cause != EmergencyCause::none || (e.protective && e.granted_pct == 0)) &&
+        r->drive.moving())
       return testing::AssertionFailure() << "seed " << seed << " tick " << r->kernel.tick() - 1
                                          << ": the robot moves at the end of a tick while an emergency holds";
     if (e.held) ++totals.held_ticks;

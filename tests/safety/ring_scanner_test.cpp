@@ -1,5 +1,5 @@
 // The ring's firing sequence on a scripted ring: order, node delay, skipped nodes, table changes
-// on the next scan, no-echo ranges, lost readings, USN/USS statistics.
+// on the next scan, no-echo ranges, lost readings, USN/USS statistics; the watch schedule while moving.
 #include <gtest/gtest.h>
 
 #include "modules/us/ring_scanner.hpp"
@@ -146,6 +146,137 @@ TEST(RingScanner, NothingActiveStaysIdle) {
   r.want.active = 0;
   EXPECT_EQ(r.run(50), 0);
   EXPECT_EQ(r.ring.firings(), 0u);
+}
+
+// Moving straight ahead: the watch-dog set {23, 24, 1, 2, 3} on nodes 0 and 5, listening 8 ms
+// (1200 mm at 300 m/s), the other firings 20 ms.
+void watch_straight(ScanRig& r) {
+  r.want.priority = (1u << 22) | (1u << 23) | 0b111u;
+  r.want.priority_timeout_ms = 8;
+  r.want.priority_timeout_ticks = 1;
+  r.want.moving_timeout_ms = 20;
+  r.want.moving_timeout_ticks = 2;
+}
+
+TEST(RingScanner, MovingTheWatchSetFiresEveryOtherFiringTheRotationBetween) {
+  ScanRig r;
+  watch_straight(r);
+  r.run(200);
+  // The watch firing: sensors 1, 2, 3 (node 0) and 23, 24 (node 5) at once, 8 ms; between two
+  // of them, the rotation over every node, whole, 20 ms. Each logged per node.
+  struct Want {
+    int node;
+    std::uint8_t mask;
+    std::uint32_t ms;
+  };
+  constexpr std::uint8_t kAll = 0xF, k123 = 0b0111, k2324 = 0b1100;
+  const Want seq[] = {{0, k123, 8}, {5, k2324, 8}, {0, kAll, 20}, {0, k123, 8}, {5, k2324, 8}, {1, kAll, 20},
+                      {0, k123, 8}, {5, k2324, 8}, {2, kAll, 20}, {0, k123, 8}, {5, k2324, 8}, {3, kAll, 20},
+                      {0, k123, 8}, {5, k2324, 8}, {4, kAll, 20}, {0, k123, 8}, {5, k2324, 8}, {5, kAll, 20},
+                      {0, k123, 8}, {5, k2324, 8}, {0, kAll, 20}};
+  ASSERT_GE(r.ring.firings(), std::size(seq));
+  Nanos ready = 0;  // when the previous firing was read
+  for (std::size_t i = 0; i < std::size(seq); ++i) {
+    const auto& f = r.ring.firing(i);
+    EXPECT_EQ(f.node, seq[i].node) << "firing " << i;
+    EXPECT_EQ(f.mask, seq[i].mask) << "firing " << i;
+    EXPECT_EQ(f.timeout_ms, seq[i].ms) << "firing " << i;
+    const bool same_firing = i > 0 && seq[i].node == 5 && seq[i].mask == k2324;
+    if (same_firing) {
+      EXPECT_EQ(f.at, r.ring.firing(i - 1).at) << "both watch nodes fire together, firing " << i;
+      continue;
+    }
+    // The node delay (3 ticks) after each read, the read at the first tick the node reported.
+    if (i > 0) {
+      EXPECT_EQ(f.at, ready + 3 * kTick) << "firing " << i;
+    }
+    ready = f.at + (f.timeout_ms == 8 ? 1 : 2) * kTick;
+  }
+  EXPECT_EQ(r.ring.configures, 1) << "the full time-out stays configured; each firing carries its own";
+  EXPECT_GE(r.scanner.ranges().scans, 2u) << "a rotation over the six nodes is a scan";
+}
+
+TEST(RingScanner, MovingAShortenedFiringWithoutEchoReadsAsItsReach) {
+  ScanRig r;
+  watch_straight(r);
+  r.ring.world[0] = 3000;  // sensor 1: beyond the 8 ms firing's 1200 mm
+  r.ring.world[1] = 700;   // sensor 2: within it
+  r.run(3 + 1 + 1);        // the watch firing (3) is read (4)
+  EXPECT_EQ(r.scanner.ranges().mm[0], 1200);
+  EXPECT_EQ(r.scanner.ranges().no_echo & 1u, 1u) << "nothing within 1200 mm";
+  EXPECT_EQ(r.scanner.ranges().mm[1], 700);
+  EXPECT_EQ(r.scanner.ranges().no_echo & 2u, 0u);
+  EXPECT_EQ(r.scanner.ranges().mm[3], 0) << "sensor 4 is not in the watch set: not read yet";
+  r.run(5);  // the rotation's 20 ms firing of node 0 (7, read at 9): 3000 mm is within its reach
+  EXPECT_EQ(r.scanner.ranges().mm[0], 3000);
+  EXPECT_EQ(r.scanner.ranges().no_echo & 1u, 0u);
+  EXPECT_EQ(r.scanner.ranges().mm[3], 3000);
+}
+
+TEST(RingScanner, MovingAWatchSetFiresAtTheNextFiringAndStoppingRestartsTheSeedOrder) {
+  ScanRig r;
+  r.run(10);  // stopped: node 0 read at 7, node 1 due at 10
+  watch_straight(r);
+  r.run(1);  // tick 10: the robot moves, so the watch firing replaces node 1
+  ASSERT_EQ(r.ring.firings(), 3u);
+  EXPECT_EQ(r.ring.firing(1).node, 0);
+  EXPECT_EQ(r.ring.firing(2).node, 5);
+  EXPECT_EQ(r.ring.firing(2).timeout_ms, 8u);
+  EXPECT_EQ(r.ring.firing(2).at, 10 * kTick);
+  r.want.priority = 1u << 12 | 1u << 11 | 1u << 13;  // backwards now: sensors 12, 13, 14 (nodes 2 and 3)
+  r.run(4);  // read at 11; due at 14: the new watch set fires before the rotation
+  ASSERT_EQ(r.ring.firings(), 5u);
+  EXPECT_EQ(r.ring.firing(3).node, 2);
+  EXPECT_EQ(r.ring.firing(3).mask, 0b1000);
+  EXPECT_EQ(r.ring.firing(4).node, 3);
+  EXPECT_EQ(r.ring.firing(4).mask, 0b0011);
+  r.want.priority = 0;  // stopped
+  r.run(30);
+  // Read at 15, due at 18: the seed's order starts again from node 0.
+  ASSERT_GE(r.ring.firings(), 7u);
+  EXPECT_EQ(r.ring.firing(5).node, 0);
+  EXPECT_EQ(r.ring.firing(5).at, 18 * kTick);
+  EXPECT_EQ(r.ring.firing(5).timeout_ms, 33u);
+  EXPECT_EQ(r.ring.firing(6).node, 1);
+  EXPECT_EQ(r.ring.firing(6).at, 25 * kTick);
+}
+
+TEST(RingScanner, TheSeedScheduleIgnoresThePriority) {
+  ScanRig r;
+  watch_straight(r);
+  r.want.watch = false;
+  r.run(43);
+  ASSERT_GE(r.ring.firings(), 6u);
+  for (int n = 0; n < 6; ++n) {
+    EXPECT_EQ(r.ring.firing(n).node, n);
+    EXPECT_EQ(r.ring.firing(n).timeout_ms, 33u);
+  }
+}
+
+TEST(RingScanner, MovingWithOnlyTheWatchSetActiveTheRotationCoversIt) {
+  ScanRig r;
+  watch_straight(r);
+  r.want.active = r.want.priority;  // auto-toggle: the watch-dog set alone
+  r.run(100);
+  ASSERT_GE(r.ring.firings(), 8u);
+  // Watch (nodes 0 and 5), rotation node 0, watch, rotation node 5.
+  const int nodes[] = {0, 5, 0, 0, 5, 5, 0, 5};
+  for (std::size_t i = 0; i < std::size(nodes); ++i) EXPECT_EQ(r.ring.firing(i).node, nodes[i]) << i;
+  EXPECT_EQ(r.ring.firing(2).mask, 0b0111) << "the rotation fires the node's active sensors: 1, 2, 3";
+  EXPECT_EQ(r.ring.firing(2).timeout_ms, 20u);
+  EXPECT_GE(r.scanner.ranges().scans, 2u) << "a rotation over nodes 0 and 5 is a scan";
+}
+
+TEST(RingScanner, MovingAWatchNodeThatNeverReportsIsDroppedAlone) {
+  ScanRig r;
+  watch_straight(r);
+  r.run(5);
+  EXPECT_EQ(r.scanner.ranges().mm[0], 1200);
+  r.ring.never_ready = true;
+  r.run(40);
+  EXPECT_EQ(r.scanner.ranges().mm[0], 0) << "lost: no data, so the gate holds";
+  EXPECT_EQ(r.scanner.ranges().mm[23], 0);
+  EXPECT_GE(r.scanner.lost_reads(), 2u);
 }
 
 TEST(NodeMasks, SplitsTheTableByNode) {

@@ -43,7 +43,7 @@ std::uint32_t fired_sensors(SimFirmware& fw, int window = 150) {
 std::uint32_t selection(SimFirmware& fw) { return fw.bb().sonar_selection.reader().peek().active; }
 
 TEST(AutoToggle, OnlyTheWatchSetFiresWhileMovingNoneWhenStoppedAndUtIsOredWhenOff) {
-  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml");
+  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml", seed_rule_config());
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);

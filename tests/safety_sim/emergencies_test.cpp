@@ -177,7 +177,7 @@ TEST(Emergencies, SilenceBeyondTheCommunicationLimitStopsWithCommLoss) {
 // docs/SAFETY.md §4: an obstacle is an event, "gone once the robot has stopped" — an XR sent
 // while the robot still brakes is refused, and no new motion can start before it is at rest.
 TEST(Emergencies, AfterAnObstacleTripXrWaitsUntilTheRobotHasStopped) {
-  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml");
+  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", seed_rule_config());
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);
@@ -204,7 +204,7 @@ TEST(Emergencies, AfterAnObstacleTripXrWaitsUntilTheRobotHasStopped) {
 // The same with latch = false: the emergency clears by itself, but only once the robot is at
 // rest; a request sent while it brakes is not granted.
 TEST(Emergencies, WithoutLatchNoNewMotionIsGrantedWhileTheRobotStillBrakes) {
-  Config cfg;
+  Config cfg = seed_rule_config();
   cfg.emergency.latch = false;
   SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", cfg);
   ASSERT_TRUE(fw.ok()) << fw.error();
@@ -225,7 +225,7 @@ TEST(Emergencies, WithoutLatchNoNewMotionIsGrantedWhileTheRobotStillBrakes) {
 }
 
 TEST(Emergencies, StopByteReachesTheDriveInTheTickItIsRead) {
-  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml");
+  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml", seed_rule_config());
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("AM 20 20"), "ack");
   ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 20; }, 100));

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include "hal/sim/rng.hpp"
 #include "hal/sim/world_io.hpp"
+#include "modules/emergency/emergency.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
 #include "tests/safety_sim/support.hpp"
 
@@ -73,10 +75,18 @@ std::string random_world(sim::Rng& rng) {
   return {};
 }
 
+// The obstacle rule under test: the envelope (default) or, for the comparison figures of
+// docs/SAFETY.md, the seed's (ROBUTER_SAFETY_SIM_RULE=seed).
+std::string rule_under_test() {
+  const char* env = std::getenv("ROBUTER_SAFETY_SIM_RULE");
+  return env && std::string(env) == "envelope" ? "envelope" : Config{}.emergency.rule;
+}
+
 // A configuration varied per sequence: detection mask, latch, communication limit, auto-toggle,
 // motion time-out.
 Config random_config(sim::Rng& rng) {
   Config c = core_config();
+  c.emergency.rule = rule_under_test();
   if (rng.uniform() < 0.3) c.emergency.mask = static_cast<std::uint32_t>(rng.uniform(0.0, 8.0));
   c.emergency.latch = rng.uniform() < 0.85;
   if (rng.uniform() < 0.3) c.emergency.comm_limit_ticks = 100 + static_cast<std::uint32_t>(rng.uniform(0.0, 1400.0));
@@ -100,7 +110,9 @@ std::pair<int, int> random_speeds(sim::Rng& rng) {
 
 // Totals over a shard, for the figures.
 struct Totals {
-  long sequences = 0, ticks = 0, commands = 0, stop_bytes = 0, no_reply = 0;
+  long sequences = 0, ticks = 0, commands = 0, stop_bytes = 0, no_reply = 0, noisy = 0;
+  long protective_stops = 0;              // protective stops (envelope: obstacle evidence in the way)
+  double emergency_max_us = 0;            // longest activation of the emergency process, µs
   long latched_ticks = 0, moving_ticks = 0, us_on_ticks = 0, contacts_us_off = 0;
   long latched_moving = 0;                // ticks with a non-zero speed at the drive while latched
   long ungranted = 0;                     // ticks with a non-zero speed the gate no longer grants
@@ -123,6 +135,9 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   TempWorld file(toml);
   hal::SimOptions opt;
   opt.seed = seed;
+  // Sonar noise (range noise, lost and spurious echoes) and odometry noise in half the sequences.
+  opt.sonar_noise = opt.odometry_noise = rng.uniform() < 0.5;
+  if (opt.sonar_noise) ++tot.noisy;
   SimFirmware fw(file.path(), cfg, opt);
   if (!fw.ok()) {
     report = "seed " + std::to_string(seed) + ": " + fw.error();
@@ -144,14 +159,22 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
       std::string reads;
       for (int s = 1; s <= 24; ++s)
         if (r.read_tick[static_cast<std::size_t>(s - 1)] == tick) reads += fmt::format(" s{}={}", s, r.mm[static_cast<std::size_t>(s - 1)]);
+      std::string env;
+      if (const auto row = fw.kernel().find("emergency")) {
+        if (auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*row).process); em && (w.left || w.right)) {
+          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(w.left, w.right);
+          env = fmt::format(" | env k {:.2f} miss {} obst {} at ({:.0f}, {:.0f})", v.fraction, v.missing, v.obstacle,
+                            v.where.x() * 1000.0, v.where.y() * 1000.0);
+        }
+      }
       sim::Vec2 near;
       const double clear = body_clearance(fw.sim().world(), fw.sim().robot().params().geometry, pose, &near);
       std::printf("%llu cmd#%u %d %d%s src%d | drive %d %d | main %d watch %06x safety %u held %d latched %d cause %d "
-                  "sensor %d | pose %.3f %.3f %.1f° clear %.0f mm at (%.0f, %.0f) bump %d |%s\n",
+                  "sensor %d | pose %.3f %.3f %.1f° clear %.0f mm at (%.0f, %.0f) bump %d |%s%s\n",
                   static_cast<unsigned long long>(tick), c.seq, c.left, c.right, c.stop ? " stop" : "",
                   static_cast<int>(c.source), w.left, w.right, e.main_sensor, e.watch, e.safety_mm, e.held, e.latched,
                   static_cast<int>(e.cause), e.sensor, pose.x, pose.y, sim::rad_to_deg(pose.theta),
-                  clear * 1000.0, near.x() * 1000.0, near.y() * 1000.0, fw.sim().robot().bumper(), reads.c_str());
+                  clear * 1000.0, near.x() * 1000.0, near.y() * 1000.0, fw.sim().robot().bumper(), reads.c_str(), env.c_str());
     });
   }
   std::string log;
@@ -205,7 +228,11 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
     } else if (k < 0.82) {
       send(rng.uniform() < 0.5 ? "XE" : "BO");
     } else if (k < 0.835) {
-      send(fmt::format("UD{}", irand(rng, 0, 8)));
+      // Node delays from the seed's 3 ticks to 10 s a node (a full scan of a minute), log-uniform
+      // above 10: the envelope must take the age of every reading into account.
+      const int ud = rng.uniform() < 0.5 ? irand(rng, 3, 10)
+                                         : static_cast<int>(std::lround(std::exp(rng.uniform(std::log(10.0), std::log(1000.0)))));
+      send(fmt::format("UD{}", ud));
     } else if (k < 0.845) {
       send(fmt::format("Ut{}", irand(rng, 15, 60)));
     } else if (k < 0.885) {
@@ -238,6 +265,9 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
     }
   }
   ++tot.sequences;
+  tot.protective_stops += fw.bb().emergency.reader().peek().protective_stops;
+  if (const auto row = fw.kernel().find("emergency"))
+    tot.emergency_max_us = std::max(tot.emergency_max_us, static_cast<double>(fw.kernel().stats(*row).max_ns) / 1000.0);
   tot.ticks += static_cast<long>(mon.ticks);
   tot.latched_ticks += static_cast<long>(mon.latched_ticks);
   tot.moving_ticks += static_cast<long>(mon.moving_ticks);
@@ -257,10 +287,10 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   }
   const bool broke = mon.latched_moving > 0 || mon.ungranted > 0 || (contacts_fail && mon.contact_us_on > 0);
   if (!broke) return;
-  report = fmt::format("seed {} (mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
+  report = fmt::format("seed {} (rule {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
                        "  latched-moving {}, ungranted {} (longest {} ticks), contact with sonar on {}\n"
                        "  commands: {}\n  world:\n{}",
-                       seed, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
+                       seed, cfg.emergency.rule, opt.sonar_noise, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
                        cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms, mon.first_violation,
                        mon.latched_moving, mon.ungranted, mon.longest_disagreement, mon.contact_us_on, log, toml);
 }
@@ -282,9 +312,11 @@ Totals run_shard(int shard, bool contacts_fail) {
     run_sequence(seed, tot, report, contacts_fail);
     if (!report.empty() && ++failures <= 3) ADD_FAILURE() << report;
   }
-  std::printf("shard %d/%d: %ld sequences, %ld ticks (%.0f simulated s), %ld commands + %ld stop bytes, %ld unanswered\n",
-              shard + 1, kShards, tot.sequences, tot.ticks, static_cast<double>(tot.ticks) / 100.0, tot.commands,
-              tot.stop_bytes, tot.no_reply);
+  std::printf("shard %d/%d (rule %s): %ld sequences (%ld with sonar and odometry noise), %ld ticks (%.0f simulated s), "
+              "%ld commands + %ld stop bytes, %ld unanswered, %ld protective stops, worst emergency activation %.0f us\n",
+              shard + 1, kShards, rule_under_test().c_str(), tot.sequences, tot.noisy, tot.ticks,
+              static_cast<double>(tot.ticks) / 100.0, tot.commands, tot.stop_bytes, tot.no_reply, tot.protective_stops,
+              tot.emergency_max_us);
   std::printf("  ticks moving %ld, latched %ld, sonar on %ld; trips %ld:", tot.moving_ticks, tot.latched_ticks,
               tot.us_on_ticks, tot.trips);
   for (std::size_t c = 1; c < tot.trips_by_cause.size(); ++c) {
@@ -308,25 +340,26 @@ class RandomSequences : public testing::TestWithParam<int> {};
 // The gate's invariants, strict, on every tick of every sequence: no non-zero speed reaches the
 // drive while the emergency is latched, and the drive never runs at a speed the gate does not
 // grant now (a new verdict reaches it in the tick it is made — before kernel commit 595b67f a
-// command taken between ticks could wait up to one executor period; this test found it).
-TEST_P(RandomSequences, NoSpeedAtTheDriveWhileLatched) {
+// command taken between ticks could wait up to one executor period; this test found it). Runs
+// the default obstacle rule (ROBUTER_SAFETY_SIM_RULE=envelope for the envelope); contacts while
+// the sonar watches are listed, not asserted: see the quarantined test below.
+TEST_P(RandomSequences, NoSpeedWhileLatched) {
   const Totals tot = run_shard(GetParam(), false);
   EXPECT_EQ(tot.latched_moving, 0);
   EXPECT_EQ(tot.ungranted, 0);
   RecordProperty("sequences", static_cast<int>(tot.sequences));
   RecordProperty("ticks", static_cast<int>(tot.ticks));
   RecordProperty("trips", static_cast<int>(tot.trips));
+  RecordProperty("protective_stops", static_cast<int>(tot.protective_stops));
   RecordProperty("latched_moving_ticks", static_cast<int>(tot.latched_moving));
   RecordProperty("drive_behind_gate_ticks", static_cast<int>(tot.ungranted));
   RecordProperty("contact_sequences", static_cast<int>(tot.contact_sequences));
 }
 
-// Quarantined (run with --gtest_also_run_disabled_tests): the robot never touches anything while
-// the ultrasonic detection is on. It does not hold yet — about 0.4 % of the sequences end in a
-// contact, every one where the seed's watch-dog sets do not look (backward curves, the inner
-// front corner of a curve, the rear corners going straight back, the sweep of a fast rotation
-// while it stops) or where the surface is too oblique to echo; see docs/SAFETY.md, "Verified in
-// simulation". The enabled test above prints the same contacts on every run.
+// Issue #13's criterion: no contact while the ultrasonic detection is on. Quarantined: neither
+// rule meets it yet (docs/SAFETY.md §12–§13 list the seeds — the seed's rule 4 of 2,000 with
+// the watch schedule, the envelope 1: seed 1631, a creep through the blind near field into a box
+// no reading ever placed). Run with --gtest_also_run_disabled_tests.
 TEST_P(RandomSequences, DISABLED_NoContactWhileTheSonarWatches) {
   const Totals tot = run_shard(GetParam(), true);
   EXPECT_EQ(tot.contact_sequences, 0);

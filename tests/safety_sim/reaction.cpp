@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hal/sim/rng.hpp"
+#include "hal/sim/sonar.hpp"
 #include "modules/emergency/obstacle_check.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
 #include "tests/safety_sim/support.hpp"
@@ -62,7 +63,19 @@ std::int64_t percentile(const std::vector<std::int64_t>& sorted, double p) {
   return sorted[std::min(sorted.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
-ReactionResult run_trial(const ReactionTrial& t) {
+Config seed_ring_config(Config cfg) {
+  cfg.sonar.schedule = "seed";
+  ProcessOverride us;
+  us.name = "us";
+  us.period = 4;
+  us.offset = 2;
+  cfg.processes.push_back(us);
+  return cfg;
+}
+
+ReactionResult run_trial(const ReactionTrial& t) { return run_trial(t, core_config()); }
+
+ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
   ReactionResult out;
   const std::string toml = world_toml(t);
   if (auto err = check_world(toml)) {
@@ -72,7 +85,7 @@ ReactionResult run_trial(const ReactionTrial& t) {
   TempWorld file(toml);
   hal::SimOptions opt;
   opt.seed = t.seed;
-  SimFirmware fw(file.path(), core_config(), opt);
+  SimFirmware fw(file.path(), seed_rule_config(cfg), opt);
   if (!fw.ok()) {
     out.error = fw.error();
     return out;
@@ -81,6 +94,7 @@ ReactionResult run_trial(const ReactionTrial& t) {
   const auto geom = robot.params().geometry;
   sim::GridScratch scratch;
   scratch.prepare(fw.sim().world().segments().size());
+  sim::SonarModel ideal(fw.sim().world(), fw.sim().ring_params());  // the ring without noise
   Wheels last{};           // the drive's speeds at the end of the previous tick
   bool armed = false;      // the obstacle is there to be found (approach: always; teleport: once placed)
   // The probe: the first watch-dog reading under the safety distance of the speeds the drive
@@ -95,7 +109,13 @@ ReactionResult run_trial(const ReactionTrial& t) {
       if (out.appear_tick == 0 &&
           body_clearance_near(fw.sim().world(), geom, robot.pose(), 1.5, scratch) * 1000.0 <= safety_mm)
         out.appear_tick = tick;
-      for (int s : safety::watch_sensors(safety::main_sensor(last.left, last.right, 600))) {
+      const auto watch = safety::watch_sensors(safety::main_sensor(last.left, last.right, 600));
+      for (int s : watch) {
+        if (out.visible_tick != 0) break;
+        const double m = ideal.measure(robot.pose(), fw.sim().layout()[static_cast<std::size_t>(s - 1)]);
+        if (m > 0.0 && std::lround(m * 1000.0) <= static_cast<long>(safety_mm)) out.visible_tick = tick;  // as the ring rounds
+      }
+      for (int s : watch) {
         const auto i = static_cast<std::size_t>(s - 1);
         if (r.read_tick[i] == tick && r.mm[i] > 0 && r.mm[i] <= safety_mm) {
           out.read_tick = tick;
@@ -125,6 +145,7 @@ ReactionResult run_trial(const ReactionTrial& t) {
     robot.place(pose_before_box(t, t.distance));
     robot.command_cm_s(t.left, t.right);
     out.appear_tick = fw.kernel().tick();
+    out.visible_tick = out.appear_tick;
   }
   armed = true;
   const auto& e = fw.bb().emergency.reader().peek();

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/config.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter::test::safety_sim {
@@ -32,6 +33,7 @@ struct ReactionResult {
   int range_mm = 0;                // that reading, mm
   std::uint32_t safety_mm = 0;     // the safety distance in force, mm
   std::uint64_t appear_tick = 0;   // first tick the body was within the safety distance (teleport: the placement)
+  std::uint64_t visible_tick = 0;  // first tick a watch-dog sensor's ideal reading (no noise) was under the limit
   std::uint64_t read_tick = 0;     // UltrasonicRanges.read_tick of that reading
   std::uint64_t stop_tick = 0;     // tick in which SimDrive::commanded became zero
   bool contact = false;            // the bumper was pressed at some point
@@ -39,14 +41,22 @@ struct ReactionResult {
 
   std::int64_t reaction_ticks() const { return static_cast<std::int64_t>(stop_tick) - static_cast<std::int64_t>(read_tick); }
   std::int64_t detection_ticks() const { return static_cast<std::int64_t>(read_tick) - static_cast<std::int64_t>(appear_tick); }
+  // The ring's own part: from when a watch-dog sensor could read it under the limit to the read.
+  std::int64_t ring_ticks() const { return static_cast<std::int64_t>(read_tick) - static_cast<std::int64_t>(visible_tick); }
 };
 
 // A trial drawn from `seed`: speeds 10…80 cm/s (straight or a soft curve), box size, angle,
 // offset, and a distance outside (approach) or inside (teleport) the safety distance.
 ReactionTrial random_trial(std::uint64_t seed, bool teleport);
 
-// Runs one trial on a fresh firmware in a 16 × 8 m arena.
+// Runs one trial on a fresh firmware in a 16 × 8 m arena, configured by `cfg` (core_config()
+// by default).
 ReactionResult run_trial(const ReactionTrial& t);
+ReactionResult run_trial(const ReactionTrial& t, const Config& cfg);
+
+// The ring as the firmware ran before the watch schedule: the seed's order while moving and the
+// `us` row at the seed's period 4 (offset 2), on top of `cfg`. For before/after figures.
+Config seed_ring_config(Config cfg);
 
 // A percentile of a sorted sample (nearest rank); 0 for an empty one.
 std::int64_t percentile(const std::vector<std::int64_t>& sorted, double p);

@@ -36,6 +36,16 @@ Config core_config() {
   return c;
 }
 
+Config seed_rule_config(Config c) {
+  c.emergency.rule = "seed";
+  return c;
+}
+
+Config envelope_rule_config(Config c) {
+  c.emergency.rule = "envelope";
+  return c;
+}
+
 // The same conversion as SimRobot, so clearances are measured on the body the simulator moves.
 sim::RobotGeometry geometry(const Config& cfg) {
   sim::RobotGeometry g;
@@ -144,7 +154,9 @@ std::optional<XeReply> parse_xe(const std::optional<std::string>& reply) {
   std::istringstream in(*reply);
   std::string tag;
   XeReply r;
-  if (!(in >> tag >> r.held >> r.latched >> r.cause >> r.enabled >> r.clock) || tag != "E") return std::nullopt;
+  if (!(in >> tag >> r.held >> r.latched >> r.cause >> r.enabled >> r.clock >> r.granted_pct >> r.rule >> r.protective) ||
+      tag != "E")
+    return std::nullopt;
   return r;
 }
 

@@ -36,6 +36,13 @@ std::optional<std::string> check_world(const std::string& toml, const Config& cf
 // the start-up of modules that stay idle there (a planner's map) would dominate the run time.
 Config core_config();
 
+// The default configuration on the seed's obstacle rule (the watch-dog sets, docs/SAFETY.md §2–§3):
+// the acceptance tests of §12 that measure that rule (wall stop, reaction, watch sets, obstacle
+// trips, auto-toggle) run on it; the envelope (§13) has its own.
+Config seed_rule_config(Config c = Config{});
+// The same configuration on the envelope's obstacle rule (docs/SAFETY.md §13; not yet the default).
+Config envelope_rule_config(Config c = Config{});
+
 // The simulator's body geometry for a firmware configuration (as SimRobot builds it).
 sim::RobotGeometry geometry(const Config& cfg = Config{});
 
@@ -58,12 +65,15 @@ struct BoReply {
 };
 std::optional<BoReply> parse_bo(const std::optional<std::string>& reply);
 
-// `XE` reply: E <held> <latched> <cause> <enabled> <clock>.
+// `XE` reply: E <held> <latched> <cause> <enabled> <clock> <granted-%> <rule> <protective>.
 struct XeReply {
   int held = 0, latched = 0;
   std::string cause;
   int enabled = 0;
   long long clock = 0;
+  int granted_pct = 0;   // share of the request granted, %
+  std::string rule;      // envelope or seed
+  int protective = 0;    // protective stop in force
 };
 std::optional<XeReply> parse_xe(const std::optional<std::string>& reply);
 

@@ -27,7 +27,7 @@ struct WallRun {
 // rest; checks on every tick that nothing touched and no speed reached the drive after the trip.
 WallRun run_at_wall(int speed) {
   WallRun out;
-  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml");
+  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", seed_rule_config());
   EXPECT_TRUE(fw.ok()) << fw.error();
   if (!fw.ok()) return out;
   SafetyMonitor mon;

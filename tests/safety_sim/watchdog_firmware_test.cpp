@@ -61,7 +61,7 @@ std::string list(std::uint32_t m) {
 }
 
 TEST(WatchdogSets, EveryMainSensorAndItsWatchSetFromAmOnTheWholeFirmware) {
-  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml");
+  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml", seed_rule_config());
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);

@@ -32,20 +32,22 @@ bool CanSonarRing::alive(int node) const {
 }
 
 // Busy while a firing is outstanding, unless it is overdue (lost: the scanner has moved on).
-bool CanSonarRing::fire(int node, std::uint8_t mask) {
+// The fire frame carries the firing's own time-out: the configured one, or a shorter one.
+bool CanSonarRing::fire(int node, std::uint8_t mask, std::uint32_t timeout_ms) {
   if (!alive(node)) return false;
   Channel& c = ch_[static_cast<std::size_t>(node)];
-  const std::int64_t due = c.fired_us + static_cast<std::int64_t>(echo_timeout_ms_) * 1000 + kLostGraceUs;
+  const std::int64_t due = c.fired_us + static_cast<std::int64_t>(c.timeout_ms) * 1000 + kLostGraceUs;
   if (c.pending && now_us_ < due) return false;
+  const std::uint32_t t = timeout_ms > 0 && timeout_ms < echo_timeout_ms_ ? timeout_ms : echo_timeout_ms_;
   const auto id = static_cast<std::uint8_t>(base_ + node);
-  if (!bus_.send(sonar::fire(id, mask, static_cast<std::uint16_t>(echo_timeout_ms_),
-                             static_cast<std::uint16_t>(sound_speed_))))
+  if (!bus_.send(sonar::fire(id, mask, static_cast<std::uint16_t>(t), static_cast<std::uint16_t>(sound_speed_))))
     return false;
   bus_.flush();  // fired now, not at the backend's next activation
   c.pending = true;
   c.ready = false;
   c.fired_us = now_us_;
   c.mask = mask;
+  c.timeout_ms = t;
   return true;
 }
 

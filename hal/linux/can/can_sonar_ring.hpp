@@ -18,7 +18,7 @@ class CanSonarRing final : public SonarRing {
 
   CanSonarRing(FrameTransport& bus, std::uint8_t node_base, std::uint32_t heartbeat_timeout_ms);
   void configure(std::uint32_t timeout_ms, std::uint32_t sound_speed_m_s) override;
-  bool fire(int node, std::uint8_t mask) override;
+  bool fire(int node, std::uint8_t mask, std::uint32_t timeout_ms = 0) override;
   bool read(int node, NodeRanges& out) override;
 
   void start(std::int64_t now_us);
@@ -38,6 +38,7 @@ class CanSonarRing final : public SonarRing {
     bool pending = false;                // fired, ranges not yet back
     std::int64_t fired_us = 0;           // when, µs
     std::uint8_t mask = 0;               // transducers fired
+    std::uint32_t timeout_ms = 0;        // that firing's echo time-out (sent in its fire frame), ms
     bool ready = false;                  // ranges back for the pending firing
     NodeRanges mm{};                     // those ranges, mm
     std::uint8_t faulty = 0;             // faulty transducers (status frame), bit i

@@ -158,8 +158,9 @@ void SimSonarNode::send(const can_frame& f) {
   if (!silent_) bus_.send(f);
 }
 
-// Fires only when operational and idle; the ranges go out one echo time-out later, the status
-// just before them so the host knows which transducers failed.
+// Fires only when operational and idle; the ranges go out once the last fired transducer heard
+// its echo (2 · range / c), or one echo time-out later when one hears nothing within it (out of
+// reach or faulty); the status just before them so the host knows which transducers failed.
 void SimSonarNode::step(std::int64_t now_us) {
   if (!booted_) {
     booted_ = true;
@@ -182,7 +183,14 @@ void SimSonarNode::step(std::int64_t now_us) {
       busy_ = true;
       mask_ = req.mask;
       reach_mm_ = static_cast<std::uint32_t>(req.timeout_ms) * req.sound_speed_m_s / 2;
-      answer_us_ = now_us + static_cast<std::int64_t>(req.timeout_ms) * 1000;
+      std::int64_t listen_us = 0;
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (!((mask_ >> i) & 1u)) continue;
+        const bool heard = !((faulty_ >> i) & 1u) && world_[i] > 0 && world_[i] <= reach_mm_;
+        const std::int64_t echo_us = req.sound_speed_m_s > 0 ? 2000LL * world_[i] / req.sound_speed_m_s : 0;
+        listen_us = std::max(listen_us, heard ? echo_us : static_cast<std::int64_t>(req.timeout_ms) * 1000);
+      }
+      answer_us_ = now_us + listen_us;
     }
   }
   if (busy_ && now_us >= answer_us_) {

@@ -86,8 +86,9 @@ class SimDriveNode {
   std::uint32_t heartbeat_events_ = 0;             // heartbeat events, count
 };
 
-// An ultrasonic node of four transducers (docs/CAN.md frame set): fire → ranges after the
-// echo time-out; heartbeat every 100 ms; status with the faulty-transducer mask.
+// An ultrasonic node of four transducers (docs/CAN.md frame set): fire → ranges once every
+// fired transducer heard its echo, or after the firing's time-out when one did not; heartbeat
+// every 100 ms; status with the faulty-transducer mask.
 class SimSonarNode {
  public:
   static constexpr std::int64_t kHeartbeatUs = 100'000;  // heartbeat period, µs
@@ -110,7 +111,7 @@ class SimSonarNode {
   std::array<std::uint16_t, 4> world_{};  // true ranges, mm
   std::uint8_t faulty_ = 0;               // faulty transducers, bit i
   bool silent_ = false;
-  bool busy_ = false;                     // a firing waits for its time-out
+  bool busy_ = false;                     // a firing waits for its echoes
   std::uint8_t mask_ = 0;                 // transducers of that firing
   std::uint32_t reach_mm_ = 0;            // farthest echo within the firing's time-out, mm
   std::int64_t answer_us_ = 0;            // when the ranges go out, µs

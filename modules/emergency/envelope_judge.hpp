@@ -1,0 +1,18 @@
+// What the gate asks of the obstacle envelope: how much of a request may be granted now.
+#pragma once
+
+#include <cstdint>
+
+#include "modules/emergency/swept_envelope.hpp"
+
+namespace robuter::safety {
+
+// The gate's view of the envelope (the emergency module's RingEnvelope; fakes in the tests).
+class EnvelopeJudge {
+ public:
+  virtual ~EnvelopeJudge() = default;
+  // The verdict on wheel speeds (left, right) cm/s for the robot as it is now.
+  virtual EnvelopeVerdict judge(std::int32_t left, std::int32_t right) = 0;
+};
+
+}  // namespace robuter::safety

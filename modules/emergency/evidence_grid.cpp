@@ -1,0 +1,159 @@
+// The evidence grid: free-space certificates of each reading's cone, obstacle evidence on its echo arc.
+#include "modules/emergency/evidence_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace robuter::safety {
+
+namespace {
+// The smallest power of two not below n (the window's side, so slots are a mask away).
+int power_of_two(int n) {
+  int p = 1;
+  while (p < n) p <<= 1;
+  return p;
+}
+}  // namespace
+
+EvidenceGrid::EvidenceGrid(const GridSettings& s) : s_(s) {
+  s_.side = power_of_two(std::max(s_.side, 8));
+  mask_ = s_.side - 1;
+  cells_.assign(static_cast<std::size_t>(s_.side) * static_cast<std::size_t>(s_.side), Cell{});
+}
+
+void EvidenceGrid::reset() {
+  std::fill(cells_.begin(), cells_.end(), Cell{});
+  placed_ = false;
+}
+
+int EvidenceGrid::index(double v) const { return static_cast<int>(std::floor(v / s_.cell)); }
+
+void EvidenceGrid::clear_column(int gx) {
+  const int x = gx & mask_;
+  for (int y = 0; y < s_.side; ++y) cells_[static_cast<std::size_t>(y * s_.side + x)] = Cell{};
+}
+
+void EvidenceGrid::clear_row(int gy) {
+  const int y = gy & mask_;
+  std::fill_n(cells_.begin() + static_cast<std::ptrdiff_t>(y * s_.side), s_.side, Cell{});
+}
+
+// Cells leaving the window are cleared: what was known there is forgotten, never misplaced.
+void EvidenceGrid::follow(const Eigen::Vector2d& robot) {
+  const int half = s_.side / 2;
+  const int rx = index(robot.x()), ry = index(robot.y());
+  if (!placed_) {
+    ox_ = rx - half;
+    oy_ = ry - half;
+    placed_ = true;
+    return;
+  }
+  if (std::abs(rx - (ox_ + half)) > s_.recentre_cells || std::abs(ry - (oy_ + half)) > s_.recentre_cells) {
+    const int nx = rx - half, ny = ry - half;
+    if (std::abs(nx - ox_) >= s_.side || std::abs(ny - oy_) >= s_.side) {
+      reset();
+      ox_ = nx;
+      oy_ = ny;
+      placed_ = true;
+      return;
+    }
+    for (int gx = std::min(ox_, nx); gx < std::max(ox_, nx); ++gx) clear_column(gx < nx ? gx : gx + s_.side);
+    for (int gy = std::min(oy_, ny); gy < std::max(oy_, ny); ++gy) clear_row(gy < ny ? gy : gy + s_.side);
+    ox_ = nx;
+    oy_ = ny;
+  }
+}
+
+// Free space is certified only for cells wholly between the blanking range and the echo (less the
+// range noise allowance), with their centre inside the cone; the arc is sampled at half a cell.
+void EvidenceGrid::add_reading(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range,
+                               bool no_echo, bool contradicts) {
+  if (!placed_ || tick == 0) return;
+  const double half_diag = s_.cell * 0.7071067811865476;
+  const double c = std::cos(direction), sn = std::sin(direction);
+  const double ch = std::cos(s_.half_angle), sh = std::sin(s_.half_angle);
+  const double r_in = s_.blanking + half_diag;
+  const double r_out = std::min(range - (no_echo ? 0.0 : s_.shrink), s_.reach) - half_diag;
+  if (r_out > r_in) {
+    // Bounding box of the sector: apex, both edge ends, and the arc's axis extremes inside the cone.
+    Eigen::Vector2d lo = origin, hi = origin;
+    auto add = [&](double ux, double uy) {
+      const Eigen::Vector2d p = origin + r_out * Eigen::Vector2d(ux, uy);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    };
+    add(c * ch + sn * sh, sn * ch - c * sh);
+    add(c * ch - sn * sh, sn * ch + c * sh);
+    if (c >= ch) add(1.0, 0.0);
+    if (-c >= ch) add(-1.0, 0.0);
+    if (sn >= ch) add(0.0, 1.0);
+    if (-sn >= ch) add(0.0, -1.0);
+    const int x0 = std::max(index(lo.x()), ox_), x1 = std::min(index(hi.x()), ox_ + s_.side - 1);
+    const int y0 = std::max(index(lo.y()), oy_), y1 = std::min(index(hi.y()), oy_ + s_.side - 1);
+    const double rin2 = r_in * r_in, rout2 = r_out * r_out;
+    for (int gy = y0; gy <= y1; ++gy) {
+      const double dy = (gy + 0.5) * s_.cell - origin.y();
+      for (int gx = x0; gx <= x1; ++gx) {
+        const double dx = (gx + 0.5) * s_.cell - origin.x();
+        const double r2 = dx * dx + dy * dy;
+        if (r2 < rin2 || r2 > rout2) continue;
+        const double along = dx * c + dy * sn;
+        if (along <= 0.0 || along * along < r2 * ch * ch) continue;  // outside the cone
+        Cell& cell = at(gx, gy);
+        const bool evidence = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
+        if (evidence && !contradicts) continue;
+        cell.free_tick = tick;
+      }
+    }
+  }
+  if (no_echo || range > s_.reach) return;
+  // The echo came from somewhere on the arc at `range`: every cell the arc crosses holds evidence.
+  const int n = std::max(2, static_cast<int>(std::ceil(2.0 * s_.half_angle * range / (0.5 * s_.cell)))) + 1;
+  for (int i = 0; i < n; ++i) {
+    const double a = direction - s_.half_angle + 2.0 * s_.half_angle * i / (n - 1);
+    const Eigen::Vector2d p = origin + range * Eigen::Vector2d(std::cos(a), std::sin(a));
+    const int gx = index(p.x()), gy = index(p.y());
+    if (contains(gx, gy)) at(gx, gy).hit_tick = tick;
+  }
+}
+
+// A cell is wholly inside the rectangle when its centre is half a diagonal inside every side.
+void EvidenceGrid::certify_rectangle(std::uint64_t tick, const Eigen::Vector2d& position, double heading,
+                                     const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  if (!placed_ || tick == 0) return;
+  const double half_diag = s_.cell * 0.7071067811865476;
+  const Eigen::Vector2d in_lo = lo + Eigen::Vector2d::Constant(half_diag);
+  const Eigen::Vector2d in_hi = hi - Eigen::Vector2d::Constant(half_diag);
+  if (in_lo.x() > in_hi.x() || in_lo.y() > in_hi.y()) return;
+  const double c = std::cos(heading), sn = std::sin(heading);
+  Eigen::Vector2d wlo = position, whi = position;
+  for (const Eigen::Vector2d& k : {Eigen::Vector2d(lo.x(), lo.y()), Eigen::Vector2d(lo.x(), hi.y()),
+                                   Eigen::Vector2d(hi.x(), lo.y()), Eigen::Vector2d(hi.x(), hi.y())}) {
+    const Eigen::Vector2d w = position + Eigen::Vector2d(c * k.x() - sn * k.y(), sn * k.x() + c * k.y());
+    wlo = wlo.cwiseMin(w);
+    whi = whi.cwiseMax(w);
+  }
+  const int x0 = std::max(index(wlo.x()), ox_), x1 = std::min(index(whi.x()), ox_ + s_.side - 1);
+  const int y0 = std::max(index(wlo.y()), oy_), y1 = std::min(index(whi.y()), oy_ + s_.side - 1);
+  for (int gy = y0; gy <= y1; ++gy) {
+    const double dy = (gy + 0.5) * s_.cell - position.y();
+    for (int gx = x0; gx <= x1; ++gx) {
+      const double dx = (gx + 0.5) * s_.cell - position.x();
+      const double lx = c * dx + sn * dy, ly = -sn * dx + c * dy;
+      if (lx < in_lo.x() || lx > in_hi.x() || ly < in_lo.y() || ly > in_hi.y()) continue;
+      at(gx, gy).free_tick = tick;
+    }
+  }
+}
+
+CellState EvidenceGrid::state(const Eigen::Vector2d& p, std::uint64_t tick, std::uint64_t max_age) const {
+  const int gx = index(p.x()), gy = index(p.y());
+  if (!placed_ || !contains(gx, gy)) return CellState::unknown;
+  const Cell& cell = at(gx, gy);
+  if (cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick) return CellState::obstacle;
+  if (cell.free_tick == 0) return CellState::unknown;
+  return tick - cell.free_tick <= max_age || cell.free_tick > tick ? CellState::free : CellState::stale;
+}
+
+}  // namespace robuter::safety

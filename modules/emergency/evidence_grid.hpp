@@ -1,0 +1,84 @@
+// Obstacle evidence and free-space certificates of the ring, in a rolling grid of the odometry frame.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace robuter::safety {
+
+// What the grid knows about one point at a given tick.
+enum class CellState : std::uint8_t {
+  unknown,   // never certified free, and no obstacle evidence
+  obstacle,  // obstacle evidence newer than (or as new as) the last free certificate
+  stale,     // certified free, but longer ago than the age limit
+  free,      // certified free within the age limit
+};
+
+// Shape and behaviour of the grid.
+struct GridSettings {
+  double cell = 0.025;              // cell side, m
+  int side = 256;                   // cells per side of the window (a power of two), count
+  double blanking = 0.15;           // a reading certifies nothing nearer to its transducer, m
+  double half_angle = 0.218166;     // beam cone half-angle, rad (12.5°)
+  double reach = 2.5;               // a reading certifies free space and marks echoes this far at most, m
+  double shrink = 0.03;             // free space ends this much short of an echo (range noise), m
+  int recentre_cells = 24;          // the window follows once the robot is this many cells off its centre
+};
+
+// A rolling window of cells centred on the robot (toroidal storage: moving the window clears only
+// the rows and columns that leave it). Per cell: the tick of its last free certificate and of its
+// newest obstacle evidence. Allocated once at construction; no other call allocates.
+class EvidenceGrid {
+ public:
+  explicit EvidenceGrid(const GridSettings& s);
+
+  // Forgets everything (the odometry frame was set, or a fresh start). Work: side² cells.
+  void reset();
+  // Keeps the window around `robot` (odometry frame, m). Work: at most side² cells when it jumps
+  // by a whole window, else (columns + rows moved) × side.
+  void follow(const Eigen::Vector2d& robot);
+  // One ring reading at `tick`, fired from `origin` along `direction` (odometry frame, m, rad),
+  // `range` m. The cone is certified free from the blanking range to range − shrink (cells wholly
+  // in that band, centre in the cone); the echo's arc is marked as obstacle evidence unless
+  // `no_echo`. `contradicts` false: the certificate leaves cells with obstacle evidence as they
+  // are (a single no-echo may be a lost echo). Work: the cells of the cone's bounding box (≤ 4,500
+  // at the default reach) plus ≤ 200 arc samples.
+  void add_reading(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
+                   bool contradicts);
+  // Certifies free every cell wholly under the rectangle [lo, hi] (robot frame, m) of a robot at
+  // (position, heading): the body is there, so nothing else is. Work: cells of its bounding box.
+  void certify_rectangle(std::uint64_t tick, const Eigen::Vector2d& position, double heading,
+                         const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
+  // What the grid says of the point p (odometry frame, m) at `tick`; free certificates older than
+  // `max_age` ticks are stale. Outside the window: unknown.
+  CellState state(const Eigen::Vector2d& p, std::uint64_t tick, std::uint64_t max_age) const;
+
+  const GridSettings& settings() const { return s_; }
+  // Global cell index of the window's low corner (tests).
+  Eigen::Vector2i window_origin() const { return {ox_, oy_}; }
+
+ private:
+  // A cell's two ticks; 0 = never.
+  struct Cell {
+    std::uint64_t free_tick = 0;  // last free certificate, ticks
+    std::uint64_t hit_tick = 0;   // newest obstacle evidence, ticks
+  };
+  // Whether the global cell (gx, gy) is inside the window.
+  bool contains(int gx, int gy) const { return gx - ox_ >= 0 && gx - ox_ < s_.side && gy - oy_ >= 0 && gy - oy_ < s_.side; }
+  Cell& at(int gx, int gy) { return cells_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))]; }
+  const Cell& at(int gx, int gy) const { return cells_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))]; }
+  int index(double v) const;  // global cell index of a coordinate
+  // Clears the cells of global column gx (every row of the window) / row gy.
+  void clear_column(int gx);
+  void clear_row(int gy);
+
+  GridSettings s_;
+  int mask_ = 255;           // side − 1
+  std::vector<Cell> cells_;  // side² cells, slot (gx mod side, gy mod side)
+  int ox_ = 0;               // global index of the window's first column
+  int oy_ = 0;               // global index of the window's first row
+  bool placed_ = false;      // the window has been placed around a robot
+};
+
+}  // namespace robuter::safety

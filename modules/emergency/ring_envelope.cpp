@@ -1,0 +1,123 @@
+// Ring envelope: postures into the pose history, readings into the grid, requests into verdicts.
+#include "modules/emergency/ring_envelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "robot/model_geometry.hpp"
+#include "robot/robot_model.hpp"
+
+namespace robuter::safety {
+
+namespace {
+constexpr double kMaxStepPerTick = 0.03;  // farther than any wheel speed moves the robot in a tick: AC, m
+constexpr double kMaxTurnPerTick = 0.08;  // the same for the heading (3.3 rad/s turning in place), rad
+}  // namespace
+
+GridSettings grid_settings(const EmergencyConfig&) {
+  GridSettings g;
+  g.blanking = robot::kRobuter.ring.blanking;
+  g.half_angle = robot::kRobuter.ring.half_angle;
+  return g;
+}
+
+EnvelopeSettings envelope_settings(const EmergencyConfig& cfg, const RobotConfig& robot, double tick_s) {
+  EnvelopeSettings e;
+  e.front = robot.axle_to_front_mm / 1000.0;
+  e.rear = (static_cast<double>(robot.length_mm) - robot.axle_to_front_mm) / 1000.0;
+  e.half_width = robot.width_mm / 2000.0;
+  e.margin = cfg.margin_mm / 1000.0;
+  e.wheel_base = robot.wheel_base_mm / 1000.0;
+  e.decel = std::max(1u, robot.max_decel_cm_s2) / 100.0;
+  e.reversal_decel = std::max(1u, std::min(robot.max_accel_cm_s2, robot.max_decel_cm_s2)) / 100.0;
+  e.reaction = cfg.reaction_ms / 1000.0;
+  e.creep = cfg.creep_cm_s / 100.0;
+  e.near = robot::kRobuter.ring.blanking;
+  e.step = grid_settings(cfg).cell;
+  e.free_age_ticks = static_cast<std::uint64_t>(std::ceil(cfg.free_age_ms / 1000.0 / tick_s));
+  e.near_age_ticks = 4 * e.free_age_ticks;
+  return e;
+}
+
+RingEnvelope::RingEnvelope(const EmergencyConfig& cfg, const RobotConfig& robot, double tick_s)
+    : cfg_(cfg),
+      robot_(robot),
+      tick_s_(tick_s),
+      grid_(grid_settings(cfg)),
+      env_(envelope_settings(cfg, robot, tick_s)) {}
+
+void RingEnvelope::set_tick(double tick_s) {
+  tick_s_ = tick_s;
+  const EnvelopeSettings e = envelope_settings(cfg_, robot_, tick_s);
+  env_.set_ages(e.free_age_ticks, e.near_age_ticks);
+}
+
+void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges) {
+  tick_ = tick;
+  if (posture.tick != posture_tick_) {
+    posture_tick_ = posture.tick;
+    const Pose2 p{{posture.x / 10000.0, posture.y / 10000.0}, posture.theta / 100.0 * robot::kDeg};
+    const bool first = history_.empty();
+    if (!history_.add(posture.tick, p, kMaxStepPerTick, kMaxTurnPerTick) || first) {
+      // A new odometry frame (AC) or the first posture: nothing known so far is placed right.
+      if (!first) ++resets_;
+      grid_.reset();
+      reset_tick_ = posture.tick;
+    }
+  }
+  if (history_.empty()) return;
+  now_ = history_.at(tick);
+  grid_.follow(now_.p);
+  for (int s = 1; s <= kSensors; ++s) {
+    const auto i = static_cast<std::size_t>(s - 1);
+    const std::uint64_t read = ranges.read_tick[i];
+    if (read == seen_[i]) continue;
+    seen_[i] = read;
+    const std::uint32_t bit = 1u << i;
+    if (ranges.mm[i] == 0 || read < reset_tick_) continue;  // no data, or from an old frame
+    last_reading_ = std::max(last_reading_, read);
+    const bool no_echo = (ranges.no_echo & bit) != 0;
+    // A no-echo certifies free space but never contradicts obstacle evidence: it may be a lost
+    // echo, or a face too oblique to echo — the random sequences found a box whose evidence two
+    // no-echoes in a row had cleared (seed 1631, docs/SAFETY.md §13). Only an echo from farther
+    // away, or the body itself, clears evidence.
+    const bool contradicts = !no_echo;
+    const Pose2 at = history_.at(read);
+    const robot::SonarMount& m = robot::kRobuter.ring.sensor(s).mount;
+    grid_.add_reading(read, to_world(at, robot::position(m)), at.theta + m.direction, ranges.mm[i] / 1000.0, no_echo,
+                      contradicts);
+  }
+  if (tick != body_tick_) {
+    body_tick_ = tick;
+    const double front = robot_.axle_to_front_mm / 1000.0, rear = (robot_.length_mm - robot_.axle_to_front_mm) / 1000.0;
+    const double half = robot_.width_mm / 2000.0;
+    grid_.certify_rectangle(tick, now_.p, now_.theta, {-rear, -half}, {front, half});
+  }
+}
+
+// A request that reverses a wheel lets the robot go on along its present arc first, slowing at
+// the acceleration limit only (the drive's ramps): that braking must be clear of obstacles too.
+EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right) {
+  EnvelopeVerdict v;
+  if (history_.empty()) {
+    v.fraction = 0.0;
+    v.missing = true;
+    return v;
+  }
+  const double l = left / 100.0, r = right / 100.0;
+  // A creep through the blind near field needs a ring that is reading: a dead ring holds.
+  const bool alive = last_reading_ != 0 && tick_ - last_reading_ <= env_.settings().free_age_ticks;
+  v = env_.judge(grid_, now_, l, r, tick_, alive);
+  const Twist2 t = history_.velocity();
+  const double speed = t.v / tick_s_, turn = t.w / tick_s_;
+  const double half_base = 0.5 * robot_.wheel_base_mm / 1000.0;
+  const double lc = speed - turn * half_base, rc = speed + turn * half_base;
+  const bool reverses = (lc * l < 0.0 && std::abs(lc) > 0.01) || (rc * r < 0.0 && std::abs(rc) > 0.01);
+  if (reverses && env_.braking_meets_obstacle(grid_, now_, speed, turn, env_.settings().reversal_decel, tick_)) {
+    v.fraction = 0.0;
+    v.obstacle = true;
+  }
+  return v;
+}
+
+}  // namespace robuter::safety

@@ -1,0 +1,254 @@
+// Unit tests of the envelope: the evidence grid, the swept body and its cap, the gate's two stops.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "modules/emergency/evidence_grid.hpp"
+#include "modules/emergency/motion_gate.hpp"
+#include "modules/emergency/pose_history.hpp"
+#include "modules/emergency/swept_envelope.hpp"
+
+namespace robuter::safety {
+namespace {
+
+using Eigen::Vector2d;
+
+constexpr std::uint64_t kAge = 300;  // free certificates count this long, ticks
+
+// A grid placed around the origin.
+EvidenceGrid placed_grid() {
+  EvidenceGrid g{GridSettings{}};
+  g.follow({0.0, 0.0});
+  return g;
+}
+
+TEST(EvidenceGrid, AReadingCertifiesItsConeFreeAndMarksItsArc) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  EXPECT_EQ(g.state({0.10, 0.0}, 10, kAge), CellState::unknown) << "inside the blanking range";
+  EXPECT_EQ(g.state({0.25, 0.0}, 10, kAge), CellState::free);
+  EXPECT_EQ(g.state({0.90, 0.0}, 10, kAge), CellState::free);
+  EXPECT_EQ(g.state({0.97, 0.0}, 10, kAge), CellState::unknown) << "range noise allowance before the echo";
+  EXPECT_EQ(g.state({1.01, 0.0}, 10, kAge), CellState::obstacle);
+  EXPECT_EQ(g.state({1.01 * std::cos(0.2), 1.01 * std::sin(0.2)}, 10, kAge), CellState::obstacle) << "the whole arc";
+  EXPECT_EQ(g.state({0.5, 0.3}, 10, kAge), CellState::unknown) << "outside the cone";
+  EXPECT_EQ(g.state({1.5, 0.0}, 10, kAge), CellState::unknown) << "behind the echo";
+}
+
+TEST(EvidenceGrid, FreeSpaceAgesObstacleEvidencePersists) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  EXPECT_EQ(g.state({0.5, 0.0}, 10 + kAge, kAge), CellState::free);
+  EXPECT_EQ(g.state({0.5, 0.0}, 11 + kAge, kAge), CellState::stale);
+  EXPECT_EQ(g.state({1.01, 0.0}, 100'000, kAge), CellState::obstacle);
+}
+
+TEST(EvidenceGrid, ANewerReadingThroughTheArcContradictsIt) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.0, false, true);
+  g.add_reading(20, {0.0, 0.0}, 0.0, 2.0, false, true);
+  EXPECT_EQ(g.state({1.0, 0.0}, 20, kAge), CellState::free);
+  EXPECT_EQ(g.state({2.0, 0.0}, 20, kAge), CellState::obstacle);
+}
+
+TEST(EvidenceGrid, AReadingThatDoesNotContradictLeavesEvidenceOneThatDoesClearsIt) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  g.add_reading(20, {0.0, 0.0}, 0.0, 4.95, true, false);  // a lost echo
+  EXPECT_EQ(g.state({1.01, 0.0}, 20, kAge), CellState::obstacle);
+  EXPECT_EQ(g.state({0.5, 0.0}, 20, kAge), CellState::free);
+  EXPECT_EQ(g.state({2.0, 0.0}, 20, kAge), CellState::free) << "free beyond, up to the reach";
+  EXPECT_EQ(g.state({2.6, 0.0}, 20, kAge), CellState::unknown) << "past the reach";
+  g.add_reading(30, {0.0, 0.0}, 0.0, 4.95, true, true);  // allowed to contradict
+  EXPECT_EQ(g.state({1.01, 0.0}, 30, kAge), CellState::free);
+}
+
+TEST(EvidenceGrid, TheBodyIsFreeAndTheWindowForgetsWhatItLeaves) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {-0.5, 0.0}, 0.0, 0.5, false, true);  // evidence at x = 0
+  g.certify_rectangle(11, {0.0, 0.0}, 0.0, {-0.33, -0.35}, {0.695, 0.35});
+  EXPECT_EQ(g.state({0.0, 0.0}, 11, kAge), CellState::free) << "under the body";
+  EXPECT_EQ(g.state({0.72, 0.0}, 11, kAge), CellState::unknown) << "the face's own cell is not wholly under it";
+  g.add_reading(12, {0.0, 0.0}, 0.0, 1.0, false, true);
+  g.follow({5.0, 0.0});  // the window moves 5 m: the old cells are gone
+  EXPECT_EQ(g.state({1.0, 0.0}, 12, kAge), CellState::unknown);
+  g.reset();
+  EXPECT_EQ(g.state({1.0, 0.0}, 12, kAge), CellState::unknown);
+}
+
+TEST(PoseHistory, InterpolatesExtrapolatesAndDetectsASetOdometry) {
+  PoseHistory h;
+  EXPECT_TRUE(h.add(0, {{0.0, 0.0}, 0.0}, 0.03, 0.08));
+  EXPECT_TRUE(h.add(10, {{0.1, 0.0}, 0.0}, 0.03, 0.08));
+  EXPECT_NEAR(h.at(5).p.x(), 0.05, 1e-12);
+  EXPECT_NEAR(h.at(15).p.x(), 0.15, 1e-12) << "along the last velocity";
+  EXPECT_NEAR(h.velocity().v, 0.01, 1e-12);
+  EXPECT_FALSE(h.add(20, {{3.0, 1.0}, 1.0}, 0.03, 0.08)) << "AC: a jump no robot makes";
+  EXPECT_NEAR(h.at(25).p.x(), 3.0, 1e-12);
+}
+
+// A robot at the origin facing +x whose surroundings were all seen free recently.
+struct Scene {
+  EnvelopeSettings s;
+  EvidenceGrid g = placed_grid();
+  Pose2 now;
+  std::uint64_t tick = 100;
+  // Everything within 3 m certified free at `tick` (a world already looked at).
+  void all_free() {
+    for (int k = 0; k < 72; ++k) g.add_reading(tick, {0.0, 0.0}, k * 5.0 * 3.14159265358979 / 180.0, 4.95, true, true);
+    for (int k = 0; k < 72; ++k) g.add_reading(tick, {0.3, 0.0}, k * 5.0 * 3.14159265358979 / 180.0, 4.95, true, true);
+    for (int k = 0; k < 72; ++k) g.add_reading(tick, {-0.3, 0.0}, k * 5.0 * 3.14159265358979 / 180.0, 4.95, true, true);
+    for (double x : {0.695, 0.3, -0.33})
+      for (double y : {-0.35, 0.0, 0.35})
+        for (int k = 0; k < 72; ++k) g.add_reading(tick, {x, y}, k * 5.0 * 3.14159265358979 / 180.0, 4.95, true, true);
+    g.certify_rectangle(tick, now.p, now.theta, {-s.rear, -s.half_width}, {s.front, s.half_width});
+  }
+};
+
+TEST(SweptEnvelope, OpenSpaceGrantsAllAndTheHorizonInvertsExactly) {
+  Scene sc;
+  sc.all_free();
+  SweptEnvelope env(sc.s);
+  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick);
+  EXPECT_DOUBLE_EQ(v.fraction, 1.0);
+  EXPECT_FALSE(v.obstacle);
+  for (double k : {0.1, 0.5, 0.9}) EXPECT_NEAR(env.fraction_for(env.horizon(k, 0.6, 1.0), 0.6, 1.0), k, 1e-12);
+}
+
+// The straight approach of docs/SAFETY.md §13: obstacle evidence d ahead of the front face, the
+// granted speed at least 90 % of v with v·t_r + v²/2a = d − margin − quantum.
+TEST(SweptEnvelope, AStraightApproachGetsAtLeastNinetyPercentOfTheAnalyticCap) {
+  for (double d : {0.15, 0.25, 0.4, 0.6, 0.9}) {
+    Scene sc;
+    sc.all_free();
+    // A wall across the path d ahead of the front face, seen by a sensor on the face.
+    for (double y = -0.6; y <= 0.6; y += 0.05) sc.g.add_reading(sc.tick, {0.695 - 1.2, y}, 0.0, 1.2 + d, false, true);
+    SweptEnvelope env(sc.s);
+    const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick);
+    const double free = d - sc.s.margin - 0.05;
+    const double cap = free <= 0 ? 0.0 : sc.s.decel * (-sc.s.reaction + std::sqrt(sc.s.reaction * sc.s.reaction + 2 * free / sc.s.decel));
+    SCOPED_TRACE(testing::Message() << "d " << d << " m: granted " << v.fraction << " m/s, cap " << cap);
+    EXPECT_GE(v.fraction + 1e-9, 0.9 * std::min(1.0, cap));
+    // and never more than what stops within d − margin (the sample gap allowed)
+    EXPECT_LE(env.horizon(v.fraction, 1.0, sc.s.decel) * 1.0, d - sc.s.margin + sc.s.step);
+  }
+}
+
+TEST(SweptEnvelope, BackingAwayFromAWallAheadIsFreeDrivingIntoItIsAProtectiveStop) {
+  Scene sc;
+  sc.all_free();
+  for (double y = -0.6; y <= 0.6; y += 0.05) sc.g.add_reading(sc.tick, {0.0, y}, 0.0, 0.72, false, true);  // 25 mm ahead
+  SweptEnvelope env(sc.s);
+  const EnvelopeVerdict fwd = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  EXPECT_EQ(fwd.fraction, 0.0);
+  EXPECT_TRUE(fwd.obstacle);
+  const EnvelopeVerdict back = env.judge(sc.g, sc.now, -0.3, -0.3, sc.tick);
+  EXPECT_DOUBLE_EQ(back.fraction, 1.0);
+  EXPECT_FALSE(env.judge(sc.g, sc.now, -0.3, 0.3, sc.tick).fraction > 0.5) << "turning in place swings a front corner into it";
+}
+
+TEST(SweptEnvelope, UnknownNearFieldAllowsACreepUnknownFarFieldNothing) {
+  Scene sc;  // nothing seen at all
+  SweptEnvelope env(sc.s);
+  sc.g.certify_rectangle(sc.tick, sc.now.p, sc.now.theta, {-sc.s.rear, -sc.s.half_width}, {sc.s.front, sc.s.half_width});
+  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  EXPECT_NEAR(v.fraction * 0.3, sc.s.creep, 1e-9) << "a creep through the blind near field";
+  EXPECT_TRUE(v.missing);
+  EXPECT_FALSE(v.obstacle);
+  // Obstacle evidence inside the near field: not even a creep.
+  sc.g.add_reading(sc.tick, {0.0, 0.0}, 0.0, 0.71, false, true);
+  const EnvelopeVerdict w = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  EXPECT_EQ(w.fraction, 0.0);
+  EXPECT_TRUE(w.obstacle);
+}
+
+// A judge that answers what the test says.
+struct FakeJudge final : EnvelopeJudge {
+  EnvelopeVerdict verdict;
+  EnvelopeVerdict judge(std::int32_t, std::int32_t) override { return verdict; }
+};
+
+struct EnvelopeGate {
+  MotionGate gate{GateSettings{}};
+  FakeJudge judge;
+  std::uint64_t tick = 1000;
+  GateDecision step(GateInputs in = {}) {
+    ++tick;
+    in.tick = tick;
+    in.last_message_tick = tick;
+    in.envelope = &judge;
+    return gate.step(in);
+  }
+  GateDecision request(int l, int r, bool automatic) {
+    GateInputs in;
+    in.new_request = true;
+    in.left = l;
+    in.right = r;
+    in.automatic = automatic;
+    in.source = automatic ? MotionSource::planner : MotionSource::link;
+    return step(in);
+  }
+};
+
+TEST(EnvelopeGate, GrantsTheEnvelopesShareOfTheRequest) {
+  EnvelopeGate g;
+  g.judge.verdict.fraction = 0.5;
+  const GateDecision d = g.request(40, 30, false);
+  EXPECT_EQ(d.left, 20);
+  EXPECT_EQ(d.right, 15);
+  EXPECT_EQ(d.state.granted_pct, 50);
+  EXPECT_TRUE(d.state.envelope);
+  EXPECT_EQ(scaled(-33, 0.5), -16) << "towards zero";
+}
+
+TEST(EnvelopeGate, AProtectiveStopForgetsAnOperatorsMotionWithoutALatch) {
+  EnvelopeGate g;
+  g.judge.verdict = {0.0, true, false, 0};
+  const GateDecision d = g.request(30, 30, false);
+  EXPECT_EQ(d.left, 0);
+  EXPECT_FALSE(d.stop) << "servo kept: not an emergency";
+  EXPECT_TRUE(d.state.protective);
+  EXPECT_FALSE(d.state.latched);
+  EXPECT_EQ(d.state.cause, EmergencyCause::none);
+  EXPECT_EQ(d.state.trips, 0u);
+  EXPECT_EQ(d.state.protective_stops, 1u);
+  g.judge.verdict = {1.0, false, false, 0};
+  EXPECT_EQ(g.step().left, 0) << "forgotten: clear space does not restart it";
+  EXPECT_EQ(g.request(-20, -20, false).left, -20) << "a new request is judged at once";
+  EXPECT_FALSE(g.step().state.protective);
+}
+
+TEST(EnvelopeGate, AnAutomaticRequestResumesAfterItsEnvelopeWasClearForTheClearTime) {
+  EnvelopeGate g;
+  g.judge.verdict = {0.0, true, false, 0};
+  EXPECT_TRUE(g.request(30, 30, true).state.protective);
+  g.judge.verdict = {1.0, false, false, 0};
+  const std::uint64_t clear_from = g.tick + 1;
+  GateDecision d = g.step();
+  while (d.left == 0 && g.tick < clear_from + 1000) {
+    if (g.tick == clear_from + 50) {
+      g.judge.verdict = {0.0, true, false, 0};  // evidence again: the clock starts over
+      d = g.step();
+      EXPECT_EQ(d.state.protective_stops, 1u) << "one pause, not a new stop";
+      g.judge.verdict = {1.0, false, false, 0};
+    }
+    d = g.step();
+  }
+  EXPECT_EQ(d.left, 30);
+  EXPECT_TRUE(d.resumed);
+  EXPECT_GE(g.tick - clear_from, 150u) << "50 ticks, then the whole clear time again";
+  EXPECT_FALSE(d.state.protective);
+}
+
+TEST(EnvelopeGate, MissingDataHoldsLikeTheSeed) {
+  EnvelopeGate g;
+  g.judge.verdict = {0.0, false, true, 0};
+  const GateDecision d = g.request(30, 30, false);
+  EXPECT_TRUE(d.state.held);
+  EXPECT_FALSE(d.state.protective);
+  g.judge.verdict = {1.0, false, false, 0};
+  EXPECT_EQ(g.step().left, 30) << "resumes by itself when the data comes";
+}
+
+}  // namespace
+}  // namespace robuter::safety

@@ -1,0 +1,64 @@
+// The envelope is not a toy: XG through the 90 cm door of worlds/default.toml, the ultrasonic detection on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "tests/safety_sim/support.hpp"
+
+namespace robuter::test::safety_sim {
+namespace {
+
+// The planner's map over the 8 × 6 m world, odometry in the world's frame (as the planner's tests).
+Config door_config() {
+  Config cfg;
+  cfg.planner.map_origin_x_mm = -500;
+  cfg.planner.map_origin_y_mm = -500;
+  cfg.planner.map_width_mm = 9'000;
+  cfg.planner.map_height_mm = 7'000;
+  return cfg;
+}
+
+// From the west room (1.5, 1.5) to the goal (6.4, 4.6) in the east room: the only way is the
+// door (100 mm each side of the body when centred). The planner is an automatic source: a
+// protective stop pauses it and it goes on once its envelope is clear; nothing trips.
+// Quarantined (run with --gtest_also_run_disabled_tests): measured, the planner reports
+// `unreachable` after 90 s without crossing — no trip, no protective stop, no contact, closest
+// 263 mm. Not yet told apart: the planner without a prior map in this world, or the envelope
+// holding what the planner needed (docs/SAFETY.md §13, "What the envelope does not do").
+TEST(EnvelopeDoor, DISABLED_XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArrivesWithoutATrip) {
+  SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/default.toml", door_config());
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  SafetyMonitor mon;
+  mon.attach(fw);
+  ASSERT_EQ(fw.ask("AC 15000 15000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 64000 46000"), "ack");
+  const auto& robot = fw.sim().robot();
+  bool crossed = false;
+  PlannerState state = PlannerState::idle;
+  const double t0 = fw.seconds();
+  for (int i = 0; i < 60'000; ++i) {
+    fw.step();
+    crossed = crossed || robot.pose().x > 4.6;
+    state = fw.bb().planner_status.reader().peek().state;
+    if (i > 50 && (state == PlannerState::reached || state == PlannerState::unreachable ||
+                   state == PlannerState::stopped || state == PlannerState::blocked)) break;
+  }
+  const EmergencyState& e = fw.bb().emergency.reader().peek();
+  const double err = std::hypot(robot.pose().x - 6.4, robot.pose().y - 4.6);
+  std::printf("door: planner state %d after %.1f s, crossed %d, final error %.3f m, trips %u, protective stops %u, "
+              "closest approach %.0f mm, contacts %llu\n",
+              static_cast<int>(state), fw.seconds() - t0, crossed, err, e.trips, e.protective_stops,
+              mon.min_clearance_us_on * 1000.0, static_cast<unsigned long long>(mon.contact_us_on));
+  EXPECT_EQ(state, PlannerState::reached);
+  EXPECT_TRUE(crossed) << "through the door";
+  EXPECT_EQ(e.trips, 0u);
+  EXPECT_TRUE(e.envelope);
+  EXPECT_EQ(e.enabled & 2u, 2u) << "the ultrasonic detection stayed on";
+  EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
+  RecordProperty("door_protective_stops", static_cast<int>(e.protective_stops));
+}
+
+}  // namespace
+}  // namespace robuter::test::safety_sim
