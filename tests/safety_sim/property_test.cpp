@@ -86,6 +86,8 @@ std::string rule_under_test() {
 // motion time-out.
 Config random_config(sim::Rng& rng) {
   Config c = core_config();
+  c.enabled_modules->push_back("planner");  // XG: an automatic mode to start and interrupt
+  c.enabled_modules->push_back("demo");     // XT1: another
   c.emergency.rule = rule_under_test();
   if (rng.uniform() < 0.3) c.emergency.mask = static_cast<std::uint32_t>(rng.uniform(0.0, 8.0));
   c.emergency.latch = rng.uniform() < 0.85;
@@ -122,6 +124,76 @@ struct Totals {
   std::array<long, protocol::kEnumerators<EmergencyCause>> trips_by_cause{};  // by EmergencyCause of the verdict that tripped
   long trips = 0;
   double min_clearance_us_on = 1e9;
+  long automatic_starts = 0;              // XG / XT1 acknowledged
+  long automatic_ticks = 0;               // ticks an automatic mode drove
+  long automatic_after_operator = 0;      // ticks an automatic mode drove after an operator's command ended it
+  long resumed_by_itself = 0;             // ticks an operator's motion drove after a trip or stop forgot it
+  std::string arbiter_violation;          // the first of those two, for the report
+};
+
+// The arbiter's invariants (docs/SAFETY.md §1), from the commands the sequence sent and every
+// tick's motion command: an automatic mode drives only between its acknowledged start and the
+// next operator command (or trip); an operator's motion drives only between its acknowledged
+// `AM`/`AW` and the next trip, protective stop, `AM 0 0`, `ASF` or stop byte. One tick of grace
+// after the acknowledgement (the command reaches the drive in the tick it is taken).
+struct ArbiterMonitor {
+  bool automatic_may = false;     // an automatic start was acknowledged and nothing ended it since
+  bool operator_may = false;      // an operator's motion is in force
+  std::uint64_t since = 0;        // tick of the last change of either, ticks
+  std::uint32_t trips = 0, protective = 0;  // counters last seen
+  long automatic_ticks = 0, automatic_after_operator = 0, resumed_by_itself = 0;
+  std::string first;              // the first violation
+  bool paused = false;            // a line is being answered: judged from its answer on
+
+  void changed(std::uint64_t tick) { since = tick; }
+  void check(SimFirmware& fw) {
+    const std::uint64_t tick = fw.kernel().tick();
+    const EmergencyState& e = fw.bb().emergency.reader().peek();
+    if (e.trips != trips) {
+      trips = e.trips;
+      automatic_may = operator_may = false;
+      changed(tick);
+    }
+    if (e.protective_stops != protective) {
+      protective = e.protective_stops;
+      operator_may = false;  // a protective stop forgets the operator's motion, not a mode's
+      changed(tick);
+    }
+    const MotionCommand& c = fw.bb().motion_command.reader().peek();
+    if (paused || c.stop || (c.left == 0 && c.right == 0) || tick <= since + 1) return;
+    const bool automatic = safety::automatic(c.source);
+    if (automatic) ++automatic_ticks;
+    if (automatic && !automatic_may) {
+      ++automatic_after_operator;
+      if (first.empty()) first = fmt::format("tick {}: automatic source {} drives {} {} after an operator's command or a trip",
+                                             tick, static_cast<int>(c.source), c.left, c.right);
+    } else if (!automatic && !operator_may) {
+      ++resumed_by_itself;
+      if (first.empty()) first = fmt::format("tick {}: the operator's motion {} {} drives again by itself", tick, c.left, c.right);
+    }
+  }
+  // A line was answered `reply` at `tick`.
+  void sent(const std::string& line, const std::string& reply, std::uint64_t tick) {
+    changed(tick);
+    if (reply != "ack") return;
+    const auto is = [&](const char* p) { return line.rfind(p, 0) == 0; };
+    if (is("XG") || is("XT1")) {
+      automatic_may = true;
+      operator_may = false;
+    } else if (is("AM") || is("AW") || is("ASF") || is("ASN") || is("XH") || is("XT0") || is("AT") || is("Af")) {
+      automatic_may = false;
+      if (is("AM")) operator_may = line != "AM 0 0";
+      if (is("AW")) operator_may = true;
+      if (is("ASF") || is("XH") || is("XT0")) operator_may = operator_may && !is("ASF");
+    } else {
+      return;
+    }
+    changed(tick);
+  }
+  void stop_byte(std::uint64_t tick) {
+    automatic_may = operator_may = false;
+    changed(tick);
+  }
 };
 
 // One sequence: a random world, configuration and command list; the monitor checks every tick.
@@ -145,10 +217,16 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   }
   SafetyMonitor mon;
   mon.attach(fw);
+  ArbiterMonitor arb;
+  fw.set_tick_observer([&] {
+    mon.check();
+    arb.check(fw);
+  });
   const TraceWindow tw = trace_window();
   if (tw.from <= tw.to) {
     fw.set_tick_observer([&] {
       mon.check();
+      arb.check(fw);
       const std::uint64_t tick = fw.kernel().tick() - 1;
       if (tick < tw.from || tick > tw.to) return;
       const MotionCommand& c = fw.bb().motion_command.reader().peek();
@@ -192,8 +270,19 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   auto send = [&](const std::string& line) {
     log += line + "; ";
     ++tot.commands;
-    if (!fw.ask(line, 60)) ++tot.no_reply;
+    arb.paused = true;
+    const auto reply = fw.ask(line, 60);
+    arb.paused = false;
+    if (!reply) ++tot.no_reply;
+    if (reply && *reply == "ack" && (line.rfind("XG", 0) == 0 || line == "XT1")) ++tot.automatic_starts;
+    arb.sent(line, reply.value_or(""), fw.kernel().tick());
     note_trips();
+  };
+  auto stop_byte = [&] {
+    log += "<0x18>; ";
+    ++tot.stop_bytes;
+    fw.send_raw("\x18");
+    arb.stop_byte(fw.kernel().tick());
   };
   const int actions = irand(rng, 12, 24);
   for (int a = 0; a < actions; ++a) {
@@ -222,9 +311,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
     } else if (k < 0.77) {
       send("XR");
     } else if (k < 0.79) {
-      log += "<0x18>; ";
-      ++tot.stop_bytes;
-      fw.send_raw("\x18");
+      stop_byte();
     } else if (k < 0.82) {
       send(rng.uniform() < 0.5 ? "XE" : "BO");
     } else if (k < 0.835) {
@@ -235,13 +322,28 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
       send(fmt::format("UD{}", ud));
     } else if (k < 0.845) {
       send(fmt::format("Ut{}", irand(rng, 15, 60)));
-    } else if (k < 0.885) {
+    } else if (k < 0.87) {
       const int quiet = irand(rng, 200, 1600);  // silence: comm loss, hold expiry, motion time-out
       log += fmt::format("<quiet {}>; ", quiet);
       for (int i = 0; i < quiet; ++i) {
         fw.step();
         note_trips();
       }
+    } else if (k < 0.905) {
+      // An automatic mode — the planner to a point near the robot, or the demonstration course —
+      // given time to drive before the next action interrupts it.
+      if (rng.uniform() < 0.7) send("ASN");
+      if (rng.uniform() < 0.7)
+        send(fmt::format("XG {} {}", p.x + irand(rng, -20000, 20000), p.y + irand(rng, -20000, 20000)));
+      else
+        send("XT1");
+      const int drive = irand(rng, 100, 800);
+      for (int i = 0; i < drive; ++i) {
+        fw.step();
+        note_trips();
+      }
+    } else if (k < 0.92) {
+      send(rng.uniform() < 0.5 ? "XH" : "XT0");  // an automatic mode's own stop
     } else {
       // Requests in quick succession: several command changes close together.
       const auto [l, r] = random_speeds(rng);
@@ -252,11 +354,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
         const auto [l2, r2] = random_speeds(rng);
         send(fmt::format("AM {} {}", l2, r2));
       }
-      if (mode == 2) {
-        log += "<0x18>; ";
-        ++tot.stop_bytes;
-        fw.send_raw("\x18");
-      }
+      if (mode == 2) stop_byte();
     }
     const int wait = irand(rng, 1, 80);
     for (int i = 0; i < wait; ++i) {
@@ -277,6 +375,9 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   tot.latched_moving += static_cast<long>(mon.latched_moving);
   tot.ungranted += static_cast<long>(mon.ungranted);
   tot.longest_disagreement = std::max(tot.longest_disagreement, static_cast<long>(mon.longest_disagreement));
+  tot.automatic_ticks += arb.automatic_ticks;
+  tot.automatic_after_operator += arb.automatic_after_operator;
+  tot.resumed_by_itself += arb.resumed_by_itself;
   if (mon.contact_us_on > 0) {
     ++tot.contact_sequences;
     tot.contact_seeds += fmt::format("    seed {}: last motion AM {} {} (main sensor {}), {}, body point ({:.0f}, {:.0f}) mm\n",
@@ -285,13 +386,15 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
                                      mon.contact_while_stopping ? "while stopping" : "while moving",
                                      mon.contact_point.x() * 1000.0, mon.contact_point.y() * 1000.0);
   }
-  const bool broke = mon.latched_moving > 0 || mon.ungranted > 0 || (contacts_fail && mon.contact_us_on > 0);
+  const bool broke = mon.latched_moving > 0 || mon.ungranted > 0 || (contacts_fail && mon.contact_us_on > 0) ||
+                     !arb.first.empty();
   if (!broke) return;
   report = fmt::format("seed {} (rule {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
                        "  latched-moving {}, ungranted {} (longest {} ticks), contact with sonar on {}\n"
                        "  commands: {}\n  world:\n{}",
                        seed, cfg.emergency.rule, opt.sonar_noise, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
-                       cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms, mon.first_violation,
+                       cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms,
+                       mon.first_violation.empty() ? arb.first : mon.first_violation,
                        mon.latched_moving, mon.ungranted, mon.longest_disagreement, mon.contact_us_on, log, toml);
 }
 
@@ -326,6 +429,9 @@ Totals run_shard(int shard, bool contacts_fail) {
   std::printf("\n  speed at the drive while latched: %ld ticks; drive behind the gate's verdict: %ld ticks "
               "(longest %ld)\n",
               tot.latched_moving, tot.ungranted, tot.longest_disagreement);
+  std::printf("  arbiter: %ld automatic starts acknowledged, %ld ticks driven by an automatic mode; after an "
+              "operator's command or a trip: %ld ticks; operator motions resumed by themselves: %ld ticks\n",
+              tot.automatic_starts, tot.automatic_ticks, tot.automatic_after_operator, tot.resumed_by_itself);
   std::printf("  contacts with the sonar off (allowed): %ld ticks; sequences with a contact while the sonar watched: "
               "%ld; closest approach with the sonar on %.0f mm\n%s",
               tot.contacts_us_off, tot.contact_sequences, tot.min_clearance_us_on * 1000.0, tot.contact_seeds.c_str());
@@ -347,6 +453,11 @@ TEST_P(RandomSequences, NoSpeedWhileLatched) {
   const Totals tot = run_shard(GetParam(), false);
   EXPECT_EQ(tot.latched_moving, 0);
   EXPECT_EQ(tot.ungranted, 0);
+  EXPECT_EQ(tot.automatic_after_operator, 0);
+  EXPECT_EQ(tot.resumed_by_itself, 0);
+  EXPECT_GT(tot.automatic_starts, 0) << "the sequences start automatic modes";
+  RecordProperty("automatic_after_operator_ticks", static_cast<int>(tot.automatic_after_operator));
+  RecordProperty("resumed_by_itself_ticks", static_cast<int>(tot.resumed_by_itself));
   RecordProperty("sequences", static_cast<int>(tot.sequences));
   RecordProperty("ticks", static_cast<int>(tot.ticks));
   RecordProperty("trips", static_cast<int>(tot.trips));
