@@ -132,7 +132,6 @@ int main(int argc, char** argv) {
     fmt::print("robuterd: link on {} -> {}\n", opt.ptys[i], fw.pty_slaves()[i]);
   }
   if (!opt.ptu_pty.empty()) fmt::print("robuterd: pan-tilt unit on {}\n", opt.ptu_pty);
-  else if (fw.ptu_pipe() != nullptr) fmt::print("robuterd: pan-tilt unit simulated in-process (--no-ptu: none)\n");
   std::fflush(stdout);
 
   log::start(stderr);
@@ -143,6 +142,8 @@ int main(int argc, char** argv) {
   if (opt.sim) {
     log::info("sim: world {}", opt.sim_options.world_file.empty() ? std::string("built-in default (source tree)")
                                                                    : opt.sim_options.world_file);
+    // A log line, not stdout: with --stdio standard output is the command link.
+    if (fw.ptu_pipe() != nullptr) log::info("sim: pan-tilt unit simulated in-process (--no-ptu: without it)");
   }
   const int status = fw.run();
   if (const int sig = signals::stop_signal()) log::info("robuterd: {} received: stopped cleanly", signals::name(sig));
