@@ -197,6 +197,8 @@ struct PanTiltScan {
   std::uint32_t sweeps = 0;                                 // passes from one end to the other, count
   std::uint32_t readings = 0;                               // firings read back, count
   std::uint64_t tick = 0;                                   // tick of the latest reading
+  bool fitted = false;                                      // the module has a unit to talk to (a port, or the
+                                                            // simulated unit): false → Ap, AG, Ad answer no-unit
 };
 
 // A mode module's report.

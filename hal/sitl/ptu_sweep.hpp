@@ -1,4 +1,4 @@
-// robuterd --ptu-sweep: a stand-in for the future PTU module that sweeps the emulated unit and fires its sonars.
+// robuterd --ptu-sweep: a sweep of the emulated unit and its sonars without the PTU module or the protocol (the bench, pictures).
 #pragma once
 
 #include <cstdint>

@@ -12,12 +12,13 @@
 namespace robuter::hal {
 
 // Runs first in every tick (highest priority), so modules see the world as of this tick. It
-// also services the pan-tilt emulator's byte stream (robuterd --ptu-pty) and, with
-// --ptu-sweep, drives the built-in sweep.
+// also services the pan-tilt emulator's byte stream (the in-process pipe to the PTU module by
+// default, or its pty with robuterd --ptu-pty) and, with --ptu-sweep, drives the built-in sweep.
 class SimStepper final : public Process {
  public:
   explicit SimStepper(SimRobot& r) : r_(r) {}
-  // Serves the pan-tilt emulator on `stream` (its pty) from now on; start-up only.
+  // Serves the pan-tilt emulator on `stream` (its pty, or its end of the in-process pipe) from
+  // now on; start-up only.
   void attach_ptu(std::unique_ptr<ByteStream> stream) { ptu_port_.emplace(r_.ptu(), std::move(stream)); }
   // Sweeps the pan-tilt and fires its sonars without a PTU module; start-up only.
   void set_ptu_sweep(bool on) {
@@ -42,7 +43,7 @@ class SimStepper final : public Process {
  private:
   SimRobot& r_;
   Nanos origin_ = 0;                    // kernel time of simulated time 0, ns
-  std::optional<PtuPort> ptu_port_;     // the emulator's pty, when asked for
+  std::optional<PtuPort> ptu_port_;     // the emulator's stream (pipe or pty), when wired
   std::optional<PtuSweep> ptu_sweep_;   // the built-in sweep, when asked for
 };
 

@@ -16,6 +16,7 @@
 #include "hal/link/stdio_link.hpp"
 #include "hal/linux/gpio_lines.hpp"
 #include "hal/linux/serial_stream.hpp"
+#include "hal/sitl/byte_pipe.hpp"
 #include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "kernel/log.hpp"
@@ -206,6 +207,15 @@ std::optional<std::string> Firmware::setup() {
         ptu_port, line_settings(p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms), "pan-tilt " + ptu_port);
     if (link->error()) return "pan-tilt port: " + *link->error();
     ptu_link_ = std::move(link);
+  } else if (stepper && opt_.sim_ptu && opt_.ptu_pty.empty() && !opt_.ptu_sweep) {
+    // Decided (docs/SIMULATOR.md): the simulated robot has its pan-tilt unit by default, wired to
+    // the PTU module inside the process — nothing on the filesystem, so simulated runs side by
+    // side never collide. A port given, --ptu-pty (the unit is someone else's), --ptu-sweep (the
+    // sweep drives it) or --no-ptu leave it unwired.
+    auto [host, unit] = hal::make_byte_pipe("pan-tilt (simulated, in-process)", "pan-tilt unit (in-process)");
+    ptu_pipe_ = host.get();
+    ptu_link_ = std::move(host);
+    stepper->attach_ptu(std::move(unit));
   }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
     return "--picture " + opt_.picture + ": expected a .png or .svg file";

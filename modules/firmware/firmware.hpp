@@ -21,6 +21,7 @@ class CanBackend;
 namespace robuter {
 namespace hal {
 class GpioLines;
+class PipeEnd;
 }
 
 class HeartbeatModule;
@@ -43,6 +44,8 @@ struct FirmwareOptions {
   std::string ptu_pty;                // pan-tilt emulator's pty (symbolic link path), empty = none
   std::string ptu_port;               // the pan-tilt unit's port for the PTU module (overrides [ptu] port)
   bool ptu_sweep = false;             // built-in pan-tilt sweep and channel-7 firing (no PTU module)
+  bool sim_ptu = true;                // --sim: the simulated pan-tilt unit wired to the PTU module inside the
+                                      // process when no port is given (--no-ptu: the robot without one)
   std::string picture;                // .png/.svg written at exit (world, robot, trail, ranges)
   bool open_devices = true;           // open serial devices and GPIO chips (false: --check-config)
   std::string planner_pictures;       // folder for a PNG of every plan (map and path), empty = none
@@ -68,6 +71,9 @@ class Firmware {
   Kernel& kernel() { return *kernel_; }
   Blackboard& blackboard() { return bb_; }
   hal::SimRobot* sim() { return sim_.get(); }
+  // The PTU module's end of the in-process pipe to the simulated unit (--sim without a port),
+  // else null: tests unplug it.
+  hal::PipeEnd* ptu_pipe() { return ptu_pipe_; }
   // The CAN backend process when [hardware] uses CAN (not with --sim), else null.
   hal::can::CanBackend* can() { return can_; }
   // The virtual clock when running as fast as possible (tests step it), else null.
@@ -97,6 +103,7 @@ class Firmware {
   std::vector<std::unique_ptr<hal::ByteStream>> links_;
   std::unique_ptr<hal::GpioLines> gpio_;             // bumpers and inputs on GPIO, when configured
   std::unique_ptr<hal::ByteStream> ptu_link_;        // the pan-tilt unit's port, when configured
+  hal::PipeEnd* ptu_pipe_ = nullptr;                 // ptu_link_ when it is the in-process pipe
   std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
   std::unique_ptr<Kernel> kernel_;
   std::unique_ptr<planner::PictureMailbox> picture_box_;   // plans handed from the planner

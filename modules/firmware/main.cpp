@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   using namespace robuter;
   CLI::App app{"robuterd — command server firmware for a Robuter differential-drive robot"};
   std::string config_path, log_level, speed = "1";
-  bool stats = false, check_only = false, version = false;
+  bool stats = false, check_only = false, version = false, no_ptu = false;
   FirmwareOptions opt;
   app.add_option("-c,--config", config_path, "robot configuration file (TOML); defaults are the seed's constants");
   app.add_flag("--sim", opt.sim, "run on the simulated robot (SITL)");
@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   app.add_flag("--stdio", opt.stdio, "serve a link on standard input/output");
   app.add_option("--ptu-pty", opt.ptu_pty, "serve the simulated pan-tilt unit (PTU-46 protocol) on a new pty; PATH becomes a symbolic link to it");
   app.add_option("--ptu-port", opt.ptu_port, "the pan-tilt unit's serial device for the PTU module (overrides [ptu] port); with --sim, the --ptu-pty path");
+  app.add_flag("--no-ptu", no_ptu, "simulator: the robot without its pan-tilt unit (by default the simulated unit is wired to the PTU module inside the process)");
   app.add_flag("--ptu-sweep", opt.ptu_sweep, "simulator: sweep the pan-tilt between its limits and fire its two sonars every 5° (no PTU module needed)");
   app.add_option("--picture", opt.picture, "simulator: at exit, draw world, robot, trail and the last ring ranges to FILE (.png or .svg)");
   app.add_option("--planner-pictures", opt.planner_pictures,
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
     fmt::print("robuterd {}\n", ROBUTER_VERSION);
     return kExitOk;
   }
+  opt.sim_ptu = !no_ptu;
   if (speed == "max") {
     opt.speed = 0.0;
   } else {
@@ -140,6 +142,8 @@ int main(int argc, char** argv) {
   if (opt.sim) {
     log::info("sim: world {}", opt.sim_options.world_file.empty() ? std::string("built-in default (source tree)")
                                                                    : opt.sim_options.world_file);
+    // A log line, not stdout: with --stdio standard output is the command link.
+    if (fw.ptu_pipe() != nullptr) log::info("sim: pan-tilt unit simulated in-process (--no-ptu: without it)");
   }
   const int status = fw.run();
   if (const int sig = signals::stop_signal()) log::info("robuterd: {} received: stopped cleanly", signals::name(sig));

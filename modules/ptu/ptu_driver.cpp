@@ -7,7 +7,9 @@
 namespace robuter::ptu {
 
 PtuDriver::PtuDriver(hal::ByteStream* stream, hal::SonarRing& ring, const PtuSettings& s)
-    : stream_(stream), ring_(ring), s_(s), target_(s.min_position) {}
+    : stream_(stream), ring_(ring), s_(s), target_(s.min_position) {
+  scan_.fitted = stream_ != nullptr;
+}
 
 void PtuDriver::start(std::uint64_t tick) {
   if (state_ == DriverState::starting || state_ == DriverState::scanning) return;
@@ -53,6 +55,7 @@ void PtuDriver::clear_scan() {
   scan_ = PanTiltScan{};
   scan_.sweeps = sweeps;
   scan_.readings = readings;
+  scan_.fitted = stream_ != nullptr;
 }
 
 // Why always pump, even when off: a late reply left in the port would otherwise be taken as the

@@ -213,8 +213,15 @@ PortResult LinkPort::request_shutdown() noexcept {
   return PortResult::ok;
 }
 
+// Why refuse Ap, AG, Ad without a unit instead of acking and failing later: the operator
+// learns at once that nothing will scan (XD would only say so afterwards). Off is always ack.
+bool LinkPort::has_pan_tilt_unit() const {
+  return pan_tilt_status_.generation() > 0 && pan_tilt_scan_.peek().fitted;
+}
+
 PortResult LinkPort::set_pan_tilt(bool on) noexcept {
   if (pan_tilt_status_.generation() == 0) return PortResult::unavailable;
+  if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   w_.modes.modify([&](ModeRequest& m) {
     m.pan_tilt = on;
     ++m.seq;
@@ -225,6 +232,7 @@ PortResult LinkPort::set_pan_tilt(bool on) noexcept {
 
 PortResult LinkPort::set_gate_finder(bool on) noexcept {
   if (gate_status_.generation() == 0) return PortResult::unavailable;
+  if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
     m.gate = on;
@@ -237,6 +245,7 @@ PortResult LinkPort::set_gate_finder(bool on) noexcept {
 
 PortResult LinkPort::set_door_crossing(bool on) noexcept {
   if (doors_status_.generation() == 0) return PortResult::unavailable;
+  if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
     m.doors = on;

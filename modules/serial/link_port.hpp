@@ -97,6 +97,8 @@ class LinkPort final : public protocol::RobotPort {
   // True while an emergency is latched: requests to move are refused.
   // The emergency module's admission rule (safety::admits_motion) says no: refuse with `error`.
   bool latched() const;
+  // The pan-tilt module runs and has a unit to talk to (Ap, AG, Ad need it).
+  bool has_pan_tilt_unit() const;
   std::uint64_t tick() const;
   // True once the planner module has published (its process row runs).
   bool planner_running() const { return planner_status_.generation() > 0; }

@@ -1,6 +1,8 @@
 // Names of the error codes, as written in verbose error replies.
 #include "protocol/codec/error_code.hpp"
 
+#include "protocol/codec/vocabulary.hpp"
+
 namespace robuter::protocol {
 
 // One word per code so a verbose error stays three tokens: `error <n> <name>`.
@@ -22,6 +24,7 @@ std::string_view error_name(ErrorCode code) noexcept {
     case ErrorCode::busy: return "busy";
     case ErrorCode::stopped: return "stopped";
     case ErrorCode::internal: return "internal";
+    case ErrorCode::no_unit: return word(ModeReason::no_unit);  // the word XD shows for the same fact
   }
   return "internal";
 }

@@ -24,6 +24,7 @@ enum class ErrorCode : std::uint8_t {
   busy = 13,                 // the robot is doing something that excludes the request
   stopped = 14,              // a stop byte arrived in the middle of the line
   internal = 15,             // the reply could not be built (a bug)
+  no_unit = 16,              // Ap, AG, Ad: no pan-tilt unit to scan with (none fitted, or its module absent)
 };
 
 // The hyphenated reason word of a code, as written after its number.

@@ -12,6 +12,7 @@ ErrorCode error_for(PortResult result) noexcept {
     case PortResult::out_of_range: return ErrorCode::out_of_range;
     case PortResult::unavailable: return ErrorCode::unavailable;
     case PortResult::busy: return ErrorCode::busy;
+    case PortResult::no_unit: return ErrorCode::no_unit;
   }
   return ErrorCode::internal;
 }

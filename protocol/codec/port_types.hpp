@@ -45,6 +45,7 @@ enum class PortResult : std::uint8_t {
   out_of_range,       // a value beyond what this robot accepts
   unavailable,        // equipment or module not fitted / not running
   busy,               // excluded by what the robot is doing now
+  no_unit,            // needs the pan-tilt unit, and the robot has none (Ap, AG, Ad)
 };
 
 // The emergency module's state, as XE reports it.

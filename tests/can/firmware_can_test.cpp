@@ -1,6 +1,7 @@
 // The whole firmware on the CAN backends over a loopback bus with simulated drives and sonar
 // nodes, on the virtual clock: move, then heartbeat loss, drive fault, error-passive and bus-off
-// each end in an emergency whose cause XE shows; recovery after a drive fault.
+// each end in an emergency whose cause XE shows; recovery after a drive fault; without a pan-tilt
+// port, Ap/AG/Ad answer no-unit.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -168,6 +169,19 @@ TEST(CanFirmware, SilentSonarNodeHoldsMotion) {
   for (auto& n : r.nodes) n->set_silent(true);
   ASSERT_TRUE(r.fw->run_until([&] { return r.posture().left == 0; }, 400));
   EXPECT_EQ(r.left->velocity(), 0.0);
+}
+
+// On the robot without [ptu] port there is no pan-tilt unit: Ap, AG and Ad answer error (verbose
+// 16 no-unit) instead of ack, before any emergency check; switching off stays ack.
+TEST(CanFirmware, WithoutAPanTiltPortApAgAdAnswerNoUnit) {
+  CanRobot r;
+  ASSERT_TRUE(r.fw->ok()) << r.fw->error();
+  r.fw->run_ticks(20);
+  for (const char* l : {"Ap", "AG", "Ad"}) EXPECT_EQ(r.fw->ask(l), "error") << l;
+  EXPECT_EQ(r.fw->ask("XB1"), "ack");
+  for (const char* l : {"Ap", "AG", "Ad"}) EXPECT_EQ(r.fw->ask(l), "error 16 no-unit") << l;
+  for (const char* l : {"Ag", "AT", "Af"}) EXPECT_EQ(r.fw->ask(l), "ack") << l;
+  EXPECT_FALSE(r.fw->bb().modes.reader().peek().pan_tilt);
 }
 
 }  // namespace

@@ -141,6 +141,16 @@ TEST_F(Messages, ModuleSwitches) {
   EXPECT_EQ(h.ask("Ap 1"), "error");
 }
 
+// A robot without a pan-tilt unit: the port's no_unit is error, verbose 16 no-unit.
+TEST_F(Messages, NoUnitIsErrorSixteen) {
+  h.port.result = PortResult::no_unit;
+  EXPECT_EQ(h.ask("Ap"), "error");
+  h.port.result = PortResult::ok;
+  EXPECT_EQ(h.ask("XB1"), "ack");
+  h.port.result = PortResult::no_unit;
+  for (const char* l : {"Ap", "AG", "Ad"}) EXPECT_EQ(h.ask(l), "error 16 no-unit") << l;
+}
+
 TEST_F(Messages, UT) {
   EXPECT_EQ(h.ask("UT111111111111111111111111"), "ack");
   EXPECT_EQ(h.port.last_table.count(), 24u);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "hal/sitl/byte_pipe.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "modules/planner/picture_writer.hpp"
 
@@ -140,6 +141,10 @@ std::vector<std::string> SimFirmware::exchange(std::string_view bytes, std::size
 // Why dup2 over the master: the emulator's PtyLink keeps its descriptor number, but the pty's
 // last master reference goes away, exactly as when a USB adapter is pulled out.
 void SimFirmware::unplug_ptu() {
+  if (auto* pipe = fw_->ptu_pipe()) {  // the default: the unit wired inside the process
+    pipe->unplug();
+    return;
+  }
   auto* stepper = module<hal::SimStepper>("sim");
   if (stepper == nullptr || stepper->ptu_port() == nullptr) return;
   const int fd = stepper->ptu_port()->stream().fd();

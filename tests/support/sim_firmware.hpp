@@ -16,9 +16,10 @@ namespace robuter::test {
 
 class SimFirmware {
  public:
-  // Builds and starts the firmware (world file, config); ok() tells whether it did. With
-  // `with_ptu` the pan-tilt emulator is served on a pty and the PTU module opens it (--ptu-pty
-  // and --ptu-port on the same temporary path). With `planner_pictures` a folder, the planner's
+  // Builds and starts the firmware (world file, config); ok() tells whether it did. The
+  // simulated pan-tilt unit is wired to the PTU module inside the process (robuterd --sim's
+  // default); with `with_ptu` it is served on a pty instead and the PTU module opens it
+  // (--ptu-pty and --ptu-port on the same temporary path). With `planner_pictures` a folder, the planner's
   // picture of every plan is written there (robuterd --planner-pictures), drawn between ticks.
   explicit SimFirmware(const std::string& world = "", const Config& cfg = Config{}, hal::SimOptions sim = {},
                        bool with_ptu = false, const std::string& planner_pictures = "");
@@ -63,8 +64,8 @@ class SimFirmware {
     const auto i = fw_->kernel().find(name);
     return i ? dynamic_cast<T*>(fw_->kernel().row(*i).process) : nullptr;
   }
-  // Unplugs the emulated pan-tilt unit: its end of the pty is closed, the PTU module's port
-  // hangs up (no-op without with_ptu).
+  // Unplugs the emulated pan-tilt unit: its end of the pty is closed (with_ptu) or the
+  // in-process pipe hangs up; the PTU module's port is lost either way.
   void unplug_ptu();
   // The client goes away: its end of the link is closed (ask() fails from then on).
   void close_client();
