@@ -316,13 +316,19 @@ def script(robuterd, ctl, tmp):
     check(r.returncode == 1, "keep-going: a failed script exits 1")
     check("4 passed, 1 failed" in r.stdout, "keep-going: the checks after the failure ran; closing N passed, N failed")
     robot = Raw(d.obs)
-    xe = robot.ask("XE")
-    a = robot.ask("BO")
-    time.sleep(0.5)
-    b = robot.ask("BO")
-    check(xe is not None and xe.split()[2] == "0", f"left stopped: no emergency latched ({xe})")
+    # The wheels run down after AM 0 0 (the sim's drive ramps, the servo is then off): wait for
+    # the robot to come to rest, then it must stay there with nothing latched.
+    deadline = time.monotonic() + WAIT
+    while True:
+        a = robot.ask("BO")
+        time.sleep(0.3)
+        b = robot.ask("BO")
+        if a is None or b is None or a.split()[1:4] == b.split()[1:4] or time.monotonic() > deadline:
+            break
     check(a is not None and b is not None and a.split()[1:4] == b.split()[1:4] and a.split()[4] == "0",
-          f"left stopped: standing still, servo off ({a} / {b})")
+          f"left stopped: at rest, servo off ({a} / {b})")
+    xe = robot.ask("XE")
+    check(xe is not None and xe.split()[2] == "0", f"left stopped: no emergency latched ({xe})")
     robot.close()
     text = open(log).read()
     check(re.search(r"^\d\d:\d\d:\d\d\.\d{3} > AM 0 0\n\d\d:\d\d:\d\d\.\d{3} < ack\n\d\d:\d\d:\d\d\.\d{3} > ASF$", text, re.M)
