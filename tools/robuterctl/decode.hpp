@@ -5,11 +5,24 @@
 
 namespace robuter::ctl {
 
-// A one-or-more-line explanation of `reply` given the command `sent`; the reply itself when
-// there is nothing to add.
+// The fields of `reply` named and in units, given the command `sent` that it answers (pairing.hpp
+// makes sure it does); empty when there is nothing to add to the reply as it stands (`ack`).
 std::string describe_reply(const std::string& sent, const std::string& reply);
 
-// True when an XE reply reports a latched or held emergency; `what` gets a banner for it.
-bool emergency_banner(const std::string& xe_reply, std::string& what);
+// The state an `XE` reply or a status-stream line reports.
+struct EmergencyView {
+  bool valid = false;    // the line was an XE reply / stream line
+  bool latched = false;
+  bool held = false;
+  std::string cause;     // XE only (the stream carries no cause)
+};
+EmergencyView read_xe(const std::string& xe_reply);
+EmergencyView read_stream(const std::string& at_line);
+
+// The banner for a latched emergency and its cause.
+std::string emergency_banner(const std::string& cause);
+
+// A status-stream line (`@ x y theta servo left right emergency clock`) in words.
+std::string describe_stream(const std::string& at_line);
 
 }  // namespace robuter::ctl

@@ -1,81 +1,288 @@
-// robuterctl: interactive client, conformance script runner and latency bench for robuterd's link.
+// robuterctl: interactive console, conformance script runner and latency bench for robuterd's link.
+//
+// The console is one poll() loop over the terminal and the link, with readline's callback
+// interface: replies are paired with their lines by the protocol (pairing.hpp) and printed above
+// the prompt when they arrive, so the stop key (Ctrl-X, bound in readline) and the live status
+// (the status stream, XS) work at any moment — at the prompt and while a reply is awaited.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <poll.h>
 #include <readline/history.h>
 #include <readline/readline.h>
+#include <termios.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
 
 #include "tools/robuterctl/client.hpp"
+#include "tools/robuterctl/commands.hpp"
 #include "tools/robuterctl/decode.hpp"
+#include "tools/robuterctl/pairing.hpp"
 #include "tools/robuterctl/script.hpp"
+
+#ifndef ROBUTER_VERSION
+#define ROBUTER_VERSION "unknown"
+#endif
 
 namespace {
 
 using namespace robuter::ctl;
 using std::chrono::milliseconds;
 
-// Every message robuterd knows, for tab completion.
-const char* const kCommands[] = {"BO", "BU", "BV", "BC", "BT", "BP", "BF", "BD", "AM ", "ASN", "ASF", "AY", "AC ",
-                                 "AW ", "AX", "Ap", "Ag", "AG", "AT", "Ad", "Af", "UT", "UD", "UN", "USN", "USS",
-                                 "Ut", "Uu0", "Uu1", "XE", "XR", "XK", "XV", "XS", "XB0", "XB1", "XC0", "XC1", nullptr};
+constexpr char kStopByte = 0x18;
+constexpr int kStreamTicks = 10;                 // our status stream: every 100 ms
+constexpr milliseconds kPollPeriod{200};         // XE polling when the stream is off
+constexpr milliseconds kReplyPatience{3000};     // then "no reply yet" is said once
 
-char* command_generator(const char* text, int state) {
-  static int index;
-  static std::size_t len;
-  if (state == 0) {
-    index = 0;
-    len = std::strlen(text);
-  }
-  while (const char* c = kCommands[index]) {
-    ++index;
-    if (std::strncmp(c, text, len) == 0) return strdup(c);
-  }
-  return nullptr;
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t");
+  return s.substr(b, e - b + 1);
 }
 
-char** complete(const char* text, int start, int) {
-  rl_attempted_completion_over = 1;
-  return start == 0 ? rl_completion_matches(text, command_generator) : nullptr;
-}
+class Console;
+Console* g_console = nullptr;
 
-// Interactive session: readline with history and completion, decoded replies, emergency banner.
-int interactive(Client& c) {
-  const char* home = std::getenv("HOME");
-  const std::string history = std::string(home ? home : ".") + "/.robuterctl_history";
-  read_history(history.c_str());
-  rl_attempted_completion_function = complete;
-  fmt::print("robuterctl: connected. Tab completes commands, Ctrl-D quits. AX shuts robuterd down.\n");
-  while (char* raw = readline("robuter> ")) {
-    std::string line(raw);
-    std::free(raw);
-    if (line.empty()) continue;
-    add_history(line.c_str());
-    if (!c.send_line(line)) {
-      fmt::print("link closed\n");
-      break;
+class Console {
+ public:
+  Console(Client& c, std::string history) : c_(c), history_(std::move(history)) {}
+
+  int run() {
+    g_console = this;
+    using_history();
+    if (read_history(history_.c_str()) != 0) write_history(history_.c_str());  // creates it
+    rl_readline_name = "robuterctl";
+    rl_attempted_completion_function = complete;
+    rl_catch_signals = 0;  // Ctrl-C is ours: it cancels the line
+    catch_interrupt();
+    std::signal(SIGPIPE, SIG_IGN);
+    fmt::print("robuterctl {}: connected. Ctrl-X stops the robot at any moment; `help` lists the commands; "
+               "Tab completes; Ctrl-D quits.\n", ROBUTER_VERSION);
+    std::fflush(stdout);
+    // Live status: subscribe to the status stream; the emergency's cause comes from XE.
+    send(fmt::format("XS{}", kStreamTicks), true);
+    // Ctrl-X is readline's prefix of C-x sequences (and the inputrc's); a prefix waits for the next
+    // key before acting, and rl_bind_key on a prefix binds only its default. So the entry itself
+    // is made a plain function, after the inputrc was read: it acts on the key alone, at once.
+    rl_initialize();
+    for (Keymap map : {emacs_standard_keymap, vi_insertion_keymap, vi_movement_keymap}) {
+      map[static_cast<unsigned char>(kStopByte)].type = ISFUNC;
+      map[static_cast<unsigned char>(kStopByte)].function = stop_key;
     }
-    const auto reply = c.read_line(milliseconds(2000));
-    if (!reply) {
-      fmt::print("(no reply within 2 s)\n");
-      continue;
-    }
-    fmt::print("< {}\n  {}\n", *reply, describe_reply(line, *reply));
-    if (line == "AX") break;
-    if (c.send_line("XE")) {
-      if (const auto xe = c.read_line(milliseconds(1000))) {
-        std::string banner;
-        if (emergency_banner(*xe, banner)) fmt::print("\033[1;31m{}\033[0m\n", banner);
+    rl_callback_handler_install(prompt().c_str(), on_line);
+    installed_ = true;
+    while (!quit_) {
+      pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {c_.fd(), POLLIN, 0}};
+      const int n = ::poll(p, 2, 50);
+      if (interrupted()) cancel_line();
+      if (n > 0 && (p[0].revents & (POLLIN | POLLHUP))) rl_callback_read_char();
+      if (n > 0 && (p[1].revents & (POLLIN | POLLHUP | POLLERR))) {
+        const bool open = c_.pump();
+        while (auto line = c_.next_line()) handle(*line);
+        if (!open) {
+          print("link closed (robuterd ended or the port went away)\n");
+          quit_ = true;
+        }
       }
+      housekeeping();
+    }
+    if (installed_) rl_callback_handler_remove();
+    history_truncate_file(history_.c_str(), 1000);
+    return 0;
+  }
+
+  // Ctrl-X: the stop byte now, whatever is typed or awaited.
+  static int stop_key(int, int) {
+    if (g_console) g_console->stop();
+    return 0;
+  }
+
+ private:
+  static void on_line(char* raw) { g_console->line(raw); }
+
+  static char* generator(const char* text, int state) {
+    static std::size_t index, len;
+    if (state == 0) index = 0, len = std::strlen(text);
+    const auto table = command_table();
+    while (index < table.size()) {
+      const auto& c = table[index++];
+      if (c.name.size() >= len && c.name.substr(0, len) == text) return strdup(std::string(c.name).c_str());
+    }
+    return nullptr;
+  }
+  static char** complete(const char* text, int start, int) {
+    rl_attempted_completion_over = 1;
+    // The first word is a command; after `help` another command.
+    const std::string before(rl_line_buffer, static_cast<std::size_t>(start));
+    if (start == 0 || trim(before) == "help") return rl_completion_matches(text, generator);
+    return nullptr;
+  }
+
+  std::string prompt() const { return latched_ ? "robuter [EMERGENCY]> " : "robuter> "; }
+
+  // Text printed above the prompt and the line being typed, which are drawn again below it.
+  void print(const std::string& text) {
+    if (installed_) rl_clear_visible_line();
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    if (installed_) rl_forced_update_display();
+  }
+  // The prompt shows a latched emergency; drawn by the next print().
+  void set_prompt() {
+    if (installed_) rl_set_prompt(prompt().c_str());
+  }
+
+  void stop() {
+    c_.send_raw(std::string(1, kStopByte));
+    c_.note("stop byte 0x18 sent");
+    print("\033[1;31m» stop byte sent (0x18): the robot stops and the emergency latches; XR re-enables\033[0m\n");
+  }
+
+  void cancel_line() {
+    clear_interrupted();
+    if (!installed_) return;
+    rl_callback_sigcleanup();
+    rl_replace_line("", 0);
+    rl_point = rl_end = 0;
+    std::fputs("^C\n", stdout);
+    std::fflush(stdout);
+    rl_on_new_line();
+    rl_redisplay();
+  }
+
+  void send(const std::string& line, bool internal) {
+    if (!c_.send_raw(pairing_.outgoing(line, internal))) {
+      print("link closed\n");
+      quit_ = true;
+    }
+    if (internal && line == "XE") last_poll_ = std::chrono::steady_clock::now();
+  }
+
+  // A line typed and entered (nullptr: Ctrl-D).
+  void line(char* raw) {
+    if (!raw) {
+      std::fputs("\n", stdout);
+      quit_ = true;
+      rl_callback_handler_remove();
+      installed_ = false;
+      return;
+    }
+    const std::string typed(raw);
+    std::free(raw);
+    const std::string t = trim(typed);
+    if (t.empty()) return;
+    add_history(typed.c_str());
+    append_history(1, history_.c_str());
+    const auto space = t.find(' ');
+    const std::string word = t.substr(0, space);
+    const std::string arg = space == std::string::npos ? "" : trim(t.substr(space + 1));
+    if (word == "help" || word == "?") return (void)std::fputs(help_text(arg).c_str(), stdout);
+    if (word == "stop") return stop();
+    if (word == "quit" || word == "exit") {
+      quit_ = true;
+      rl_callback_handler_remove();
+      installed_ = false;
+      return;
+    }
+    if (word == "clear") return (void)std::fputs("\033[H\033[2J", stdout);
+    if (word == "status") {
+      std::fputs((last_status_.empty() ? std::string("no status line yet (the stream is off)")
+                                       : describe_stream(last_status_)).c_str(), stdout);
+      std::fputs("\n", stdout);
+      return;
+    }
+    send(typed, false);
+  }
+
+  // One line of the link.
+  void handle(const std::string& raw) {
+    const Incoming in = pairing_.incoming(raw);
+    const std::string bad = in.checksum_bad ? "  \033[1;31m(checksum missing or wrong)\033[0m" : "";
+    if (in.kind == Incoming::Kind::stream) {
+      last_status_ = in.text;
+      if (user_stream_) print(fmt::format("\033[2m{}\033[0m{}\n", in.text, bad));
+      const EmergencyView v = read_stream(in.text);
+      if (v.valid && v.latched && !latched_ && !xe_in_flight()) send("XE", true);  // its cause
+      if (v.valid && !v.latched && latched_) cleared();
+      return;
+    }
+    if (in.kind == Incoming::Kind::unexpected) {
+      c_.note("unexpected line: " + in.text);
+      print(fmt::format("\033[33m? a line that answers nothing sent (stale or late): {}\033[0m{}\n", in.text, bad));
+      return;
+    }
+    if (in.lost) print(fmt::format("({} earlier line(s) got no reply: robuterd dropped them)\n", in.lost));
+    const std::string cmd = trim(in.command);
+    if (in.internal) {
+      if (cmd.rfind("XS", 0) == 0) live_poll_ = in.text != "ack";  // no stream: poll XE instead
+      if (cmd == "XE") emergency_from(read_xe(in.text));
+      return;
+    }
+    std::string out = fmt::format("< {}{}\n", in.text, bad);
+    const std::string words = describe_reply(cmd, in.text);
+    if (!words.empty()) out += "  " + words + "\n";
+    print(out);
+    if (cmd == "XE") emergency_from(read_xe(in.text));
+    if (cmd == "XR" && in.text == "ack" && latched_) cleared();
+    if (cmd.rfind("XS", 0) == 0 && in.text == "ack") {
+      user_stream_ = pairing_.stream_period() > 0;
+      live_poll_ = !user_stream_;
     }
   }
-  write_history(history.c_str());
-  return 0;
-}
+
+  bool xe_in_flight() const {
+    for (const auto& w : pairing_.waiting())
+      if (w.internal && w.command == "XE") return true;
+    return false;
+  }
+
+  void emergency_from(const EmergencyView& v) {
+    if (!v.valid) return;
+    if (v.latched && !latched_) {
+      latched_ = true;
+      c_.note("emergency latched: " + v.cause);
+      set_prompt();
+      print(fmt::format("\033[1;41;37m{}\033[0m\n", emergency_banner(v.cause)));
+    } else if (!v.latched && latched_) {
+      cleared();
+    }
+  }
+  void cleared() {
+    latched_ = false;
+    c_.note("emergency cleared");
+    set_prompt();
+    print("\033[1;32memergency cleared: motion commands are accepted again\033[0m\n");
+  }
+
+  void housekeeping() {
+    const auto now = std::chrono::steady_clock::now();
+    for (auto& w : pairing_.waiting()) {
+      if (w.internal || w.overdue_told || now - w.sent < kReplyPatience) continue;
+      w.overdue_told = true;
+      print(fmt::format("(no reply to '{}' within {} s; a late reply is shown when it comes)\n", trim(w.command),
+                        kReplyPatience.count() / 1000));
+    }
+    if (live_poll_ && pairing_.waiting().empty() && now - last_poll_ >= kPollPeriod) send("XE", true);
+  }
+
+  Client& c_;
+  std::string history_;
+  Pairing pairing_;
+  bool quit_ = false;
+  bool installed_ = false;
+  bool latched_ = false;      // an emergency is latched, as far as we know
+  bool user_stream_ = false;  // the operator asked for the stream: show its lines
+  bool live_poll_ = false;    // no stream: poll XE
+  std::chrono::steady_clock::time_point last_poll_{};
+  std::string last_status_;
+};
 
 // Round-trip latency of `line` over `n` requests: one in flight at a time.
 int bench(Client& c, int n, const std::string& line) {
@@ -99,37 +306,129 @@ int bench(Client& c, int n, const std::string& line) {
   return 0;
 }
 
+// The terminal in script mode: keys arrive one by one (Ctrl-X without Enter), Ctrl-C still signals.
+class KeyTerminal {
+ public:
+  KeyTerminal() {
+    if (!isatty(STDIN_FILENO) || tcgetattr(STDIN_FILENO, &saved_) != 0) return;
+    termios t = saved_;
+    t.c_lflag &= static_cast<tcflag_t>(~(ICANON | ECHO));
+    t.c_cc[VMIN] = 1;
+    t.c_cc[VTIME] = 0;
+    active_ = tcsetattr(STDIN_FILENO, TCSANOW, &t) == 0;
+  }
+  ~KeyTerminal() {
+    if (active_) tcsetattr(STDIN_FILENO, TCSANOW, &saved_);
+  }
+  bool active() const { return active_; }
+
+ private:
+  termios saved_{};
+  bool active_ = false;
+};
+
+int scripts_mode(Client& client, const std::vector<std::string>& scripts, const ScriptOptions& options) {
+  catch_interrupt();
+  KeyTerminal keys;
+  if (keys.active()) {
+    client.watch(STDIN_FILENO, [&client] {
+      char k = 0;
+      if (::read(STDIN_FILENO, &k, 1) == 1 && k == kStopByte) {
+        client.send_raw(std::string(1, kStopByte));
+        client.note("stop byte 0x18 sent (Ctrl-X)");
+        fmt::print("» stop byte sent (Ctrl-X)\n");
+        std::fflush(stdout);
+      }
+    });
+  }
+  int passed = 0, failed = 0, scripts_failed = 0;
+  bool stopped_by_user = false;
+  for (const auto& s : scripts) {
+    const ScriptResult r = run_script(client, s, stdout, options);
+    passed += r.checks;
+    failed += r.failures;
+    if (r.failures) ++scripts_failed;
+    fmt::print("{} {} ({} checks met, {} failed)\n", r.failures ? "FAIL" : "ok  ", s, r.checks, r.failures);
+    std::fflush(stdout);
+    // Leave the robot stopped (never with the stop byte, which latches it).
+    clear_interrupted();
+    const std::string left = leave_stopped(client);
+    fmt::print("  robot left stopped: {}\n", left);
+    client.note("robot left stopped: " + left);
+    if (r.interrupted) {
+      stopped_by_user = true;
+      break;
+    }
+  }
+  fmt::print("{} passed, {} failed{}\n", passed, failed, stopped_by_user ? " (interrupted)" : "");
+  return scripts_failed || stopped_by_user ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"robuterctl — talk to robuterd over its command link"};
-  std::string port = "/tmp/robuter.pty", bench_line = "BO";
+  std::string port = "/tmp/robuter.pty", bench_line = "BO", log_path, history;
   std::vector<std::string> scripts;
   int bench_n = 0;
   unsigned baud = 0;
-  app.add_option("-p,--port", port, "pty or serial device of the link");
-  app.add_option("--baud", baud, "serial rate, bit/s (serial devices)");
+  bool keep_going = false;
+  app.set_version_flag("--version", std::string("robuterctl ") + ROBUTER_VERSION);
+  app.add_option("-p,--port", port, "pty or serial device of the link (default /tmp/robuter.pty, as `make run`)");
+  app.add_option("--baud", baud, "serial rate, bit/s (serial devices): 1200 … 921600");
   app.add_option("-s,--script", scripts, "run conformance scripts (> send, < expect, ! directives) and exit");
+  app.add_flag("-k,--keep-going", keep_going, "scripts: go on after a failed expectation");
+  app.add_option("--log", log_path, "write a transcript with times of every line sent and received to FILE");
+  app.add_option("--history", history, "history file (default $HOME/.robuterctl_history)");
   app.add_option("--bench", bench_n, "measure the round-trip latency over N requests and exit");
   app.add_option("--bench-line", bench_line, "the request the bench sends");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;  // usage errors: 2
+  }
+  if (baud && !baud_supported(baud)) {
+    fmt::print(stderr, "robuterctl: --baud {}: not a rate a serial device can be set to (1200, 2400, 4800, 9600, 19200, "
+                       "38400, 57600, 115200, 230400, 460800, 921600)\n", baud);
+    return 2;
+  }
 
+  std::FILE* log = nullptr;
+  if (!log_path.empty()) {
+    log = std::fopen(log_path.c_str(), "a");
+    if (!log) {
+      fmt::print(stderr, "robuterctl: --log {}: cannot open: {}\n", log_path, std::strerror(errno));
+      return 2;
+    }
+  }
   Client client(port, baud);
   if (client.error()) {
     fmt::print(stderr, "robuterctl: {}\n", *client.error());
-    return 2;
+    if (client.open_errno() == ENOENT)
+      fmt::print(stderr, "  is robuterd running? `make run` starts it on /tmp/robuter.pty; or start "
+                         "`robuterd --sim --pty PATH` and give robuterctl --port PATH\n");
+    else if (client.open_errno() == EACCES)
+      fmt::print(stderr, "  no permission: a serial device usually needs the group dialout\n");
+    return 1;
   }
+  client.set_log(log);
+  client.note(fmt::format("robuterctl {} on {}", ROBUTER_VERSION, port));
+  // What an earlier client left unread would otherwise answer our first line.
+  if (const std::size_t stale = client.flush_stale(milliseconds(50)); stale && scripts.empty() && bench_n == 0)
+    fmt::print("({} bytes an earlier client left unread were dropped)\n", stale);
+  int rc = 0;
   if (!scripts.empty()) {
-    int failed = 0, checks = 0;
-    for (const auto& s : scripts) {
-      const ScriptResult r = run_script(client, s, stdout);
-      checks += r.checks;
-      if (r.failures) ++failed;
-      fmt::print("{} {} ({} checks)\n", r.failures ? "FAIL" : "ok  ", s, r.checks);
+    rc = scripts_mode(client, scripts, ScriptOptions{keep_going});
+  } else if (bench_n > 0) {
+    rc = bench(client, bench_n, bench_line);
+  } else {
+    if (history.empty()) {
+      const char* home = std::getenv("HOME");
+      history = std::string(home ? home : ".") + "/.robuterctl_history";
     }
-    fmt::print("{} passed, {} failed\n", scripts.size() - static_cast<std::size_t>(failed), failed);
-    return failed ? 1 : 0;
+    rc = Console(client, history).run();
   }
-  if (bench_n > 0) return bench(client, bench_n, bench_line);
-  return interactive(client);
+  if (log) std::fclose(log);
+  return rc;
 }

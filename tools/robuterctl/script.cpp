@@ -8,16 +8,21 @@
 //   ! timeout MS          time allowed for each expected reply (default 3000)
 //   ! pipeline N L=P|L=P  write N lines at once, cycling through L, and expect the N replies
 //                         in order, each matching its P
+// An expectation not starting with `@` skips status-stream lines; `< @ …` expects one.
 #include "tools/robuterctl/script.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
 #include <vector>
 
+#include "tools/robuterctl/pairing.hpp"
 #include "tools/robuterctl/pattern.hpp"
 
 namespace robuter::ctl {
@@ -33,19 +38,13 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::string visible(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) out += (c >= 32 && c < 127) ? std::string(1, static_cast<char>(c)) : fmt::format("\\x{:02x}", c);
-  return out;
-}
-
 }  // namespace
 
-ScriptResult run_script(Client& client, const std::string& path, std::FILE* out) {
+ScriptResult run_script(Client& client, const std::string& path, std::FILE* out, const ScriptOptions& options) {
   ScriptResult r;
   std::ifstream in(path);
   if (!in) {
-    fmt::print(out, "{}: cannot open\n", path);
+    fmt::print(out, "{}: cannot open: {}\n", path, std::strerror(errno));
     r.failures = 1;
     return r;
   }
@@ -54,15 +53,30 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out)
   int lineno = 0;
   auto fail = [&](const std::string& what) {
     fmt::print(out, "{}:{}: FAIL {}\n", path, lineno, what);
+    client.note(fmt::format("{}:{}: FAIL {}", path, lineno, what));
     ++r.failures;
   };
+  // Whether to stop after a failure.
+  auto stop_here = [&] { return !options.keep_going || interrupted(); };
   auto expect = [&](const std::string& pat_text) -> bool {
     Pattern pat(pat_text);
     if (pat.error()) {
       fail("bad pattern: " + *pat.error());
       return false;
     }
-    const auto got = client.read_line(timeout);
+    const bool want_stream = !pat_text.empty() && pat_text[0] == '@';
+    std::optional<std::string> got;
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    for (;;) {
+      const auto left = std::chrono::duration_cast<milliseconds>(deadline - std::chrono::steady_clock::now());
+      got = client.read_line(std::max(left, milliseconds(0)));
+      if (!got || want_stream || (*got)[0] != '@') break;  // a stream line is never a reply
+    }
+    if (interrupted()) {
+      r.interrupted = true;
+      fail("interrupted (Ctrl-C)");
+      return false;
+    }
     if (!got) {
       fail(fmt::format("expected '{}', got no reply within {} ms", pat_text, timeout.count()));
       return false;
@@ -80,10 +94,15 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out)
     if (line.empty() || line[0] == '#') continue;
     const char kind = line[0];
     const std::string rest = line.size() > 2 ? line.substr(2) : "";
+    if (interrupted()) {
+      r.interrupted = true;
+      fail("interrupted (Ctrl-C)");
+      return r;
+    }
     if (kind == '>') {
       if (!client.send_line(rest)) return fail("link closed while sending"), r;
     } else if (kind == '<') {
-      if (!expect(rest)) return r;
+      if (!expect(rest) && stop_here()) return r;
     } else if (kind == '!') {
       std::istringstream ss(rest);
       std::string verb;
@@ -121,12 +140,16 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out)
       } else if (verb == "silence") {
         int ms = 300;
         ss >> ms;
-        if (const auto got = client.read_line(milliseconds(ms))) return fail("expected silence, got '" + visible(*got) + "'"), r;
-        ++r.checks;
+        if (const auto got = client.read_line(milliseconds(ms))) {
+          fail("expected silence, got '" + visible(*got) + "'");
+          if (stop_here()) return r;
+        } else {
+          ++r.checks;
+        }
       } else if (verb == "sleep") {
         int ms = 0;
         ss >> ms;
-        std::this_thread::sleep_for(milliseconds(ms));
+        client.idle(milliseconds(ms));
       } else if (verb == "timeout") {
         int ms = 3000;
         ss >> ms;
@@ -152,7 +175,7 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out)
         bool ok = true;
         for (std::size_t i = 0; i < n && ok; ++i) ok = expect(items[i % items.size()].second);
         writer.join();
-        if (!ok) return r;
+        if (!ok && stop_here()) return r;
       } else {
         return fail("unknown directive '" + verb + "'"), r;
       }
@@ -161,6 +184,29 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out)
     }
   }
   return r;
+}
+
+std::string leave_stopped(Client& client) {
+  // Checksums may have been left on by the script: try plain lines, then with checksums.
+  std::string report;
+  for (const char* line : {"AM 0 0", "ASF"}) {
+    std::string got;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      const std::string sent = attempt ? with_checksum(line) : std::string(line);
+      if (!client.send_line(sent)) return "the link is closed (robuterd ended, or the port went away): nothing sent";
+      std::optional<std::string> reply;
+      const auto deadline = std::chrono::steady_clock::now() + milliseconds(2000);
+      for (;;) {
+        const auto left = std::chrono::duration_cast<milliseconds>(deadline - std::chrono::steady_clock::now());
+        reply = client.read_line(std::max(left, milliseconds(0)));
+        if (!reply || (*reply)[0] != '@') break;
+      }
+      got = reply ? *reply : "no reply";
+      if (got.rfind("ack", 0) == 0) break;
+    }
+    report += fmt::format("{}{} → {}", report.empty() ? "" : ", ", line, got);
+  }
+  return report;
 }
 
 }  // namespace robuter::ctl
