@@ -22,13 +22,10 @@ WATCHDOG_MS = 300
 with open(cfg, "w") as f:
     f.write(f'[hardware]\ndrive = "can"\nsonar = "can"\n[can]\ninterface = "unix:{bus}"\n'
             f"drive_watchdog_ms = {WATCHDOG_MS}\n")
-failed = 0
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from check import Checks  # noqa: E402  (tests/support/check.py)
 
-
-def check(name, ok, detail=""):
-    global failed
-    print(("ok   " if ok else "FAIL ") + name + (f": {detail}" if detail else ""), flush=True)
-    failed += 0 if ok else 1
+check = Checks()
 
 
 class Lines:
@@ -172,10 +169,9 @@ finally:
         nodes.wait(timeout=10)
     except subprocess.TimeoutExpired:
         nodes.kill()
-    if failed:
+    if check.failed:
         print("--- robuter-can-nodes\n" + "\n".join(out.seen))
         for i in range(1, starts + 1):
             print(f"--- robuterd {i}\n" + open(os.path.join(tmp, f"robuterd-{i}.log")).read())
     subprocess.run(["rm", "-rf", tmp])
-print(f"{failed} failed")
-sys.exit(1 if failed else 0)
+check.exit()

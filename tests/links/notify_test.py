@@ -15,13 +15,10 @@ import time
 robuterd = os.path.abspath(sys.argv[1])
 tmp = tempfile.mkdtemp(prefix="robuter-notify-")
 path = os.path.join(tmp, "notify")
-failed = 0
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from check import Checks  # noqa: E402  (tests/support/check.py)
 
-
-def check(name, ok, detail=""):
-    global failed
-    print(("ok   " if ok else "FAIL ") + name + (f": {detail}" if detail else ""), flush=True)
-    failed += 0 if ok else 1
+check = Checks()
 
 
 def receive(sock, want, timeout):
@@ -93,9 +90,8 @@ finally:
     if proc.poll() is None:
         proc.send_signal(signal.SIGCONT)
         proc.kill()
-    if failed:
+    if check.failed:
         print(open(log_path).read())
     sock.close()
     subprocess.run(["rm", "-rf", tmp])
-print(f"{failed} failed")
-sys.exit(1 if failed else 0)
+check.exit()

@@ -16,13 +16,10 @@ import tty
 robuterd = os.path.abspath(sys.argv[1])
 tmp = tempfile.mkdtemp(prefix="robuter-links-")
 A, B = os.path.join(tmp, "a.pty"), os.path.join(tmp, "b.pty")
-failed = 0
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from check import Checks  # noqa: E402  (tests/support/check.py)
 
-
-def check(name, ok, detail=""):
-    global failed
-    print(("ok   " if ok else "FAIL ") + name + (f": {detail}" if detail else ""), flush=True)
-    failed += 0 if ok else 1
+check = Checks()
 
 
 class Client:
@@ -166,8 +163,7 @@ try:
 finally:
     if proc.poll() is None:
         proc.kill()
-    if failed:
+    if check.failed:
         print(open(os.path.join(tmp, "robuterd.log")).read())
     subprocess.run(["rm", "-rf", tmp])
-print(f"{failed} failed")
-sys.exit(1 if failed else 0)
+check.exit()

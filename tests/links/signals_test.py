@@ -16,13 +16,10 @@ import tty
 
 robuterd = os.path.abspath(sys.argv[1])
 tmp = tempfile.mkdtemp(prefix="robuter-signals-")
-failed = 0
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from check import Checks  # noqa: E402  (tests/support/check.py)
 
-
-def check(name, ok, detail=""):
-    global failed
-    print(("ok   " if ok else "FAIL ") + name + (f": {detail}" if detail else ""), flush=True)
-    failed += 0 if ok else 1
+check = Checks()
 
 
 class Robuterd:
@@ -124,10 +121,9 @@ for sig, r, was_moving in zip(fatal, runs, moving):
           and line in log, f"moving {was_moving}, rc {rc}")
     os.close(r.fd)
 
-if failed:
+if check.failed:
     for f in sorted(os.listdir(tmp)):
         if f.endswith(".log"):
             print(f"--- {f}\n" + open(os.path.join(tmp, f)).read())
 subprocess.run(["rm", "-rf", tmp])
-print(f"{failed} failed")
-sys.exit(1 if failed else 0)
+check.exit()
