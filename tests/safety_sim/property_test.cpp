@@ -184,7 +184,7 @@ struct ArbiterMonitor {
       automatic_may = false;
       if (is("AM")) operator_may = line != "AM 0 0";
       if (is("AW")) operator_may = true;
-      if (is("ASF") || is("XH") || is("XT0")) operator_may = operator_may && !is("ASF");
+      if (is("ASF")) operator_may = false;  // XH, XT0, AT, Af, ASN leave an operator's motion as it is
     } else {
       return;
     }
