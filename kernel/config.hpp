@@ -66,9 +66,9 @@ struct EmergencyConfig {
   std::uint32_t motion_timeout_ms = 0;       // stop when no motion command for this long while moving; 0 = off
   bool auto_toggle = false;                  // only the watch-dog sensors fire
   bool latch = true;                         // a tripped emergency holds until re-enabled
-  std::string rule = "seed";                 // obstacle rule: "seed" (watch-dog sets) or "envelope" (swept body, not yet the default: docs/SAFETY.md §13)
+  std::string rule = "envelope";             // obstacle rule: "envelope" (swept body, docs/SAFETY.md §13) or "seed" (watch-dog sets)
   std::uint32_t margin_mm = 30;              // envelope: clearance kept around the body, mm
-  std::uint32_t creep_cm_s = 10;             // envelope: fastest wheel where only the blind near field is unknown, cm/s
+  std::uint32_t creep_cm_s = 20;             // envelope: fastest wheel where only the blind near field is unknown, cm/s
   std::uint32_t free_age_ms = 3000;          // envelope: free space older than this is unknown again, ms
   std::uint32_t protective_clear_ms = 1000;  // envelope: an automatic mode resumes after this long clear, ms
   std::uint32_t reaction_ms = 110;           // envelope: from a decision to the next one reaching the drive, ms

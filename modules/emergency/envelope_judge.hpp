@@ -11,8 +11,10 @@ namespace robuter::safety {
 class EnvelopeJudge {
  public:
   virtual ~EnvelopeJudge() = default;
-  // The verdict on wheel speeds (left, right) cm/s for the robot as it is now.
-  virtual EnvelopeVerdict judge(std::int32_t left, std::int32_t right) = 0;
+  // The verdict on wheel speeds (left, right) cm/s for the robot as it is now; `bumpers` says
+  // whether the contact bumpers are armed (they alone watch the blind near field: a creep there
+  // needs them).
+  virtual EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) = 0;
 };
 
 }  // namespace robuter::safety

@@ -87,7 +87,7 @@ GateDecision MotionGate::step(const GateInputs& in) {
   double fraction = 1.0;        // share of the request the envelope grants
   if (cause == EmergencyCause::none && moving && (s_.enabled & kDetectUltrasonic)) {
     if (use_envelope) {
-      const EnvelopeVerdict v = in.envelope->judge(left_, right_);
+      const EnvelopeVerdict v = in.envelope->judge(left_, right_, (s_.enabled & kDetectBumper) != 0);
       fraction = v.fraction;
       const bool nothing = scaled(left_, fraction) == 0 && scaled(right_, fraction) == 0;
       protective_now = v.obstacle || (nothing && !v.missing);

@@ -97,7 +97,7 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
 
 // A request that reverses a wheel lets the robot go on along its present arc first, slowing at
 // the acceleration limit only (the drive's ramps): that braking must be clear of obstacles too.
-EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right) {
+EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right, bool bumpers) {
   EnvelopeVerdict v;
   if (history_.empty()) {
     v.fraction = 0.0;
@@ -105,9 +105,11 @@ EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right) {
     return v;
   }
   const double l = left / 100.0, r = right / 100.0;
-  // A creep through the blind near field needs a ring that is reading: a dead ring holds.
+  // A creep through the blind near field, and the longer life of its certificates, need a ring
+  // that is reading (a dead ring holds); the creep needs the bumpers armed too: nothing else
+  // senses there (seed 1631 crept into a box with them masked off).
   const bool alive = last_reading_ != 0 && tick_ - last_reading_ <= env_.settings().free_age_ticks;
-  v = env_.judge(grid_, now_, l, r, tick_, alive);
+  v = env_.judge(grid_, now_, l, r, tick_, alive, bumpers);
   const Twist2 t = history_.velocity();
   const double speed = t.v / tick_s_, turn = t.w / tick_s_;
   const double half_base = 0.5 * robot_.wheel_base_mm / 1000.0;

@@ -30,7 +30,7 @@ class RingEnvelope final : public EnvelopeJudge {
   // One activation at `tick`: the newest posture and ranges. Work: one grid certification per
   // new reading (≤ 24), one of the body per tick, at most one window move.
   void observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges);
-  EnvelopeVerdict judge(std::int32_t left, std::int32_t right) override;
+  EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) override;
 
   const EvidenceGrid& grid() const { return grid_; }
   const Pose2& pose() const { return now_; }

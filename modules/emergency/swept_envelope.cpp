@@ -40,7 +40,7 @@ double SweptEnvelope::fraction_for(double tau, double w, double decel) const {
 // A point under the body now is the body; within `near` of it a missing certificate is the blind
 // near field's; farther it is missing data.
 SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau,
-                                          std::uint64_t tick, Eigen::Vector2d* where) const {
+                                          std::uint64_t tick, std::uint64_t near_age, Eigen::Vector2d* where) const {
   const Pose2 pose = advance(now, v, w, tau);
   const double c = std::cos(pose.theta), sn = std::sin(pose.theta);
   const double c0 = std::cos(now.theta), s0 = std::sin(now.theta);
@@ -58,7 +58,7 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
     if (st == CellState::free) continue;
     const bool near = ex * ex + ey * ey <= s_.near * s_.near;
     // No reading can refresh a certificate inside the blind near field: an older one counts there.
-    if (st == CellState::stale && near && g.state(q, tick, s_.near_age_ticks) == CellState::free) continue;
+    if (st == CellState::stale && near && g.state(q, tick, near_age) == CellState::free) continue;
     if (st == CellState::obstacle) {
       if (where) *where = o.q;
       return Meets::obstacle;
@@ -73,7 +73,8 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
 // Poses every `step` of the fastest outline point's travel; the first bad pose is refined by
 // bisection against the last good one.
 double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-                            std::uint64_t tick, Meets& what, int& poses, Eigen::Vector2d* where) const {
+                            std::uint64_t tick, std::uint64_t near_age, Meets& what, int& poses,
+                            Eigen::Vector2d* where) const {
   what = Meets::clear;
   const double speed = std::abs(v) + std::abs(w) * reach_;  // fastest outline point, m/s
   if (speed <= 1e-9 || tau_max <= 0.0) return tau_max + 1.0;
@@ -82,7 +83,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
   for (int i = 1; i <= n; ++i) {
     const double tau = tau_max * i / n;
     ++poses;
-    const Meets m = meets(g, now, v, w, tau, tick, where);
+    const Meets m = meets(g, now, v, w, tau, tick, near_age, where);
     if (m < level) {
       good = tau;
       continue;
@@ -92,7 +93,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
     for (int r = 0; r < kRefine; ++r) {
       const double mid = 0.5 * (good + bad);
       ++poses;
-      const Meets mm = meets(g, now, v, w, mid, tick);
+      const Meets mm = meets(g, now, v, w, mid, tick, near_age);
       if (mm < level) {
         good = mid;
       } else {
@@ -106,21 +107,24 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
 }
 
 EnvelopeVerdict SweptEnvelope::judge(const EvidenceGrid& g, const Pose2& now, double left, double right,
-                                     std::uint64_t tick, bool creep_ok) const {
+                                     std::uint64_t tick, bool ring_alive, bool bumpers) const {
   EnvelopeVerdict out;
   const double wmax = std::max(std::abs(left), std::abs(right));
   if (wmax <= 0.0) return out;
   const double v = 0.5 * (left + right), w = (right - left) / s_.wheel_base;
   const double tau_max = horizon(1.0, wmax, s_.decel);
+  // A dead ring refreshes nothing anywhere: the near field's longer life is for a ring that reads.
+  const std::uint64_t near_age = ring_alive ? s_.near_age_ticks : s_.free_age_ticks;
+  const bool creep_ok = ring_alive && bumpers;
   // Where the request first meets anything not certified free (near field included) …
   Meets what_near = Meets::clear;
-  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, tick, what_near, out.poses, &out.where);
+  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, tick, near_age, what_near, out.poses, &out.where);
   if (tau_near > tau_max) return out;  // all clear: the whole request
   double k = fraction_for(tau_near, wmax, s_.decel);
   // … and where it first meets missing data or an obstacle (the near field allows a creep there).
   Meets what_hard = what_near;
   double tau_hard = tau_near;
-  if (what_near == Meets::near_unknown) tau_hard = first(g, now, v, w, tau_max, Meets::missing, tick, what_hard, out.poses);
+  if (what_near == Meets::near_unknown) tau_hard = first(g, now, v, w, tau_max, Meets::missing, tick, near_age, what_hard, out.poses);
   const double k_hard = tau_hard > tau_max ? 1.0 : fraction_for(tau_hard, wmax, s_.decel);
   const double creep = creep_ok ? s_.creep : 0.0;
   if (what_near == Meets::near_unknown) k = std::max(k, std::min(k_hard, creep / wmax));
@@ -140,7 +144,7 @@ bool SweptEnvelope::braking_meets_obstacle(const EvidenceGrid& g, const Pose2& n
   const double tau = wmax / (2.0 * decel);
   Meets what = Meets::clear;
   int poses = 0;
-  first(g, now, v, w, tau, Meets::obstacle, tick, what, poses);
+  first(g, now, v, w, tau, Meets::obstacle, tick, s_.near_age_ticks, what, poses);
   return what == Meets::obstacle;
 }
 

@@ -50,10 +50,11 @@ class SweptEnvelope {
 
   // Precomputes the outline samples (the only allocation).
   explicit SweptEnvelope(const EnvelopeSettings& s);
-  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`; `creep_ok`
-  // false (the ring has not read anything within the age limit) allows no creep either.
+  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`. `ring_alive`
+  // false (the ring has read nothing within the age limit): the near field's certificates get no
+  // longer life and no creep is allowed; `bumpers` false (masked off): no creep either.
   EnvelopeVerdict judge(const EvidenceGrid& g, const Pose2& now, double left, double right, std::uint64_t tick,
-                        bool creep_ok = true) const;
+                        bool ring_alive = true, bool bumpers = true) const;
   // Whether braking now from the motion (v m/s, w rad/s) at `decel` m/s² sweeps obstacle evidence.
   bool braking_meets_obstacle(const EvidenceGrid& g, const Pose2& now, double v, double w, double decel,
                               std::uint64_t tick) const;
@@ -77,12 +78,14 @@ class SweptEnvelope {
   // What one pose meets, worst first.
   enum class Meets : std::uint8_t { clear, near_unknown, missing, obstacle };
   // The worst the leading outline meets at the pose `tau` along the arc of (v, w) from `now`.
+  // `near_age`: how old a certificate of the blind near field may be, ticks.
   Meets meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau, std::uint64_t tick,
-              Eigen::Vector2d* where = nullptr) const;
+              std::uint64_t near_age, Eigen::Vector2d* where = nullptr) const;
   // Scans the arc from 0 to tau_max; returns the (refined) first tau at which the pose meets at
   // least `level`, or a value above tau_max when none; `what` gets what it met there.
   double first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-               std::uint64_t tick, Meets& what, int& poses, Eigen::Vector2d* where = nullptr) const;
+               std::uint64_t tick, std::uint64_t near_age, Meets& what, int& poses,
+               Eigen::Vector2d* where = nullptr) const;
 
   EnvelopeSettings s_;
   std::vector<OutlinePoint> outline_;  // faces of the rectangles grown by 0, step, …, margin

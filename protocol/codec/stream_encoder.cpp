@@ -3,9 +3,10 @@
 
 namespace robuter::protocol {
 
-// Two bits so a client sees both "waiting for data" and "stopped by an emergency".
+// Three bits so a client sees "waiting for data", "stopped by an emergency" and "stopped short
+// of an obstacle" (a protective stop, which needs no XR) apart.
 int stream_emergency_field(const EmergencyStatus& status) noexcept {
-  return (status.held ? 1 : 0) + (status.latched ? 2 : 0);
+  return (status.held ? 1 : 0) + (status.latched ? 2 : 0) + (status.protective ? 4 : 0);
 }
 
 // '@' starts no reply, so an opted-in client can tell stream lines from replies.

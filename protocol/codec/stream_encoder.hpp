@@ -8,7 +8,7 @@
 
 namespace robuter::protocol {
 
-// The emergency field of a stream line: 0 clear, +1 motion held, +2 emergency latched.
+// The emergency field of a stream line: 0 clear, +1 motion held, +2 emergency latched, +4 protective stop.
 int stream_emergency_field(const EmergencyStatus& status) noexcept;
 
 // Builds one status line in `out` (session format: checksum, terminator) and returns it.

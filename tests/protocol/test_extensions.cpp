@@ -146,6 +146,9 @@ TEST(Extensions, StreamDoesNotDisturbAReply) {
 TEST(Extensions, EmergencyFieldOfStream) {
   EXPECT_EQ(stream_emergency_field({true, true, EmergencyCause::bumper, 0}), 3);
   EXPECT_EQ(stream_emergency_field({}), 0);
+  EmergencyStatus protective;
+  protective.protective = true;
+  EXPECT_EQ(stream_emergency_field(protective), 4);
 }
 
 TEST(Extensions, XLTerminator) {

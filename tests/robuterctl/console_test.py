@@ -286,15 +286,16 @@ def console(robuterd, ctl, tmp):
     p.close()
     d.stop()
 
-    # ---- a live emergency with another cause: an obstacle ahead ----
+    # ---- an obstacle ahead: a protective stop (no latch), shown live ----
     d = Robuterd(robuterd, tmp, "obstacle")
     p = Pane(tmp, f"{ctl} --port {d.pty}", "obstacle")
     check(p.wait(r"connected") is not None, "obstacle: robuterctl connects")
     m = p.mark()
     p.type("ASN")
     p.type("AM 40 40")
-    check(p.wait(r"EMERGENCY LATCHED: obstacle", m, timeout=90) is not None,
-          "live banner: obstacle shown when it happens, nothing typed")
+    check(p.wait(r"PROTECTIVE STOP", m, timeout=90) is not None,
+          "live banner: a protective stop shown when it happens, nothing typed")
+    check("EMERGENCY LATCHED" not in p.screen()[m:], "protective stop: no emergency, nothing latched")
     p.close()
     d.stop()
 

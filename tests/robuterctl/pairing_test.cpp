@@ -72,6 +72,10 @@ TEST(Decode, ExtensionsDecodedOnce) {
   EXPECT_TRUE(v.latched);
   EXPECT_EQ(v.cause, "obstacle");
   EXPECT_TRUE(read_stream("@ 1 2 3 0 0 0 2 99").latched);
+  EXPECT_TRUE(read_xe("E 0 0 none 7 18234 0 envelope 1").protective);
+  EXPECT_FALSE(read_xe("E 0 0 none 7 18234 100 envelope 0").protective);
+  EXPECT_TRUE(read_stream("@ 1 2 3 1 0 0 4 99").protective);
+  EXPECT_NE(describe_stream("@ 1 2 3 1 0 0 4 99").find("protective stop"), std::string::npos);
 }
 
 TEST(Help, EveryCommandAndExtension) {

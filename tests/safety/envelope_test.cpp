@@ -165,7 +165,7 @@ TEST(SweptEnvelope, UnknownNearFieldAllowsACreepUnknownFarFieldNothing) {
 // A judge that answers what the test says.
 struct FakeJudge final : EnvelopeJudge {
   EnvelopeVerdict verdict;
-  EnvelopeVerdict judge(std::int32_t, std::int32_t) override { return verdict; }
+  EnvelopeVerdict judge(std::int32_t, std::int32_t, bool) override { return verdict; }
 };
 
 struct EnvelopeGate {

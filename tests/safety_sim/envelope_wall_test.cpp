@@ -101,7 +101,7 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
     out.min_cap_ratio = std::min(out.min_cap_ratio, c.left / expected);
     ++out.cap_samples;
     if (std::getenv("ROBUTER_ENVELOPE_TRACE") && c.left / expected < 0.9) {
-      const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(speed, speed);
+      const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(speed, speed, true);
       std::printf("  tick %llu x %.3f granted %d expected %.1f | k %.2f missing %d at (%.3f, %.3f)\n",
                   static_cast<unsigned long long>(fw.kernel().tick()), robot.pose().x - x0, c.left, expected, v.fraction,
                   v.missing, v.where.x(), v.where.y());
@@ -214,7 +214,7 @@ TEST(EnvelopeCorridor, ThirtyCmPerSecondDownA1_2mCorridorKeepsItsSpeed) {
         if (std::getenv("ROBUTER_ENVELOPE_TRACE") && fw.kernel().tick() % 20 == 0) {
           const EmergencyState& s = fw.bb().emergency.reader().peek();
           auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*fw.kernel().find("emergency")).process);
-          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(30, 30);
+          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(30, 30, true);
           std::printf("tick %llu x %.3f v %.1f granted %u%% held %d prot %d stops %u | k %.2f at (%.3f, %.3f)\n",
                       static_cast<unsigned long long>(fw.kernel().tick()), robot.pose().x,
                       50.0 * (robot.wheel_speeds().left + robot.wheel_speeds().right), s.granted_pct, s.held,

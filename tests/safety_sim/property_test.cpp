@@ -240,7 +240,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
       std::string env;
       if (const auto row = fw.kernel().find("emergency")) {
         if (auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*row).process); em && (w.left || w.right)) {
-          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(w.left, w.right);
+          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(w.left, w.right, true);
           env = fmt::format(" | env k {:.2f} miss {} obst {} at ({:.0f}, {:.0f})", v.fraction, v.missing, v.obstacle,
                             v.where.x() * 1000.0, v.where.y() * 1000.0);
         }

@@ -144,6 +144,7 @@ EmergencyView read_xe(const std::string& xe_reply) {
   v.held = f[1] == "1";
   v.latched = f[2] == "1";
   v.cause = f[3];
+  v.protective = f.size() >= 9 && f[8] == "1";
   return v;
 }
 
@@ -155,7 +156,12 @@ EmergencyView read_stream(const std::string& at_line) {
   const long long e = num(f[7]);
   v.held = (e & 1) != 0;
   v.latched = (e & 2) != 0;
+  v.protective = (e & 4) != 0;
   return v;
+}
+
+std::string protective_banner() {
+  return "*** PROTECTIVE STOP: an obstacle in the way — no XR needed; send the motion again once it is clear ***";
 }
 
 std::string emergency_banner(const std::string& cause) {
@@ -167,7 +173,7 @@ std::string describe_stream(const std::string& at_line) {
   if (f.size() < 9 || f[0] != "@") return at_line;
   const long long e = num(f[7]);
   return fmt::format("{}  servo {}  wheels {} {} cm/s  {}  {}", posture_text(f[1], f[2], f[3]), f[4] == "1" ? "on" : "off",
-                     f[5], f[6], (e & 2) ? "EMERGENCY LATCHED" : (e & 1) ? "motion held" : "no emergency", clock_text(f[8]));
+                     f[5], f[6], (e & 2) ? "EMERGENCY LATCHED" : (e & 4) ? "protective stop" : (e & 1) ? "motion held" : "no emergency", clock_text(f[8]));
 }
 
 }  // namespace robuter::ctl

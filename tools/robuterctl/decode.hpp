@@ -15,9 +15,12 @@ struct EmergencyView {
   bool latched = false;
   bool held = false;
   std::string cause;     // XE only (the stream carries no cause)
+  bool protective = false;  // a protective stop is in force (XE's 9th field, the stream's +4)
 };
 EmergencyView read_xe(const std::string& xe_reply);
 EmergencyView read_stream(const std::string& at_line);
+// The live line shown when a protective stop begins (an obstacle in the envelope; no XR needed).
+std::string protective_banner();
 
 // The banner for a latched emergency and its cause.
 std::string emergency_banner(const std::string& cause);

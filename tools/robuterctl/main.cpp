@@ -211,6 +211,7 @@ class Console {
       const EmergencyView v = read_stream(in.text);
       if (v.valid && v.latched && !latched_ && !xe_in_flight()) send("XE", true);  // its cause
       if (v.valid && !v.latched && latched_) cleared();
+      protective_from(v);
       return;
     }
     if (in.kind == Incoming::Kind::unexpected) {
@@ -243,8 +244,19 @@ class Console {
     return false;
   }
 
+  // A protective stop is shown when it begins, once; it ends by itself.
+  void protective_from(const EmergencyView& v) {
+    if (!v.valid) return;
+    if (v.protective && !protective_ && !v.latched) {
+      c_.note("protective stop");
+      print(fmt::format("\033[1;43;30m{}\033[0m\n", protective_banner()));
+    }
+    protective_ = v.protective;
+  }
+
   void emergency_from(const EmergencyView& v) {
     if (!v.valid) return;
+    protective_from(v);
     if (v.latched && !latched_) {
       latched_ = true;
       c_.note("emergency latched: " + v.cause);
@@ -278,6 +290,7 @@ class Console {
   bool quit_ = false;
   bool installed_ = false;
   bool latched_ = false;      // an emergency is latched, as far as we know
+  bool protective_ = false;   // a protective stop is in force, as far as we know
   bool user_stream_ = false;  // the operator asked for the stream: show its lines
   bool live_poll_ = false;    // no stream: poll XE
   std::chrono::steady_clock::time_point last_poll_{};
