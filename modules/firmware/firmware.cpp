@@ -218,7 +218,7 @@ std::optional<std::string> Firmware::setup() {
     stepper->attach_ptu(std::move(unit));
   }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
-    return "--picture " + opt_.picture + ": expected a .png or .svg file";
+    return "--picture " + opt_.picture + ": expected a .png, .svg or .pdf file";
   auto us = std::make_unique<UltrasonicModule>(bb_, *ring_, cfg_.sonar);
   // Bumpers on GPIO lines when [hardware.gpio] names a chip; a missing chip stops start-up.
   if (!cfg_.gpio.chip.empty() && opt_.open_devices) {
@@ -306,15 +306,20 @@ std::optional<std::string> Firmware::setup() {
 
 int Firmware::run() {
   if (picture_writer_) picture_writer_->start();
-  const int status = kernel_->run();
+  int status = kernel_->run();
   if (picture_writer_) picture_writer_->stop();
-  if (opt_.picture.empty() || !sim_) return status;
-  const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
-  const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, opt_.picture);
-  hal::release_picture_caches();
-  if (!err) return status;
-  std::fprintf(stderr, "robuterd: %s\n", err->c_str());
-  return status == 0 ? 1 : status;
+  const bool picture = !opt_.picture.empty() && sim_;
+  if (picture) {
+    const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
+    const auto& em = bb_.emergency.reader().peek();
+    const std::string outcome = em.latched ? "emergency latched (" + std::string(word(em.cause)) + ")" : "no emergency latched";
+    if (const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, outcome, opt_.picture)) {
+      std::fprintf(stderr, "robuterd: %s\n", err->c_str());
+      if (status == 0) status = 1;
+    }
+  }
+  if (picture || picture_writer_) hal::release_picture_caches();  // the last text drawn: LeakSanitizer
+  return status;
 }
 
 }  // namespace robuter

@@ -1,5 +1,5 @@
 // Pictures from the command line: robuter-sim render (PNG and SVG, bad arguments) and
-// robuterd --sim --picture; the files must be real pictures with content, not blank pages.
+// robuterd --sim --picture; the files must be real pictures with content, ≥ 1000 px wide.
 #include <gtest/gtest.h>
 
 #include <cairo.h>
@@ -53,8 +53,8 @@ TEST(Pictures, RobuterSimRendersAPng) {
   ASSERT_EQ(run(kBin + "/robuter-sim render --world " + kWorld + " --ring --pan-tilt 30 -o " + out), 0);
   int w = 0, h = 0;
   const double f = ink(out, w, h);
-  EXPECT_GT(w, 300);
-  EXPECT_GT(h, 200);
+  EXPECT_EQ(w, 1000);  // the default: 1000 px wide, the scale filling the plot
+  EXPECT_GT(h, 400);
   EXPECT_GT(f, 0.05);  // walls, robot, 24 beams: plenty of non-background pixels
   EXPECT_LT(f, 0.95);
 }
@@ -85,7 +85,7 @@ TEST(Pictures, RobuterdWritesAPictureAtExit) {
   ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --ptu-sweep --picture " + out), 0);
   int w = 0, h = 0;
   const double f = ink(out, w, h);
-  EXPECT_GT(w, 300);
+  EXPECT_GE(w, 1000);
   EXPECT_GT(f, 0.05);
   const std::string svg = kOut + "/robuterd_exit.svg";
   ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --picture " + svg), 0);
