@@ -17,6 +17,7 @@
 #include "hal/linux/gpio_lines.hpp"
 #include "hal/linux/serial_stream.hpp"
 #include "hal/sitl/byte_pipe.hpp"
+#include "hal/sitl/odometry_frame.hpp"
 #include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "kernel/log.hpp"
@@ -255,7 +256,18 @@ std::optional<std::string> Firmware::setup() {
       log::info("planner: --planner-pictures {} did not exist: created it", dir);
     }
     picture_box_ = std::make_unique<planner::PictureMailbox>();
-    picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_);
+    // Under --sim the odometry frame's place in the world is known (the stepper publishes it each
+    // tick): the pictures are drawn in the world frame.
+    planner::PictureWriter::FrameSource frame;
+    if (sim_ && stepper) {
+      odometry_frame_ = std::make_unique<hal::OdometryFrame>();
+      stepper->publish_frame(odometry_frame_.get());
+      frame = [f = odometry_frame_.get()]() -> std::optional<plan::Pose2> {
+        const sim::Pose p = f->read();
+        return plan::Pose2{p.x, p.y, p.theta};
+      };
+    }
+    picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_, frame);
     planner->set_pictures(picture_box_.get());
   }
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
