@@ -1,12 +1,8 @@
 // The picture's page (world area, scale, size), its files (PNG, SVG, PDF) and the beams to draw.
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-
-#include <algorithm>
-#include <cctype>
 #include <limits>
 
 #include "hal/sim/render.hpp"
+#include "picture/file.hpp"
 #include "picture/page.hpp"
 
 namespace robuter::sim {
@@ -19,36 +15,14 @@ void grow(Box& b, const Vec2& p) {
   b.hi = b.hi.cwiseMax(p);
 }
 
-// The file formats, by lower-case extension.
-enum class Format { png, svg, pdf, none };
-Format format_of(const std::filesystem::path& path) {
-  std::string e = path.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e == ".png" ? Format::png : e == ".svg" ? Format::svg : e == ".pdf" ? Format::pdf : Format::none;
-}
-
-// Shared by every format: draws on the surface, finishes it, reports cairo's status.
-Result<picture::Layout> finish_surface(cairo_surface_t* surface, const Scene& scene, const View& view,
-                                       const RenderOptions& options, const std::filesystem::path& path, bool png) {
-  if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
-    const std::string why = cairo_status_to_string(cairo_surface_status(surface));
-    cairo_surface_destroy(surface);
-    return Error{path.string(), 0, "cannot write the picture: " + why};
-  }
-  cairo_t* cr = cairo_create(surface);
-  picture::Layout layout = render(cr, scene, view, options);
-  cairo_destroy(cr);
-  cairo_status_t st = CAIRO_STATUS_SUCCESS;
-  if (png) {
-    st = cairo_surface_write_to_png(surface, path.string().c_str());
-  } else {
-    cairo_surface_finish(surface);
-    st = cairo_surface_status(surface);
-  }
-  cairo_surface_destroy(surface);
-  if (st != CAIRO_STATUS_SUCCESS) {
-    return Error{path.string(), 0, std::string("cannot write the picture: ") + cairo_status_to_string(st)};
-  }
+// Shared by every format: the page make_view picks, drawn and written by picture::write_page.
+Result<picture::Layout> write(const Scene& scene, const RenderOptions& options, const std::filesystem::path& path,
+                              picture::Format format) {
+  const View v = make_view(scene, options);
+  picture::Layout layout;
+  const auto why = picture::write_page(path.string(), format, v.width, v.height,
+                                       [&](cairo_t* cr) { layout = render(cr, scene, v, options); });
+  if (why) return Error{path.string(), 0, *why};
   return layout;
 }
 
@@ -83,42 +57,29 @@ View make_view(const Scene& scene, const RenderOptions& options) {
   return picture::make_frame(b.lo - Vec2::Constant(options.margin), b.hi + Vec2::Constant(options.margin), page);
 }
 
-// An ARGB image surface sized by make_view, written with cairo's PNG writer.
 Result<picture::Layout> render_png(const Scene& scene, const RenderOptions& options,
                                    const std::filesystem::path& path) {
-  const View v = make_view(scene, options);
-  return finish_surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, v.width, v.height), scene, v, options,
-                        path, true);
+  return write(scene, options, path, picture::Format::png);
 }
 
-// A vector picture of the same drawing, units = points.
 Result<picture::Layout> render_svg(const Scene& scene, const RenderOptions& options,
                                    const std::filesystem::path& path) {
-  const View v = make_view(scene, options);
-  return finish_surface(cairo_svg_surface_create(path.string().c_str(), v.width, v.height), scene, v, options,
-                        path, false);
+  return write(scene, options, path, picture::Format::svg);
 }
 
-// The same drawing as one PDF page, units = points; its words stay text.
 Result<picture::Layout> render_pdf(const Scene& scene, const RenderOptions& options,
                                    const std::filesystem::path& path) {
-  const View v = make_view(scene, options);
-  return finish_surface(cairo_pdf_surface_create(path.string().c_str(), v.width, v.height), scene, v, options,
-                        path, false);
+  return write(scene, options, path, picture::Format::pdf);
 }
 
 Result<picture::Layout> render_file(const Scene& scene, const RenderOptions& options,
                                     const std::filesystem::path& path) {
-  switch (format_of(path)) {
-    case Format::png: return render_png(scene, options, path);
-    case Format::svg: return render_svg(scene, options, path);
-    case Format::pdf: return render_pdf(scene, options, path);
-    case Format::none: break;
-  }
-  return Error{path.string(), 0, "expected a .png, .svg or .pdf file"};
+  return write(scene, options, path, picture::format_of(path.string()));
 }
 
-bool picture_format_ok(const std::filesystem::path& path) { return format_of(path) != Format::none; }
+bool picture_format_ok(const std::filesystem::path& path) {
+  return picture::format_of(path.string()) != picture::Format::none;
+}
 
 void release_render_caches() { picture::release_caches(); }
 

@@ -96,6 +96,7 @@ TEST(CrossingPicture, IsExplained) {
     EXPECT_NE(laid.value().find(picture::Kind::legend, "a made-up scan"), nullptr);
     EXPECT_NE(laid.value().find(picture::Kind::legend, "robot at its true pose"), nullptr);
   }
+  sim::release_render_caches();  // fontconfig's caches, for LeakSanitizer
 }
 
 TEST_P(SeededStart, Door100IsCrossed) {

@@ -1,12 +1,11 @@
 // A plan's picture: its page in the world frame, its title and outcome, and the PNG or PDF file.
 #include "modules/planner/picture/plan_picture.hpp"
 
-#include <cairo-pdf.h>
-
 #include <cmath>
 #include <cstdio>
 
 #include "modules/planner/picture/plan_drawing.hpp"
+#include "picture/file.hpp"
 #include "picture/page.hpp"
 
 namespace robuter::plan {
@@ -66,27 +65,19 @@ picture::Layout draw_plan_picture(cairo_t* cr, const PlanSnapshot& s, const pict
   return layout;
 }
 
+// Why PNG for any other extension: the firmware's pictures are plan-gGGG-NNN.png, the tool's
+// -o has always written PNG.
 Result<picture::Layout> write_plan_picture(const PlanSnapshot& snap, const std::string& path,
                                            const PlanPictureOptions& options) {
   const int w = snap.geometry.width, h = snap.geometry.height;
   if (w <= 0 || h <= 0 || snap.cells.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
     return Error{path, 0, "empty snapshot: nothing to draw"};
   const picture::Frame f = plan_frame(snap, options);
-  const bool pdf = path.size() > 4 && path.compare(path.size() - 4, 4, ".pdf") == 0;
-  cairo_surface_t* surface = pdf ? cairo_pdf_surface_create(path.c_str(), f.width, f.height)
-                                 : cairo_image_surface_create(CAIRO_FORMAT_RGB24, f.width, f.height);
-  cairo_t* cr = cairo_create(surface);
-  picture::Layout layout = draw_plan_picture(cr, snap, f, options);
-  cairo_destroy(cr);
-  cairo_status_t st = CAIRO_STATUS_SUCCESS;
-  if (pdf) {
-    cairo_surface_finish(surface);
-    st = cairo_surface_status(surface);
-  } else {
-    st = cairo_surface_write_to_png(surface, path.c_str());
-  }
-  cairo_surface_destroy(surface);
-  if (st != CAIRO_STATUS_SUCCESS) return Error{path, 0, std::string("cannot write the picture: ") + cairo_status_to_string(st)};
+  const picture::Format format = picture::format_of(path) == picture::Format::none ? picture::Format::png : picture::format_of(path);
+  picture::Layout layout;
+  const auto why = picture::write_page(path, format, f.width, f.height,
+                                       [&](cairo_t* cr) { layout = draw_plan_picture(cr, snap, f, options); });
+  if (why) return Error{path, 0, *why};
   return layout;
 }
 

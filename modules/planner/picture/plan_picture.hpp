@@ -35,7 +35,7 @@ picture::Frame plan_frame(const PlanSnapshot& snapshot, const PlanPictureOptions
 picture::Layout draw_plan_picture(cairo_t* cr, const PlanSnapshot& snapshot, const picture::Frame& frame,
                                   const PlanPictureOptions& options);
 
-// Writes the picture as PNG (or PDF for a .pdf path). Blocking file I/O, text through cairo's
+// Writes the picture as PNG (SVG or PDF for a .svg or .pdf path). Blocking file I/O, text through cairo's
 // fonts: never call it from the periodic path (the firmware's writer thread does).
 Result<picture::Layout> write_plan_picture(const PlanSnapshot& snapshot, const std::string& path,
                                            const PlanPictureOptions& options = {});
