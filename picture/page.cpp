@@ -147,6 +147,21 @@ bool place_label(cairo_t* cr, const Frame& f, Layout& layout, const Vec2& anchor
   return false;
 }
 
+void clip_to_plot(cairo_t* cr, const Frame& f) {
+  const Rect plot = f.plot();
+  cairo_rectangle(cr, plot.lo.x(), plot.lo.y(), plot.hi.x() - plot.lo.x(), plot.hi.y() - plot.lo.y());
+  cairo_clip(cr);
+}
+
+void draw_words(cairo_t* cr, const Frame& f, const std::string& title, const Legend& legend,
+                const std::vector<Label>& labels, Layout& layout) {
+  draw_title(cr, f, title, layout);
+  draw_axes(cr, f, layout);
+  draw_scale_bar(cr, f, layout);
+  legend.draw(cr, f, layout);
+  for (const Label& l : labels) place_label(cr, f, layout, l.anchor, l.text, l.size);
+}
+
 std::string utc_now() {
   const std::time_t now = std::time(nullptr);
   std::tm t{};

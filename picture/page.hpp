@@ -4,9 +4,11 @@
 #include <cairo.h>
 
 #include <string>
+#include <vector>
 
 #include "picture/frame.hpp"
 #include "picture/layout.hpp"
+#include "picture/legend.hpp"
 
 namespace robuter::picture {
 
@@ -31,6 +33,21 @@ void draw_scale_bar(cairo_t* cr, const Frame& f, Layout& layout);
 // at the first place that overlaps nothing laid out, else dropped (false).
 bool place_label(cairo_t* cr, const Frame& f, Layout& layout, const Vec2& anchor, const std::string& text,
                  double size_px = 11.0);
+
+// A label to place once the plot is drawn: its anchor on the page and its words.
+struct Label {
+  Vec2 anchor;         // the point it names, px
+  std::string text;    // the words
+  double size = 11.0;  // font size, px
+};
+
+// Clips the context to the plot area (layers drawn after stay off the margins).
+void clip_to_plot(cairo_t* cr, const Frame& f);
+
+// Everything around the plot, then on it: the title, the axes, the scale bar, the legend's
+// column, and the labels in order (each where it collides with nothing, else dropped).
+void draw_words(cairo_t* cr, const Frame& f, const std::string& title, const Legend& legend,
+                const std::vector<Label>& labels, Layout& layout);
 
 // A UTC date and time for titles, "2026-12-02 00:45 UTC".
 std::string utc_now();

@@ -29,19 +29,12 @@ const Ink kPanTiltSilent{{0.70, 0.10, 0.70}, Swatch::dotted, "pan-tilt sonar: no
 const Ink kGoal{{0.85, 0.10, 0.10}, Swatch::cross, "goal"};
 const Ink kMarker{{0.85, 0.10, 0.10}, Swatch::line, "marker (named pose)", 1.0, 1.5};
 
-// A label to place once everything is drawn: its anchor on the page and its words.
-struct LabelWish {
-  Vec2 anchor;         // px
-  std::string text;    // the words
-  double size = 11.0;  // font size, px
-};
-
 // What every drawing step needs: the context, the page, the inks used and the labels wished.
 struct Pen {
   cairo_t* cr;                     // where to draw
   const View& v;                   // the page
   picture::Legend& legend;         // inks used so far
-  std::vector<LabelWish>& labels;  // labels to place at the end
+  std::vector<picture::Label>& labels;  // labels to place at the end
   bool with_labels;                // names and numbers wanted
 
   void use(const Ink& ink, double alpha = 1.0) { legend.use(cr, ink, alpha); }
@@ -244,9 +237,7 @@ void draw_robot(Pen& p, const RobotGeometry& g, const Pose& pose) {
 void hook(cairo_t* cr, const View& v, const DrawHook& h) {
   if (!h) return;
   cairo_save(cr);
-  const picture::Rect plot = v.plot();
-  cairo_rectangle(cr, plot.lo.x(), plot.lo.y(), plot.hi.x() - plot.lo.x(), plot.hi.y() - plot.lo.y());
-  cairo_clip(cr);
+  picture::clip_to_plot(cr, v);
   h(cr, v);
   cairo_restore(cr);
 }
@@ -259,7 +250,7 @@ void hook(cairo_t* cr, const View& v, const DrawHook& h) {
 picture::Layout render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options) {
   picture::Layout layout = view.layout();
   picture::Legend legend;
-  std::vector<LabelWish> labels;
+  std::vector<picture::Label> labels;
   Pen p{cr, view, legend, labels, options.labels};
   cairo_save(cr);
   cairo_set_source_rgb(cr, kFloor.r, kFloor.g, kFloor.b);
@@ -267,9 +258,7 @@ picture::Layout render(cairo_t* cr, const Scene& scene, const View& view, const 
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_save(cr);
-  const picture::Rect plot = view.plot();
-  cairo_rectangle(cr, plot.lo.x(), plot.lo.y(), plot.hi.x() - plot.lo.x(), plot.hi.y() - plot.lo.y());
-  cairo_clip(cr);
+  picture::clip_to_plot(cr, view);
   if (options.grid) draw_grid(p);
   hook(cr, view, scene.underlay);
   if (scene.world != nullptr) {
@@ -285,11 +274,7 @@ picture::Layout render(cairo_t* cr, const Scene& scene, const View& view, const 
   cairo_restore(cr);
   for (const Ink& k : scene.keys) legend.add(k);
   const std::string title = !scene.title.empty() ? scene.title : scene.world != nullptr ? scene.world->name : "simulated world";
-  picture::draw_title(cr, view, title, layout);
-  picture::draw_axes(cr, view, layout);
-  picture::draw_scale_bar(cr, view, layout);
-  legend.draw(cr, view, layout);
-  for (const LabelWish& l : labels) picture::place_label(cr, view, layout, l.anchor, l.text, l.size);
+  picture::draw_words(cr, view, title, legend, labels, layout);
   cairo_restore(cr);
   return layout;
 }

@@ -110,13 +110,11 @@ void polyline(cairo_t* cr, const picture::Frame& f, const MapPlacement& place, c
 }  // namespace
 
 void draw_plan(cairo_t* cr, const PlanSnapshot& s, const picture::Frame& f, const MapPlacement& place,
-               picture::Legend& legend, std::vector<PlanLabel>& labels) {
+               picture::Legend& legend, std::vector<picture::Label>& labels) {
   cairo_save(cr);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  const picture::Rect plot = f.plot();
-  cairo_rectangle(cr, plot.lo.x(), plot.lo.y(), plot.hi.x() - plot.lo.x(), plot.hi.y() - plot.lo.y());
-  cairo_clip(cr);
+  picture::clip_to_plot(cr, f);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   draw_cells(cr, s, f, place, legend);
@@ -144,7 +142,7 @@ void draw_plan(cairo_t* cr, const PlanSnapshot& s, const picture::Frame& f, cons
   legend.use(cr, kStart);
   cairo_arc(cr, a.x(), a.y(), 5.0, 0, 2 * kPi);
   cairo_fill(cr);
-  labels.push_back({a, "start"});
+  labels.push_back({a, "start", 11.0});
   const picture::Vec2 g = dev(f, place, s.goal);
   legend.use(cr, kGoal);
   cairo_set_line_width(cr, 3.0);
@@ -153,7 +151,7 @@ void draw_plan(cairo_t* cr, const PlanSnapshot& s, const picture::Frame& f, cons
   cairo_move_to(cr, g.x() - 8, g.y() + 8);
   cairo_line_to(cr, g.x() + 8, g.y() - 8);
   cairo_stroke(cr);
-  labels.push_back({g, s.goal_seq > 0 ? "XG goal" : "goal"});
+  labels.push_back({g, s.goal_seq > 0 ? "XG goal" : "goal", 11.0});
   cairo_restore(cr);
 }
 

@@ -13,6 +13,7 @@
 #include "modules/planner/picture/plan_picture.hpp"
 #include "picture/frame.hpp"
 #include "picture/legend.hpp"
+#include "picture/page.hpp"
 
 namespace robuter::plan {
 
@@ -33,14 +34,8 @@ class MapPlacement {
   double heading_ = 0.0;  // map x axis's heading in the world, rad
 };
 
-// A label to place after the layers: its anchor on the page and its words.
-struct PlanLabel {
-  picture::Vec2 anchor;  // px
-  std::string text;      // the words
-};
-
 // Draws the plan's layers on the plot and records the inks used and the labels wished.
 void draw_plan(cairo_t* cr, const PlanSnapshot& s, const picture::Frame& f, const MapPlacement& place,
-               picture::Legend& legend, std::vector<PlanLabel>& labels);
+               picture::Legend& legend, std::vector<picture::Label>& labels);
 
 }  // namespace robuter::plan

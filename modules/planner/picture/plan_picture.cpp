@@ -51,17 +51,13 @@ picture::Layout draw_plan_picture(cairo_t* cr, const PlanSnapshot& s, const pict
                                   const PlanPictureOptions& o) {
   picture::Layout layout = f.layout();
   picture::Legend legend;
-  std::vector<PlanLabel> labels;
+  std::vector<picture::Label> labels;
   draw_plan(cr, s, f, MapPlacement(s, o), legend, labels);
   char when[96];
   if (s.tick > 0) std::snprintf(when, sizeof when, "tick %llu, %s", static_cast<unsigned long long>(s.tick), picture::utc_now().c_str());
   else std::snprintf(when, sizeof when, "%s", picture::utc_now().c_str());
   const std::string frame = o.world_frame ? "world frame" : "odometry frame";
-  picture::draw_title(cr, f, o.what + " (" + frame + ", " + when + "): " + plan_outcome(s), layout);
-  picture::draw_axes(cr, f, layout);
-  picture::draw_scale_bar(cr, f, layout);
-  legend.draw(cr, f, layout);
-  for (const PlanLabel& l : labels) picture::place_label(cr, f, layout, l.anchor, l.text);
+  picture::draw_words(cr, f, o.what + " (" + frame + ", " + when + "): " + plan_outcome(s), legend, labels, layout);
   return layout;
 }
 
