@@ -37,11 +37,11 @@ sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSens
 
 // Why this title: what (world), when (simulated seconds, the date), outcome (where the robot
 // ended, how far it went, the emergency) — pictures of several runs are told apart at a glance.
-std::optional<std::string> write_sim_picture(const SimRobot& r,
+sim::Result<picture::Layout> write_sim_picture(const SimRobot& r,
                                              std::span<const std::uint16_t, kRingSensors> mm,
                                              std::uint32_t no_echo, const std::string& outcome,
                                              const std::string& path) {
-  if (!picture_path_ok(path)) return "picture " + path + ": expected a .png, .svg or .pdf file";
+  if (!picture_path_ok(path)) return sim::Error{path, 0, "expected a .png, .svg or .pdf file"};
   const sim::Trail& t = r.robot().trail();
   double travelled = 0.0;
   for (std::size_t i = 1; i < t.size(); ++i) travelled += (t[i] - t[i - 1]).norm();
@@ -51,9 +51,7 @@ std::optional<std::string> write_sim_picture(const SimRobot& r,
                 r.world().name.c_str(), r.time(), picture::utc_now().c_str(), travelled, p.x, p.y,
                 p.theta * 180.0 / 3.14159265358979, r.robot().bumper() ? ", bumper pressed" : "", outcome.c_str());
   const sim::Scene scene = sim_scene(r, mm, no_echo, title);
-  const auto s = sim::render_file(scene, sim::RenderOptions{}, path);
-  if (!s) return "picture: " + s.error().describe();
-  return std::nullopt;
+  return sim::render_file(scene, sim::RenderOptions{}, path);
 }
 
 // Why a wrapper: robuterd need not include the renderer to release its caches.

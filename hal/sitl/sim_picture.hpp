@@ -20,8 +20,8 @@ sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSens
 
 // Writes that scene to `path` (.png, .svg or .pdf by extension), titled with the world, the time
 // and the outcome (where the robot ended and `outcome`, e.g. the emergency); the problem when it
-// could not.
-std::optional<std::string> write_sim_picture(const SimRobot& r,
+// could not, or what was laid out.
+sim::Result<picture::Layout> write_sim_picture(const SimRobot& r,
                                              std::span<const std::uint16_t, kRingSensors> mm,
                                              std::uint32_t no_echo, const std::string& outcome,
                                              const std::string& path);

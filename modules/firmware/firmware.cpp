@@ -325,8 +325,8 @@ int Firmware::run() {
     const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
     const auto& em = bb_.emergency.reader().peek();
     const std::string outcome = em.latched ? "emergency latched (" + std::string(word(em.cause)) + ")" : "no emergency latched";
-    if (const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, outcome, opt_.picture)) {
-      std::fprintf(stderr, "robuterd: %s\n", err->c_str());
+    if (const auto laid = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, outcome, opt_.picture); !laid) {
+      std::fprintf(stderr, "robuterd: picture: %s\n", laid.error().describe().c_str());
       if (status == 0) status = 1;
     }
   }
