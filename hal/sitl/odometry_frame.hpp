@@ -1,8 +1,9 @@
 // Where the firmware's odometry frame lies in the simulated world: written each tick by the kernel's thread, read by picture threads.
 #pragma once
 
+#include <Eigen/Geometry>
+
 #include <atomic>
-#include <cmath>
 #include <cstdint>
 
 #include "hal/sim/types.hpp"
@@ -17,10 +18,10 @@ class OdometryFrame {
   // Kernel thread: the frame from the true pose and the odometry at the same instant.
   void publish(const sim::Pose& truth, const sim::Pose& odometry) {
     const double h = truth.theta - odometry.theta;
-    const double c = std::cos(h), s = std::sin(h);
+    const sim::Vec2 origin = sim::Vec2(truth.x, truth.y) - Eigen::Rotation2Dd(h) * sim::Vec2(odometry.x, odometry.y);
     seq_.fetch_add(1, std::memory_order_acq_rel);  // odd: being written
-    x_.store(truth.x - (c * odometry.x - s * odometry.y), std::memory_order_relaxed);
-    y_.store(truth.y - (s * odometry.x + c * odometry.y), std::memory_order_relaxed);
+    x_.store(origin.x(), std::memory_order_relaxed);
+    y_.store(origin.y(), std::memory_order_relaxed);
     heading_.store(h, std::memory_order_relaxed);
     seq_.fetch_add(1, std::memory_order_release);  // even: done
   }

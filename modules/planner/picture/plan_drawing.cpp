@@ -14,7 +14,7 @@ const Ink kOccupied{{0.0, 0.0, 0.0}, Swatch::fill, "obstacle (map cell)"};
 const Ink kAllBlocked{{0.62, 0.62, 0.62}, Swatch::fill, "grown obstacle: blocked at every heading"};
 const Ink kSomeBlocked{{1.0, 0.85, 0.65}, Swatch::fill, "grown obstacle: passable at some headings"};
 const Ink kUnknown{{0.92, 0.92, 0.92}, Swatch::fill, "unknown (never seen)"};
-const Ink kFree{{1.0, 1.0, 1.0}, Swatch::outline, "free", 1.0, 1.0};
+const Ink kFree{{1.0, 1.0, 1.0}, Swatch::fill, "free (seen, no obstacle)"};
 const Ink kFootprint{{0.1, 0.3, 0.9}, Swatch::outline, "footprint at turns and every 0.5 m", 0.6, 1.0};
 const Ink kPath{{0.85, 0.0, 0.0}, Swatch::line, "planned path", 1.0, 2.0};
 const Ink kPrefix{{0.45, 0.0, 0.0}, Swatch::line, "prefix followed before the next scan", 1.0, 4.0};
