@@ -1,417 +1,282 @@
-// Cairo renderer: one drawing routine, written to a PNG image surface or an SVG surface.
+// Cairo renderer: the scene's layers on the plot, then its labels, title, axes, scale bar and legend.
 #include "hal/sim/render.hpp"
 
-#include <cairo-svg.h>
-#include <fontconfig/fontconfig.h>
-
-#include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "picture/page.hpp"
 
 namespace robuter::sim {
 
 namespace {
 
-// Colours (r, g, b) of the picture's elements.
-struct Rgb {
-  double r, g, b;  // 0..1
-};
+using picture::Ink;
+using picture::Rgb;
+using picture::Swatch;
+
 constexpr Rgb kFloor{1.0, 1.0, 1.0};
-constexpr Rgb kGrid{0.90, 0.90, 0.92};
-constexpr Rgb kObstacle{0.55, 0.55, 0.58};
-constexpr Rgb kObstacleEdge{0.20, 0.20, 0.22};
-constexpr Rgb kDoor{0.10, 0.60, 0.20};
-constexpr Rgb kRobot{0.55, 0.70, 0.95};
-constexpr Rgb kRobotEdge{0.05, 0.15, 0.45};
-constexpr Rgb kTrail{0.75, 0.05, 0.35};
-constexpr Rgb kBeam{0.95, 0.75, 0.10};
-constexpr Rgb kPanTilt{0.70, 0.10, 0.70};
-constexpr Rgb kGoal{0.85, 0.10, 0.10};
-constexpr Rgb kText{0.10, 0.10, 0.10};
+const Ink kGrid{{0.90, 0.90, 0.92}, Swatch::line, "grid, 1 m", 1.0, 1.0};
+const Ink kObstacle{{0.55, 0.55, 0.58}, Swatch::fill, "obstacle"};
+const Ink kWall{{0.20, 0.20, 0.22}, Swatch::line, "obstacle edge, thin wall", 1.0, 2.5};
+const Ink kDoor{{0.10, 0.60, 0.20}, Swatch::dashed, "door (name, width)"};
+const Ink kRobot{{0.55, 0.70, 0.95}, Swatch::fill, "robot at its true pose", 0.85};
+const Ink kRobotEdge{{0.05, 0.15, 0.45}, Swatch::line, "robot edge, wheels, heading", 1.0, 1.5};
+const Ink kStart{{0.05, 0.15, 0.45}, Swatch::dashed, "start pose", 0.6, 1.0};
+const Ink kTrail{{0.75, 0.05, 0.35}, Swatch::line, "trail (where the robot went)"};
+const Ink kBeam{{0.95, 0.75, 0.10}, Swatch::fill, "ring sonar: cone to its echo", 0.5};
+const Ink kBeamSilent{{0.95, 0.75, 0.10}, Swatch::dotted, "ring sonar: no echo (to time-out)", 0.6, 1.0};
+const Ink kPanTilt{{0.70, 0.10, 0.70}, Swatch::fill, "pan-tilt sonar: cone to its echo", 0.5};
+const Ink kPanTiltSilent{{0.70, 0.10, 0.70}, Swatch::dotted, "pan-tilt sonar: no echo", 0.6, 1.0};
+const Ink kGoal{{0.85, 0.10, 0.10}, Swatch::cross, "goal"};
+const Ink kMarker{{0.85, 0.10, 0.10}, Swatch::line, "marker (named pose)", 1.0, 1.5};
 
-// Selects a colour (with transparency) for the next fill or stroke.
-void set(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
-  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
+// What every drawing step needs: the context, the page, the inks used and the labels wished.
+struct Pen {
+  cairo_t* cr;                     // where to draw
+  const View& v;                   // the page
+  picture::Legend& legend;         // inks used so far
+  std::vector<picture::Label>& labels;  // labels to place at the end
+  bool with_labels;                // names and numbers wanted
 
-// Starts a new path piece at a world point.
-void move(cairo_t* cr, const View& v, const Vec2& w) {
-  const Vec2 d = v.to_device(w);
-  cairo_move_to(cr, d.x(), d.y());
-}
+  void use(const Ink& ink, double alpha = 1.0) { legend.use(cr, ink, alpha); }
+  void move(const Vec2& w) {
+    const Vec2 d = v.to_device(w);
+    cairo_move_to(cr, d.x(), d.y());
+  }
+  void line(const Vec2& w) {
+    const Vec2 d = v.to_device(w);
+    cairo_line_to(cr, d.x(), d.y());
+  }
+  void label(const Vec2& w, std::string text, double size = 11.0) {
+    if (with_labels) labels.push_back({v.to_device(w), std::move(text), size});
+  }
+  void dash(double on, double off) {
+    const double d[] = {on, off};
+    cairo_set_dash(cr, d, 2, 0.0);
+  }
+  void no_dash() { cairo_set_dash(cr, nullptr, 0, 0.0); }
+};
 
-// Extends the current path to a world point.
-void line(cairo_t* cr, const View& v, const Vec2& w) {
-  const Vec2 d = v.to_device(w);
-  cairo_line_to(cr, d.x(), d.y());
-}
-
-// Small text at a world point, offset in device units.
-void label(cairo_t* cr, const View& v, const Vec2& w, const std::string& text, double dx = 4,
-           double dy = -4, double size = 11) {
-  const Vec2 d = v.to_device(w);
-  cairo_set_font_size(cr, size);
-  set(cr, kText);
-  cairo_move_to(cr, d.x() + dx, d.y() + dy);
-  cairo_show_text(cr, text.c_str());
-}
-
-// A filled wedge (cone) from `o` along `dir`, half-angle `half`, radius `r`.
-void wedge(cairo_t* cr, const View& v, const Vec2& o, double dir, double half, double r) {
-  const Vec2 d = v.to_device(o);
-  const double rr = r * v.scale;
-  cairo_move_to(cr, d.x(), d.y());
-  // Device y points down, so world angle a becomes -a.
-  cairo_arc(cr, d.x(), d.y(), rr, -(dir + half), -(dir - half));
-  cairo_close_path(cr);
+// A cone (wedge) from `o` along `dir`, half-angle `half`, radius `r` m; device y points down,
+// so world angle a becomes −a.
+void wedge(Pen& p, const Vec2& o, double dir, double half, double r) {
+  const Vec2 d = p.v.to_device(o);
+  cairo_move_to(p.cr, d.x(), d.y());
+  cairo_arc(p.cr, d.x(), d.y(), r * p.v.scale, -(dir + half), -(dir - half));
+  cairo_close_path(p.cr);
 }
 
 // A light 1 m grid, to read distances off the picture.
-void draw_grid(cairo_t* cr, const View& v) {
-  set(cr, kGrid);
-  cairo_set_line_width(cr, 1.0);
-  for (double x = std::ceil(v.world.lo.x()); x <= v.world.hi.x(); x += 1.0) {
-    move(cr, v, {x, v.world.lo.y()});
-    line(cr, v, {x, v.world.hi.y()});
+void draw_grid(Pen& p) {
+  p.use(kGrid);
+  cairo_set_line_width(p.cr, 1.0);
+  for (double x = std::ceil(p.v.lo.x()); x <= p.v.hi.x(); x += 1.0) {
+    p.move({x, p.v.lo.y()});
+    p.line({x, p.v.hi.y()});
   }
-  for (double y = std::ceil(v.world.lo.y()); y <= v.world.hi.y(); y += 1.0) {
-    move(cr, v, {v.world.lo.x(), y});
-    line(cr, v, {v.world.hi.x(), y});
+  for (double y = std::ceil(p.v.lo.y()); y <= p.v.hi.y(); y += 1.0) {
+    p.move({p.v.lo.x(), y});
+    p.line({p.v.hi.x(), y});
   }
-  cairo_stroke(cr);
+  cairo_stroke(p.cr);
 }
 
 // Obstacles filled grey with a dark outline; thin (two-vertex) walls as thick lines.
-void draw_obstacles(cairo_t* cr, const View& v, const World& w) {
+void draw_obstacles(Pen& p, const World& w) {
   for (const auto& ob : w.obstacles()) {
-    const auto& p = ob.vertices;
-    if (p.size() < 2) continue;
-    move(cr, v, p[0]);
-    for (std::size_t i = 1; i < p.size(); ++i) line(cr, v, p[i]);
-    if (p.size() >= 3) {
-      cairo_close_path(cr);
-      set(cr, kObstacle);
-      cairo_fill_preserve(cr);
+    const auto& v = ob.vertices;
+    if (v.size() < 2) continue;
+    p.move(v[0]);
+    for (std::size_t i = 1; i < v.size(); ++i) p.line(v[i]);
+    if (v.size() >= 3) {
+      cairo_close_path(p.cr);
+      p.use(kObstacle);
+      cairo_fill_preserve(p.cr);
     }
-    set(cr, kObstacleEdge);
-    cairo_set_line_width(cr, p.size() >= 3 ? 1.0 : 2.5);
-    cairo_stroke(cr);
+    p.use(kWall);
+    cairo_set_line_width(p.cr, v.size() >= 3 ? 1.0 : 2.5);
+    cairo_stroke(p.cr);
   }
 }
 
-// Doors: a green line across the opening, with its name and width.
-void draw_doors(cairo_t* cr, const View& v, const World& w, bool labels) {
+// Doors: a dashed green line across the opening, named with its width.
+void draw_doors(Pen& p, const World& w) {
   for (const auto& d : w.doors) {
     const Vec2 u(std::cos(d.wall_direction), std::sin(d.wall_direction));
-    set(cr, kDoor);
-    cairo_set_line_width(cr, 2.0);
-    const double dash[] = {4.0, 3.0};
-    cairo_set_dash(cr, dash, 2, 0.0);
-    move(cr, v, d.centre - 0.5 * d.width * u);
-    line(cr, v, d.centre + 0.5 * d.width * u);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    if (labels) {
-      label(cr, v, d.centre, d.name + " " + std::to_string(static_cast<int>(std::lround(d.width * 100))) + " cm");
-    }
+    p.use(kDoor);
+    cairo_set_line_width(p.cr, 2.0);
+    p.dash(4.0, 3.0);
+    p.move(d.centre - 0.5 * d.width * u);
+    p.line(d.centre + 0.5 * d.width * u);
+    cairo_stroke(p.cr);
+    p.no_dash();
+    p.label(d.centre, d.name + " " + std::to_string(static_cast<int>(std::lround(d.width * 100))) + " cm");
   }
 }
 
-// An outline of the body at a pose (start pose, markers) or a filled body (the robot).
-void body_path(cairo_t* cr, const View& v, const RobotGeometry& g, const Pose& p) {
+// The body's outline at a pose.
+void body_path(Pen& p, const RobotGeometry& g, const Pose& pose) {
   Vec2 c[4];
-  footprint_corners(g, p, c);
-  move(cr, v, c[0]);
-  for (int i = 1; i < 4; ++i) line(cr, v, c[i]);
-  cairo_close_path(cr);
+  footprint_corners(g, pose, c);
+  p.move(c[0]);
+  for (int i = 1; i < 4; ++i) p.line(c[i]);
+  cairo_close_path(p.cr);
 }
 
-// A small arrow for a pose.
-void pose_arrow(cairo_t* cr, const View& v, const Pose& p, double len, const Rgb& colour) {
-  const Vec2 o(p.x, p.y);
-  const Vec2 u = heading_vector(p);
+// A small arrow for a pose, `len` m long.
+void pose_arrow(Pen& p, const Pose& pose, double len, const Ink& ink) {
+  const Vec2 o(pose.x, pose.y);
+  const Vec2 u = heading_vector(pose);
   const Vec2 n(-u.y(), u.x());
-  set(cr, colour);
-  cairo_set_line_width(cr, 1.5);
-  move(cr, v, o);
-  line(cr, v, o + len * u);
-  cairo_stroke(cr);
-  move(cr, v, o + len * u);
-  line(cr, v, o + 0.7 * len * u + 0.15 * len * n);
-  line(cr, v, o + 0.7 * len * u - 0.15 * len * n);
-  cairo_close_path(cr);
-  cairo_fill(cr);
+  p.use(ink);
+  cairo_set_line_width(p.cr, 1.5);
+  p.move(o);
+  p.line(o + len * u);
+  cairo_stroke(p.cr);
+  p.move(o + len * u);
+  p.line(o + 0.7 * len * u + 0.15 * len * n);
+  p.line(o + 0.7 * len * u - 0.15 * len * n);
+  cairo_close_path(p.cr);
+  cairo_fill(p.cr);
 }
 
 // Start pose (dashed body outline), goal (red cross) and named markers (arrows).
-void draw_marks(cairo_t* cr, const View& v, const Scene& s, bool labels) {
+void draw_marks(Pen& p, const Scene& s) {
   const World& w = *s.world;
   if (w.start) {
-    body_path(cr, v, s.geometry, *w.start);
-    set(cr, kRobotEdge, 0.6);
-    cairo_set_line_width(cr, 1.0);
-    const double dash[] = {3.0, 3.0};
-    cairo_set_dash(cr, dash, 2, 0.0);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    if (labels) label(cr, v, {w.start->x, w.start->y}, "start", 4, 14);
+    body_path(p, s.geometry, *w.start);
+    p.use(kStart, 0.6);
+    cairo_set_line_width(p.cr, 1.0);
+    p.dash(3.0, 3.0);
+    cairo_stroke(p.cr);
+    p.no_dash();
+    p.label({w.start->x, w.start->y}, "start");
   }
   if (w.goal) {
-    const Vec2 d = v.to_device(*w.goal);
-    set(cr, kGoal);
-    cairo_set_line_width(cr, 2.5);
-    cairo_move_to(cr, d.x() - 7, d.y() - 7);
-    cairo_line_to(cr, d.x() + 7, d.y() + 7);
-    cairo_move_to(cr, d.x() - 7, d.y() + 7);
-    cairo_line_to(cr, d.x() + 7, d.y() - 7);
-    cairo_stroke(cr);
-    if (labels) label(cr, v, *w.goal, "goal", 8, -8);
+    const Vec2 d = p.v.to_device(*w.goal);
+    p.use(kGoal);
+    cairo_set_line_width(p.cr, 2.5);
+    cairo_move_to(p.cr, d.x() - 7, d.y() - 7);
+    cairo_line_to(p.cr, d.x() + 7, d.y() + 7);
+    cairo_move_to(p.cr, d.x() - 7, d.y() + 7);
+    cairo_line_to(p.cr, d.x() + 7, d.y() - 7);
+    cairo_stroke(p.cr);
+    p.label(*w.goal, "goal");
   }
   for (const auto& m : w.markers) {
-    pose_arrow(cr, v, m.pose, 0.3, kGoal);
-    if (labels) label(cr, v, {m.pose.x, m.pose.y}, m.name, 4, 12, 10);
+    pose_arrow(p, m.pose, 0.3, kMarker);
+    p.label({m.pose.x, m.pose.y}, m.name, 10.0);
   }
 }
 
 // Where the robot has been, as one polyline.
-void draw_trail(cairo_t* cr, const View& v, const Trail& t) {
+void draw_trail(Pen& p, const Trail& t) {
   if (t.size() < 2) return;
-  set(cr, kTrail);
-  cairo_set_line_width(cr, 2.0);
-  move(cr, v, t[0]);
-  for (std::size_t i = 1; i < t.size(); ++i) line(cr, v, t[i]);
-  cairo_stroke(cr);
+  p.use(kTrail);
+  cairo_set_line_width(p.cr, 2.0);
+  p.move(t[0]);
+  for (std::size_t i = 1; i < t.size(); ++i) p.line(t[i]);
+  cairo_stroke(p.cr);
 }
 
 // Echoing beams: a translucent cone to the echo and a bold arc at the range; silent beams: a
-// thin dotted axis to the time-out range.
-void draw_beams(cairo_t* cr, const View& v, const std::vector<SonarBeam>& beams, const Rgb& c,
-                bool cones, bool labels) {
+// thin dotted axis to the time-out range. Sensor numbers just outside the transducer.
+void draw_beams(Pen& p, const std::vector<SonarBeam>& beams, const Ink& echo, const Ink& silent, bool cones) {
   for (const auto& b : beams) {
     const Vec2 u(std::cos(b.direction), std::sin(b.direction));
     if (b.range > 0.0) {
       if (cones && b.half_angle > 0.0) {
-        wedge(cr, v, b.origin, b.direction, b.half_angle, b.range);
-        set(cr, c, 0.18);
-        cairo_fill(cr);
-        const Vec2 d = v.to_device(b.origin);
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, d.x(), d.y(), b.range * v.scale, -(b.direction + b.half_angle),
-                  -(b.direction - b.half_angle));
-        set(cr, c, 0.95);
-        cairo_set_line_width(cr, 2.0);
-        cairo_stroke(cr);
+        wedge(p, b.origin, b.direction, b.half_angle, b.range);
+        p.use(echo, 0.18);
+        cairo_fill(p.cr);
+        const Vec2 d = p.v.to_device(b.origin);
+        cairo_new_sub_path(p.cr);
+        cairo_arc(p.cr, d.x(), d.y(), b.range * p.v.scale, -(b.direction + b.half_angle), -(b.direction - b.half_angle));
+        p.use(echo, 0.95);
+        cairo_set_line_width(p.cr, 2.0);
+        cairo_stroke(p.cr);
       }
-      set(cr, c, 0.8);
-      cairo_set_line_width(cr, 1.0);
-      move(cr, v, b.origin);
-      line(cr, v, b.origin + b.range * u);
-      cairo_stroke(cr);
+      p.use(echo, 0.8);
+      cairo_set_line_width(p.cr, 1.0);
+      p.move(b.origin);
+      p.line(b.origin + b.range * u);
+      cairo_stroke(p.cr);
     } else {
-      set(cr, c, 0.45);
-      cairo_set_line_width(cr, 0.8);
-      const double dash[] = {2.0, 4.0};
-      cairo_set_dash(cr, dash, 2, 0.0);
-      move(cr, v, b.origin);
-      line(cr, v, b.origin + b.max_range * u);
-      cairo_stroke(cr);
-      cairo_set_dash(cr, nullptr, 0, 0.0);
+      p.use(silent, 0.45);
+      cairo_set_line_width(p.cr, 0.8);
+      p.dash(2.0, 4.0);
+      p.move(b.origin);
+      p.line(b.origin + b.max_range * u);
+      cairo_stroke(p.cr);
+      p.no_dash();
     }
-    if (labels && b.number > 0) {
-      label(cr, v, b.origin + 0.12 * u, std::to_string(b.number), -3, 3, 8);
-    }
+    if (b.number > 0) p.label(b.origin + 0.1 * u, std::to_string(b.number), 9.0);
   }
 }
 
 // The robot: filled body, wheels at the axle, heading arrow.
-void draw_robot(cairo_t* cr, const View& v, const RobotGeometry& g, const Pose& p) {
-  body_path(cr, v, g, p);
-  set(cr, kRobot, 0.85);
-  cairo_fill_preserve(cr);
-  set(cr, kRobotEdge);
-  cairo_set_line_width(cr, 1.5);
-  cairo_stroke(cr);
+void draw_robot(Pen& p, const RobotGeometry& g, const Pose& pose) {
+  body_path(p, g, pose);
+  p.use(kRobot, 0.85);
+  cairo_fill_preserve(p.cr);
+  p.use(kRobotEdge);
+  cairo_set_line_width(p.cr, 1.5);
+  cairo_stroke(p.cr);
   for (const double side : {-1.0, 1.0}) {
     const double y = side * 0.5 * g.wheel_base;
-    move(cr, v, to_world(p, {-0.1, y - 0.025}));
-    line(cr, v, to_world(p, {0.1, y - 0.025}));
-    line(cr, v, to_world(p, {0.1, y + 0.025}));
-    line(cr, v, to_world(p, {-0.1, y + 0.025}));
-    cairo_close_path(cr);
-    set(cr, kRobotEdge);
-    cairo_fill(cr);
+    p.move(to_world(pose, {-0.1, y - 0.025}));
+    p.line(to_world(pose, {0.1, y - 0.025}));
+    p.line(to_world(pose, {0.1, y + 0.025}));
+    p.line(to_world(pose, {-0.1, y + 0.025}));
+    cairo_close_path(p.cr);
+    cairo_fill(p.cr);
   }
-  pose_arrow(cr, v, p, 0.8 * g.axle_to_front, kRobotEdge);
+  pose_arrow(p, pose, 0.8 * g.axle_to_front, kRobotEdge);
 }
 
-// Enlarges a box to contain a point.
-void grow(Box& b, const Vec2& p) {
-  b.lo = b.lo.cwiseMin(p);
-  b.hi = b.hi.cwiseMax(p);
-}
-
-// Shared by both file formats: makes the surface, draws, reports cairo's status.
-Status finish_surface(cairo_surface_t* surface, const Scene& scene, const View& view,
-                      const RenderOptions& options, const std::filesystem::path& path, bool png) {
-  cairo_t* cr = cairo_create(surface);
-  render(cr, scene, view, options);
-  cairo_destroy(cr);
-  cairo_status_t st = CAIRO_STATUS_SUCCESS;
-  if (png) {
-    st = cairo_surface_write_to_png(surface, path.string().c_str());
-  } else {
-    cairo_surface_finish(surface);
-    st = cairo_surface_status(surface);
-  }
-  cairo_surface_destroy(surface);
-  if (st != CAIRO_STATUS_SUCCESS) {
-    return Error{path.string(), 0, std::string("cannot write the picture: ") + cairo_status_to_string(st)};
-  }
-  return Ok{};
+// Runs a hook on the plot, clipped to it, with the context restored after.
+void hook(cairo_t* cr, const View& v, const DrawHook& h) {
+  if (!h) return;
+  cairo_save(cr);
+  picture::clip_to_plot(cr, v);
+  h(cr, v);
+  cairo_restore(cr);
 }
 
 }  // namespace
 
-// World units with y up: scale by the resolution, flip y, move the world's corner to 0.
-void View::apply(cairo_t* cr) const {
-  cairo_scale(cr, scale, -scale);
-  cairo_translate(cr, -world.lo.x(), -world.hi.y());
-}
-
-// Everything that will be drawn contributes to the bounds.
-View make_view(const Scene& scene, const RenderOptions& options) {
-  Box b{Vec2::Constant(std::numeric_limits<double>::infinity()),
-        Vec2::Constant(-std::numeric_limits<double>::infinity())};
-  if (scene.world != nullptr) {
-    const World& w = *scene.world;
-    if (!w.segments().empty()) {
-      grow(b, w.bounds().lo);
-      grow(b, w.bounds().hi);
-    }
-    if (w.start) grow(b, {w.start->x, w.start->y});
-    if (w.goal) grow(b, *w.goal);
-    for (const auto& m : w.markers) grow(b, {m.pose.x, m.pose.y});
-  }
-  if (scene.robot) {
-    Vec2 c[4];
-    footprint_corners(scene.geometry, *scene.robot, c);
-    for (const auto& p : c) grow(b, p);
-  }
-  if (scene.trail != nullptr) {
-    for (std::size_t i = 0; i < scene.trail->size(); ++i) grow(b, (*scene.trail)[i]);
-  }
-  if (!(b.lo.x() <= b.hi.x())) b = {Vec2(-1, -1), Vec2(1, 1)};
-  b.lo -= Vec2::Constant(options.margin);
-  b.hi += Vec2::Constant(options.margin);
-  View v;
-  v.world = b;
-  v.scale = options.pixels_per_metre > 0.0 ? options.pixels_per_metre : 60.0;
-  v.width = std::max(1, static_cast<int>(std::ceil((b.hi.x() - b.lo.x()) * v.scale - 1e-6)));
-  v.height = std::max(1, static_cast<int>(std::ceil((b.hi.y() - b.lo.y()) * v.scale - 1e-6)));
-  return v;
-}
-
 // Layers, bottom to top: floor, grid, underlay, obstacles, doors, marks, beams, trail, robot,
-// pan-tilt, overlay, title.
-void render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options) {
+// pan-tilt, overlay; then the words: title, axes, scale bar, legend, and last the labels (placed
+// where they collide with nothing laid out before them).
+picture::Layout render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options) {
+  picture::Layout layout = view.layout();
+  picture::Legend legend;
+  std::vector<picture::Label> labels;
+  Pen p{cr, view, legend, labels, options.labels};
   cairo_save(cr);
-  set(cr, kFloor);
+  cairo_set_source_rgb(cr, kFloor.r, kFloor.g, kFloor.b);
   cairo_paint(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  if (options.grid) draw_grid(cr, view);
-  if (scene.underlay) {
-    cairo_save(cr);
-    scene.underlay(cr, view);
-    cairo_restore(cr);
-  }
+  cairo_save(cr);
+  picture::clip_to_plot(cr, view);
+  if (options.grid) draw_grid(p);
+  hook(cr, view, scene.underlay);
   if (scene.world != nullptr) {
-    draw_obstacles(cr, view, *scene.world);
-    draw_doors(cr, view, *scene.world, options.labels);
-    draw_marks(cr, view, scene, options.labels);
+    draw_obstacles(p, *scene.world);
+    draw_doors(p, *scene.world);
+    draw_marks(p, scene);
   }
-  draw_beams(cr, view, scene.beams, kBeam, options.cones, options.labels);
-  if (scene.trail != nullptr) draw_trail(cr, view, *scene.trail);
-  if (scene.robot) draw_robot(cr, view, scene.geometry, *scene.robot);
-  draw_beams(cr, view, scene.pan_tilt, kPanTilt, options.cones, false);
-  if (scene.overlay) {
-    cairo_save(cr);
-    scene.overlay(cr, view);
-    cairo_restore(cr);
-  }
-  if (!scene.title.empty()) {
-    cairo_set_font_size(cr, 14);
-    set(cr, kText);
-    cairo_move_to(cr, 8, 18);
-    cairo_show_text(cr, scene.title.c_str());
-  }
+  draw_beams(p, scene.beams, kBeam, kBeamSilent, options.cones);
+  if (scene.trail != nullptr) draw_trail(p, *scene.trail);
+  if (scene.robot) draw_robot(p, scene.geometry, *scene.robot);
+  draw_beams(p, scene.pan_tilt, kPanTilt, kPanTiltSilent, options.cones);
+  hook(cr, view, scene.overlay);
   cairo_restore(cr);
-}
-
-// An ARGB image surface sized by make_view, written with cairo's PNG writer.
-Status render_png(const Scene& scene, const RenderOptions& options,
-                  const std::filesystem::path& path) {
-  const View v = make_view(scene, options);
-  cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, v.width, v.height);
-  if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-    cairo_surface_destroy(s);
-    return Error{path.string(), 0, "cannot create a picture of that size"};
-  }
-  return finish_surface(s, scene, v, options, path, true);
-}
-
-// A vector picture of the same drawing, units = points.
-Status render_svg(const Scene& scene, const RenderOptions& options,
-                  const std::filesystem::path& path) {
-  const View v = make_view(scene, options);
-  cairo_surface_t* s = cairo_svg_surface_create(path.string().c_str(), v.width, v.height);
-  if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-    const std::string why = cairo_status_to_string(cairo_surface_status(s));
-    cairo_surface_destroy(s);
-    return Error{path.string(), 0, "cannot write the picture: " + why};
-  }
-  return finish_surface(s, scene, v, options, path, false);
-}
-
-// Cairo first (it holds fontconfig objects), then fontconfig itself.
-void release_render_caches() {
-  cairo_debug_reset_static_data();
-  FcFini();
-}
-
-// Mount positions moved into the world; ranges as reported (the ring is uncalibrated).
-std::vector<SonarBeam> ring_beams(const Pose& robot, const RingLayout& layout,
-                                  std::span<const double, kRingSensors> ranges,
-                                  const SonarParams& params) {
-  std::vector<SonarBeam> out;
-  out.reserve(kRingSensors);
-  for (int i = 0; i < kRingSensors; ++i) {
-    SonarBeam b;
-    sensor_in_world(robot, layout[i], b.origin, b.direction);
-    b.half_angle = params.half_angle;
-    b.range = ranges[i];
-    b.max_range = params.max_range();
-    b.number = layout[i].number;
-    out.push_back(b);
-  }
-  return out;
-}
-
-// Reported pan-tilt readings are raw: undo the calibration line to draw true distances.
-std::vector<SonarBeam> pan_tilt_beams(const Pose& robot, const PanTiltMount& mount,
-                                      double direction, const PanTiltReading& reading,
-                                      const SonarParams& params) {
-  const auto m = pan_tilt_mounts(mount, direction);
-  std::vector<SonarBeam> out(2);
-  const double r[2] = {reading.facing, reading.opposite};
-  for (int i = 0; i < 2; ++i) {
-    sensor_in_world(robot, m[i], out[i].origin, out[i].direction);
-    out[i].half_angle = params.half_angle;
-    out[i].range = (r[i] > 0.0 && r[i] != params.no_echo) ? (r[i] - params.offset) / params.scale : 0.0;
-    out[i].max_range = params.max_range();
-  }
-  return out;
+  for (const Ink& k : scene.keys) legend.add(k);
+  const std::string title = !scene.title.empty() ? scene.title : scene.world != nullptr ? scene.world->name : "simulated world";
+  picture::draw_words(cr, view, title, legend, labels, layout);
+  cairo_restore(cr);
+  return layout;
 }
 
 }  // namespace robuter::sim

@@ -1,5 +1,5 @@
-// Pictures of the simulated world with cairo: obstacles, doors, robot and trail, sonar beams
-// and pan-tilt rays, to PNG or SVG through one renderer, with hooks for maps and paths.
+// Pictures of the simulated world with cairo: obstacles, doors, robot and trail, sonar beams and
+// pan-tilt rays, with title, axes, scale bar and legend, to PNG, SVG or PDF through one renderer.
 #pragma once
 
 #include <cairo.h>
@@ -12,27 +12,18 @@
 #include <vector>
 
 #include "hal/sim/footprint.hpp"
+#include "picture/frame.hpp"
+#include "picture/layout.hpp"
+#include "picture/legend.hpp"
 #include "hal/sim/result.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/trail.hpp"
 
 namespace robuter::sim {
 
-// World-to-picture mapping: metres to device units (pixels for PNG, points for SVG), y up.
-struct View {
-  Box world{Vec2::Zero(), Vec2::Zero()};  // world area shown, m
-  double scale = 60.0;                    // device units per metre
-  int width = 0;                          // picture width, device units
-  int height = 0;                         // picture height, device units
-
-  // Device coordinates of a world point.
-  Vec2 to_device(const Vec2& w) const {
-    return {(w.x() - world.lo.x()) * scale, (world.hi.y() - w.y()) * scale};
-  }
-  // Sets the context's transform so that user units are world metres (y up); line widths set
-  // afterwards are in metres too.
-  void apply(cairo_t* cr) const;
-};
+// World-to-picture mapping: the plot area (metres, y up) on a page with room for the title, the
+// axes, the scale bar and the legend (picture/frame.hpp).
+using View = picture::Frame;
 
 // One sonar beam to draw, already in the world frame.
 struct SonarBeam {
@@ -57,31 +48,45 @@ struct Scene {
   std::vector<SonarBeam> pan_tilt;       // pan-tilt rays with their ranges
   DrawHook underlay;                     // e.g. an occupancy map: drawn under the obstacles
   DrawHook overlay;                      // e.g. a planned path: drawn on top of everything
-  std::string title;                     // caption in the top-left corner
+  std::vector<picture::Ink> keys;        // legend entries for what the hooks draw
+  std::string title;                     // what, when, outcome (default: the world's name)
 };
 
 // How to draw it.
 struct RenderOptions {
-  double pixels_per_metre = 60.0;  // scale, device units per metre
+  double pixels_per_metre = 0.0;   // scale, device units per metre; 0 = fill min_width
+  int min_width = 1000;            // the picture is at least this wide, device units
   double margin = 0.4;             // space around the content, m
   bool grid = true;                // light 1 m grid
   bool labels = true;              // names of doors and markers, sensor numbers
   bool cones = true;               // beam cones (else only the axis to the echo)
 };
 
-// Picks the world area (obstacles, robot, trail, start, goal, plus margin) and the scale.
+// Picks the world area (obstacles, robot, trail, start, goal, plus margin), the scale and the page.
 View make_view(const Scene& scene, const RenderOptions& options);
 
-// Draws the scene on any cairo context (the one renderer behind both file formats).
-void render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options);
+// Draws the scene on any cairo context (the one renderer behind every file format); what it laid
+// out: title, legend entries, scale bar, axis labels, text labels, with their boxes.
+picture::Layout render(cairo_t* cr, const Scene& scene, const View& view, const RenderOptions& options);
 
-// Writes the scene as a PNG file.
-Status render_png(const Scene& scene, const RenderOptions& options,
-                  const std::filesystem::path& path);
+// Writes the scene as a PNG file; what was laid out.
+Result<picture::Layout> render_png(const Scene& scene, const RenderOptions& options,
+                                   const std::filesystem::path& path);
 
-// Writes the scene as an SVG file.
-Status render_svg(const Scene& scene, const RenderOptions& options,
-                  const std::filesystem::path& path);
+// Writes the scene as an SVG file; what was laid out.
+Result<picture::Layout> render_svg(const Scene& scene, const RenderOptions& options,
+                                   const std::filesystem::path& path);
+
+// Writes the scene as a PDF file (its words are text a PDF reader can extract); what was laid out.
+Result<picture::Layout> render_pdf(const Scene& scene, const RenderOptions& options,
+                                   const std::filesystem::path& path);
+
+// Writes the scene in the format named by the path's extension (.png, .svg or .pdf).
+Result<picture::Layout> render_file(const Scene& scene, const RenderOptions& options,
+                                    const std::filesystem::path& path);
+
+// True when the path ends in .png, .svg or .pdf (any case): a format render_file writes.
+bool picture_format_ok(const std::filesystem::path& path);
 
 // Frees cairo's and fontconfig's process-wide caches (text drawing fills them). Call once at
 // the end of a program or test run checked by LeakSanitizer; render nothing afterwards.

@@ -4,25 +4,12 @@
 #include <array>
 #include <cstdio>
 
+#include "picture/page.hpp"
+
 namespace robuter::hal {
 
-namespace {
-// Lower-case extension of `path` ("" if none); why: the picture format follows it.
-std::string extension(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string e = path.substr(dot + 1);
-  for (char& c : e) c = static_cast<char>((c >= 'A' && c <= 'Z') ? c - 'A' + 'a' : c);
-  return e;
-}
-}  // namespace
-
 // Why at start-up: a typo must not cost a whole run whose picture is then not written.
-bool picture_path_ok(const std::string& path) {
-  const std::string e = extension(path);
-  return e == "png" || e == "svg";
-}
+bool picture_path_ok(const std::string& path) { return sim::picture_format_ok(path); }
 
 // Why the true pose: the picture shows where the robot is, not where its odometry thinks.
 sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSensors> mm,
@@ -48,18 +35,23 @@ sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSens
   return scene;
 }
 
-// Why a title with the time: pictures of several runs are told apart at a glance.
-std::optional<std::string> write_sim_picture(const SimRobot& r,
+// Why this title: what (world), when (simulated seconds, the date), outcome (where the robot
+// ended, how far it went, the emergency) — pictures of several runs are told apart at a glance.
+sim::Result<picture::Layout> write_sim_picture(const SimRobot& r,
                                              std::span<const std::uint16_t, kRingSensors> mm,
-                                             std::uint32_t no_echo, const std::string& path) {
-  if (!picture_path_ok(path)) return "picture " + path + ": expected a .png or .svg file";
-  char title[160];
-  std::snprintf(title, sizeof title, "robuterd: %s after %.1f s", r.world().name.c_str(), r.time());
+                                             std::uint32_t no_echo, const std::string& outcome,
+                                             const std::string& path) {
+  if (!picture_path_ok(path)) return sim::Error{path, 0, "expected a .png, .svg or .pdf file"};
+  const sim::Trail& t = r.robot().trail();
+  double travelled = 0.0;
+  for (std::size_t i = 1; i < t.size(); ++i) travelled += (t[i] - t[i - 1]).norm();
+  const sim::Pose& p = r.robot().pose();
+  char title[320];
+  std::snprintf(title, sizeof title, "robuterd --sim, %s, after %.1f s (%s): travelled %.2f m, at (%.2f m, %.2f m, %.0f deg)%s; %s",
+                r.world().name.c_str(), r.time(), picture::utc_now().c_str(), travelled, p.x, p.y,
+                p.theta * 180.0 / 3.14159265358979, r.robot().bumper() ? ", bumper pressed" : "", outcome.c_str());
   const sim::Scene scene = sim_scene(r, mm, no_echo, title);
-  const sim::Status s = extension(path) == "svg" ? sim::render_svg(scene, sim::RenderOptions{}, path)
-                                                 : sim::render_png(scene, sim::RenderOptions{}, path);
-  if (!s) return "picture: " + s.error().describe();
-  return std::nullopt;
+  return sim::render_file(scene, sim::RenderOptions{}, path);
 }
 
 // Why a wrapper: robuterd need not include the renderer to release its caches.

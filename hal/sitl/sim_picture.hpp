@@ -18,12 +18,15 @@ namespace robuter::hal {
 sim::Scene sim_scene(const SimRobot& r, std::span<const std::uint16_t, kRingSensors> mm,
                      std::uint32_t no_echo, const std::string& title);
 
-// Writes that scene to `path` (.png or .svg by extension); the problem when it could not.
-std::optional<std::string> write_sim_picture(const SimRobot& r,
+// Writes that scene to `path` (.png, .svg or .pdf by extension), titled with the world, the time
+// and the outcome (where the robot ended and `outcome`, e.g. the emergency); the problem when it
+// could not, or what was laid out.
+sim::Result<picture::Layout> write_sim_picture(const SimRobot& r,
                                              std::span<const std::uint16_t, kRingSensors> mm,
-                                             std::uint32_t no_echo, const std::string& path);
+                                             std::uint32_t no_echo, const std::string& outcome,
+                                             const std::string& path);
 
-// True when `path` ends in .png or .svg (checked at start-up, before running).
+// True when `path` ends in .png, .svg or .pdf (checked at start-up, before running).
 bool picture_path_ok(const std::string& path);
 
 // Frees the renderer's process-wide caches; call once when no more pictures will be drawn.

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 
+#include "hal/sitl/odometry_frame.hpp"
 #include "hal/sitl/ptu_port.hpp"
 #include "hal/sitl/ptu_sweep.hpp"
 #include "hal/sitl/sim_robot.hpp"
@@ -25,6 +26,9 @@ class SimStepper final : public Process {
     if (on) ptu_sweep_.emplace(r_);
     else ptu_sweep_.reset();
   }
+  // Publishes, every tick, where the odometry frame lies in the world (the planner's pictures
+  // are drawn in the world frame with it); start-up only.
+  void publish_frame(OdometryFrame* frame) { frame_ = frame; }
   PtuPort* ptu_port() { return ptu_port_ ? &*ptu_port_ : nullptr; }
   PtuSweep* ptu_sweep() { return ptu_sweep_ ? &*ptu_sweep_ : nullptr; }
 
@@ -36,6 +40,7 @@ class SimStepper final : public Process {
   // wrote during the last tick, then the sweep acts on the new angle.
   void run(Kernel& k) override {
     r_.advance_to(static_cast<double>(k.now() - origin_) * 1e-9);
+    if (frame_ != nullptr) frame_->publish(r_.robot().pose(), r_.robot().odometry());
     if (ptu_port_) ptu_port_->service();
     if (ptu_sweep_) ptu_sweep_->run();
   }
@@ -45,6 +50,7 @@ class SimStepper final : public Process {
   Nanos origin_ = 0;                    // kernel time of simulated time 0, ns
   std::optional<PtuPort> ptu_port_;     // the emulator's stream (pipe or pty), when wired
   std::optional<PtuSweep> ptu_sweep_;   // the built-in sweep, when asked for
+  OdometryFrame* frame_ = nullptr;      // where to publish the odometry frame, if anywhere
 };
 
 }  // namespace robuter::hal

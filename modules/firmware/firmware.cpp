@@ -17,6 +17,7 @@
 #include "hal/linux/gpio_lines.hpp"
 #include "hal/linux/serial_stream.hpp"
 #include "hal/sitl/byte_pipe.hpp"
+#include "hal/sitl/odometry_frame.hpp"
 #include "hal/sitl/sim_picture.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "kernel/log.hpp"
@@ -218,7 +219,7 @@ std::optional<std::string> Firmware::setup() {
     stepper->attach_ptu(std::move(unit));
   }
   if (!opt_.picture.empty() && !hal::picture_path_ok(opt_.picture))
-    return "--picture " + opt_.picture + ": expected a .png or .svg file";
+    return "--picture " + opt_.picture + ": expected a .png, .svg or .pdf file";
   auto us = std::make_unique<UltrasonicModule>(bb_, *ring_, cfg_.sonar);
   // Bumpers on GPIO lines when [hardware.gpio] names a chip; a missing chip stops start-up.
   if (!cfg_.gpio.chip.empty() && opt_.open_devices) {
@@ -255,7 +256,18 @@ std::optional<std::string> Firmware::setup() {
       log::info("planner: --planner-pictures {} did not exist: created it", dir);
     }
     picture_box_ = std::make_unique<planner::PictureMailbox>();
-    picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_);
+    // Under --sim the odometry frame's place in the world is known (the stepper publishes it each
+    // tick): the pictures are drawn in the world frame.
+    planner::PictureWriter::FrameSource frame;
+    if (sim_ && stepper) {
+      odometry_frame_ = std::make_unique<hal::OdometryFrame>();
+      stepper->publish_frame(odometry_frame_.get());
+      frame = [f = odometry_frame_.get()]() -> std::optional<plan::Pose2> {
+        const sim::Pose p = f->read();
+        return plan::Pose2{p.x, p.y, p.theta};
+      };
+    }
+    picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_, frame);
     planner->set_pictures(picture_box_.get());
   }
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
@@ -306,15 +318,20 @@ std::optional<std::string> Firmware::setup() {
 
 int Firmware::run() {
   if (picture_writer_) picture_writer_->start();
-  const int status = kernel_->run();
+  int status = kernel_->run();
   if (picture_writer_) picture_writer_->stop();
-  if (opt_.picture.empty() || !sim_) return status;
-  const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
-  const auto err = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, opt_.picture);
-  hal::release_picture_caches();
-  if (!err) return status;
-  std::fprintf(stderr, "robuterd: %s\n", err->c_str());
-  return status == 0 ? 1 : status;
+  const bool picture = !opt_.picture.empty() && sim_;
+  if (picture) {
+    const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read
+    const auto& em = bb_.emergency.reader().peek();
+    const std::string outcome = em.latched ? "emergency latched (" + std::string(word(em.cause)) + ")" : "no emergency latched";
+    if (const auto laid = hal::write_sim_picture(*sim_, ranges.mm, ranges.no_echo, outcome, opt_.picture); !laid) {
+      std::fprintf(stderr, "robuterd: picture: %s\n", laid.error().describe().c_str());
+      if (status == 0) status = 1;
+    }
+  }
+  if (picture || picture_writer_) hal::release_picture_caches();  // the last text drawn: LeakSanitizer
+  return status;
 }
 
 }  // namespace robuter

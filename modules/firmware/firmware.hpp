@@ -22,6 +22,7 @@ namespace robuter {
 namespace hal {
 class GpioLines;
 class PipeEnd;
+class OdometryFrame;
 }
 
 class HeartbeatModule;
@@ -106,6 +107,7 @@ class Firmware {
   hal::PipeEnd* ptu_pipe_ = nullptr;                 // ptu_link_ when it is the in-process pipe
   std::vector<std::unique_ptr<Process>> processes_;  // modules and helpers, owned
   std::unique_ptr<Kernel> kernel_;
+  std::unique_ptr<hal::OdometryFrame> odometry_frame_;     // the odometry frame in the world (--sim), for the pictures
   std::unique_ptr<planner::PictureMailbox> picture_box_;   // plans handed from the planner
   std::unique_ptr<planner::PictureWriter> picture_writer_; // draws them outside the kernel
 };

@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   app.add_option("--ptu-port", opt.ptu_port, "the pan-tilt unit's serial device for the PTU module (overrides [ptu] port); with --sim, the --ptu-pty path");
   app.add_flag("--no-ptu", no_ptu, "simulator: the robot without its pan-tilt unit (by default the simulated unit is wired to the PTU module inside the process)");
   app.add_flag("--ptu-sweep", opt.ptu_sweep, "simulator: sweep the pan-tilt between its limits and fire its two sonars every 5° (no PTU module needed)");
-  app.add_option("--picture", opt.picture, "simulator: at exit, draw world, robot, trail and the last ring ranges to FILE (.png or .svg)");
+  app.add_option("--picture", opt.picture, "simulator: at exit, draw world, robot, trail and the last ring ranges to FILE (.png, .svg or .pdf), with title, axes, scale bar and legend");
   app.add_option("--planner-pictures", opt.planner_pictures,
                  "write a PNG of every plan (map, expanded obstacles, path) into DIR, from a thread outside the kernel");
   app.add_flag("--stats", stats, "print per-process statistics and tick lateness at exit");

@@ -13,7 +13,14 @@ bool PictureWriter::drain() {
   if (snap == nullptr) return false;
   char name[64];
   std::snprintf(name, sizeof name, "/plan-g%03u-%03u.png", snap->goal_seq, snap->plan_number);
-  const plan::Status st = plan::write_plan_picture(*snap, dir_ + name);
+  plan::PlanPictureOptions options;
+  const std::optional<plan::Pose2> frame = map_in_world_ ? map_in_world_() : std::nullopt;
+  options.world_frame = frame.has_value();
+  options.map_in_world = frame.value_or(plan::Pose2{});
+  char what[64];
+  std::snprintf(what, sizeof what, "robuterd plan %03u for XG goal %03u", snap->plan_number, snap->goal_seq);
+  options.what = what;
+  const auto st = plan::write_plan_picture(*snap, dir_ + name, options);
   box_.release();
   if (!st) {
     // Not the kernel's thread: a message on stderr costs the robot nothing.

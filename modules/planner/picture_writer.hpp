@@ -3,6 +3,8 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -17,7 +19,11 @@ namespace robuter::planner {
 // ticks when a test steps a virtual clock (drain()).
 class PictureWriter {
  public:
-  PictureWriter(std::string dir, PictureMailbox& box) : dir_(std::move(dir)), box_(box) {}
+  // Where the planner's (odometry) frame lies in the world now (m, rad), asked before each
+  // picture; empty when unknown (the real robot): the pictures are then in the odometry frame.
+  using FrameSource = std::function<std::optional<plan::Pose2>()>;
+  PictureWriter(std::string dir, PictureMailbox& box, FrameSource map_in_world = {})
+      : dir_(std::move(dir)), box_(box), map_in_world_(std::move(map_in_world)) {}
   ~PictureWriter() { stop(); }
   PictureWriter(const PictureWriter&) = delete;
   PictureWriter& operator=(const PictureWriter&) = delete;
@@ -36,6 +42,7 @@ class PictureWriter {
  private:
   std::string dir_;                       // folder of the pictures
   PictureMailbox& box_;                   // where the planner leaves snapshots
+  FrameSource map_in_world_;              // the odometry frame in the world, if known
   std::thread thread_;                    // the writer thread (robuterd), or none (tests)
   std::atomic<bool> stop_{false};         // asks the thread to end
   std::atomic<std::uint32_t> written_{0}; // pictures written, count

@@ -1,4 +1,4 @@
-// The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook).
+// The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook) and named in its legend.
 #include "tests/doors_sim/crossing_picture.hpp"
 
 #include <cairo.h>
@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "hal/sim/render.hpp"
+#include "picture/page.hpp"
 
 namespace robuter::test {
 
@@ -43,58 +44,48 @@ Ray sector_ray(const ScanSnapshot& s, int i, const Config& cfg) {
   return r;
 }
 
-// One colour per snapshot (blue, orange, green, purple).
-void set_colour(cairo_t* cr, std::size_t k, double alpha) {
-  static constexpr double kColours[][3] = {{0.10, 0.35, 0.85}, {0.90, 0.45, 0.05}, {0.10, 0.60, 0.20}, {0.55, 0.20, 0.70}};
-  const auto& c = kColours[k % 4];
-  cairo_set_source_rgba(cr, c[0], c[1], c[2], alpha);
+// One ink per snapshot (blue, orange, green, purple), named by its label.
+picture::Ink snapshot_ink(std::size_t k, const std::string& label) {
+  static constexpr picture::Rgb kColours[] = {{0.10, 0.35, 0.85}, {0.90, 0.45, 0.05}, {0.10, 0.60, 0.20}, {0.55, 0.20, 0.70}};
+  return {kColours[k % 4], picture::Swatch::line, label + ": rays, dots at echoes", 1.0, 2.0};
 }
 }  // namespace
 
-// Why an overlay rather than Scene::pan_tilt: several scans, each in its own colour, with a legend.
-std::optional<std::string> write_crossing_picture(const hal::SimRobot& r, const Config& cfg,
-                                                  std::span<const ScanSnapshot> snaps, const std::string& title,
-                                                  const std::string& path) {
+// Why an overlay rather than Scene::pan_tilt: several scans, each in its own colour, named in the legend.
+sim::Result<picture::Layout> write_crossing_picture(const hal::SimRobot& r, const Config& cfg,
+                                                   std::span<const ScanSnapshot> snaps, const std::string& title,
+                                                   const std::string& path) {
   sim::Scene scene;
   scene.world = &r.world();
   scene.geometry = r.robot().params().geometry;
   scene.robot = r.robot().pose();
   scene.trail = &r.robot().trail();
-  scene.title = title;
+  scene.title = "door crossing, " + title + ", " + picture::utc_now();
+  for (std::size_t k = 0; k < snaps.size(); ++k) scene.keys.push_back(snapshot_ink(k, snaps[k].label));
   scene.overlay = [&](cairo_t* cr, const sim::View& view) {
     for (std::size_t k = 0; k < snaps.size(); ++k) {
+      const picture::Rgb c = scene.keys[k].colour;
       cairo_set_line_width(cr, 1.0);
       for (int i = 0; i < kPanTiltSectors; ++i) {
         if (snaps[k].scan.read_tick[static_cast<std::size_t>(i)] == 0) continue;
         const Ray ray = sector_ray(snaps[k], i, cfg);
         const sim::Vec2 a = view.to_device(ray.from), b = view.to_device(ray.to);
-        set_colour(cr, k, ray.echo ? 0.45 : 0.18);
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, ray.echo ? 0.45 : 0.18);
         cairo_move_to(cr, a.x(), a.y());
         cairo_line_to(cr, b.x(), b.y());
         cairo_stroke(cr);
         if (ray.echo) {
-          set_colour(cr, k, 1.0);
+          cairo_set_source_rgb(cr, c.r, c.g, c.b);
           cairo_arc(cr, b.x(), b.y(), 2.5, 0.0, 2.0 * kPi);
           cairo_fill(cr);
         }
       }
-      // Legend, below the caption.
-      const double y = 36.0 + 16.0 * static_cast<double>(k);
-      set_colour(cr, k, 1.0);
-      cairo_rectangle(cr, 10.0, y - 9.0, 10.0, 10.0);
-      cairo_fill(cr);
-      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-      cairo_set_font_size(cr, 12.0);
-      cairo_move_to(cr, 26.0, y);
-      cairo_show_text(cr, snaps[k].label.c_str());
     }
   };
   sim::RenderOptions options;
-  options.pixels_per_metre = 100.0;  // the doorway's 90 cm over 90 pixels
-  const bool svg = path.size() > 4 && path.substr(path.size() - 4) == ".svg";
-  const sim::Status st = svg ? sim::render_svg(scene, options, path) : sim::render_png(scene, options, path);
-  if (!st) return "picture " + path + ": " + st.error().describe();
-  return std::nullopt;
+  auto laid = sim::render_file(scene, options, path);
+  if (!laid) return sim::Error{path, 0, "picture " + path + ": " + laid.error().describe()};
+  return laid;
 }
 
 }  // namespace robuter::test

@@ -2,10 +2,10 @@
 // drawn where their echoes were (each sector from the pose it was fired at).
 #pragma once
 
-#include <optional>
 #include <span>
 #include <string>
 
+#include "hal/sim/render.hpp"
 #include "hal/sitl/sim_robot.hpp"
 #include "kernel/config.hpp"
 #include "modules/topics.hpp"
@@ -21,11 +21,12 @@ struct ScanSnapshot {
   std::string label;          // legend text, e.g. "scan at Ad"
 };
 
-// Writes `path` (.png or .svg): world, trail, robot at its end pose, each snapshot's sectors as
-// rays from the transducer face to the echo (a dot) or to the cap (no echo: no dot), one colour
-// per snapshot, and a legend. An error text, or nothing when written.
-std::optional<std::string> write_crossing_picture(const hal::SimRobot& r, const Config& cfg,
-                                                  std::span<const ScanSnapshot> snaps, const std::string& title,
-                                                  const std::string& path);
+// Writes `path` (.png, .svg or .pdf): world, trail, robot at its end pose, each snapshot's sectors
+// as rays from the transducer face to the echo (a dot) or to the cap (no echo: no dot), one colour
+// per snapshot, named in the legend; titled "door crossing, `title`, date". What was laid out, or
+// why nothing was written.
+sim::Result<picture::Layout> write_crossing_picture(const hal::SimRobot& r, const Config& cfg,
+                                                   std::span<const ScanSnapshot> snaps, const std::string& title,
+                                                   const std::string& path);
 
 }  // namespace robuter::test

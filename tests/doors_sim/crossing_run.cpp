@@ -166,7 +166,9 @@ CrossingResult run_crossing(const CrossingSetup& s) {
         std::snprintf(title, sizeof title, "%s, start dx %+.2f m, %+.1f deg: %s (AG %.0f s, Ad %.0f s)",
                       std::filesystem::path(s.world).stem().c_str(), s.dx_m, s.dheading_deg, r.doors.c_str(), r.gate_s,
                       r.crossing_s);
-        if (auto err = write_crossing_picture(fw.sim(), s.config, snaps, title, s.picture)) r.picture_error = *err;
+        auto laid = write_crossing_picture(fw.sim(), s.config, snaps, title, s.picture);
+        if (laid) r.picture_layout = std::move(laid).value();
+        else r.picture_error = laid.error().message;
       }
       fw.run_ticks(20);
       r.mask_after = fw.bb().emergency.reader().peek().enabled;

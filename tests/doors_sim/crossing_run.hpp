@@ -6,6 +6,7 @@
 #include <string>
 
 #include "kernel/config.hpp"
+#include "picture/layout.hpp"
 
 namespace robuter::test {
 
@@ -26,7 +27,7 @@ struct CrossingSetup {
   std::int64_t shutdown_after_ticks = -1;    // stop the firmware (kernel shutdown) this long after Ad (−1: never)
   int trace_every = 0;            // print pose and crossing decisions every this many ticks (0: never)
   bool trace_echoes = false;      // with trace_every: also every localised echo closer than 1.2 m
-  std::string picture;            // write a picture of the run here (.png/.svg; "" = none): trail, scan at Ad, scan at the end
+  std::string picture;            // write a picture of the run here (.png/.svg/.pdf; "" = none): trail, scan at Ad, scan at the end
   Config config;                  // firmware configuration
 };
 
@@ -47,6 +48,7 @@ struct CrossingResult {
   std::string pan_tilt;            // the pan-tilt's state at the end: "scanning", "failed unit-lost" …
   std::string log;                // XD replies at the ends, for messages
   std::string picture_error;      // why the picture was not written ("" = written, or none asked)
+  picture::Layout picture_layout; // what the picture laid out (title, legend, scale bar, labels)
 };
 
 CrossingResult run_crossing(const CrossingSetup& s);

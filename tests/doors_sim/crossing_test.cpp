@@ -10,7 +10,10 @@
 #include <string>
 
 #include "hal/sim/render.hpp"
+#include "tests/doors_sim/crossing_picture.hpp"
 #include "tests/doors_sim/crossing_run.hpp"
+#include "tests/support/layout_check.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace robuter::test {
 namespace {
@@ -18,9 +21,11 @@ namespace {
 const std::string kWorlds = ROBUTER_WORLDS_DIR "/";
 
 // A start that must end through the door: aligned, crossed, never touching, stopped, body
-// beyond the wall, the emergency mask bumper-only while crossing and back to 7 after.
-void expect_crossed(const CrossingSetup& s) {
+// beyond the wall, the emergency mask bumper-only while crossing and back to 7 after. The
+// result goes to `out` when given.
+void expect_crossed(const CrossingSetup& s, CrossingResult* out = nullptr) {
   const CrossingResult r = run_crossing(s);
+  if (out != nullptr) *out = r;
   ASSERT_TRUE(r.started) << r.log;
   const std::string where = "start dx " + std::to_string(s.dx_m) + " m, dheading " + std::to_string(s.dheading_deg) + "°\n" + r.log;
   EXPECT_EQ(r.gate, "aligned") << where;
@@ -44,12 +49,14 @@ constexpr int kSeededStarts = 20;
 
 class SeededStart : public ::testing::TestWithParam<int> {};
 
-// The first start also draws its picture (trail and scans): a PNG file is written.
+// The first start also draws its picture (trail and scans): a PNG file is written, with a title,
+// a legend entry per scan, a scale bar and axes, nothing overlapping.
 TEST_P(SeededStart, Door90IsCrossed) {
   CrossingSetup s = seeded_start(kWorlds + "door90.toml", static_cast<std::uint64_t>(GetParam()));
   const std::string picture = (std::filesystem::temp_directory_path() / ("robuter-crossing-" + std::to_string(::getpid()) + ".png")).string();
   if (GetParam() == 1) s.picture = picture;
-  expect_crossed(s);
+  CrossingResult r;
+  expect_crossed(s, &r);
   if (GetParam() != 1) return;
   std::ifstream in(picture, std::ios::binary);
   char magic[8] = {};
@@ -57,7 +64,39 @@ TEST_P(SeededStart, Door90IsCrossed) {
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
   EXPECT_GT(std::filesystem::file_size(picture), 10'000u);
   std::filesystem::remove(picture);
+  EXPECT_EQ(r.picture_error, "");
+  expect_explained(r.picture_layout);
+  EXPECT_NE(r.picture_layout.find(picture::Kind::title, "door crossing, door90"), nullptr);
+  EXPECT_NE(r.picture_layout.find(picture::Kind::legend, "last pan-tilt scan of the crossing"), nullptr);
   sim::release_render_caches();  // fontconfig's caches, for LeakSanitizer (no picture is drawn after this one)
+}
+
+// The picture without a crossing (fast): the door world, the robot at its start, one made-up
+// scan of 72 echoes 1 m around; its layout explains it, to PNG and PDF alike.
+TEST(CrossingPicture, IsExplained) {
+  Config cfg;
+  hal::SimOptions opt;
+  opt.world_file = kWorlds + "door90.toml";
+  const hal::SimRobot robot(cfg, opt);
+  ASSERT_FALSE(robot.error()) << *robot.error();
+  ScanSnapshot snap;
+  snap.label = "a made-up scan";
+  snap.truth = robot.robot().pose();
+  for (std::size_t i = 0; i < kPanTiltSectors; ++i) {
+    snap.scan.raw[i] = 1000;
+    snap.scan.read_tick[i] = 1;
+    snap.scan.direction[i] = static_cast<std::int32_t>(i) * 500 - 18000;
+  }
+  const TempDir dir;
+  for (const char* name : {"crossing.png", "crossing.pdf"}) {
+    const auto laid = write_crossing_picture(robot, cfg, std::span(&snap, 1), "made-up scan: not run", dir.file(name));
+    ASSERT_TRUE(laid.ok()) << laid.error().describe();
+    expect_explained(laid.value());
+    EXPECT_NE(laid.value().find(picture::Kind::title, "door crossing, made-up scan: not run"), nullptr);
+    EXPECT_NE(laid.value().find(picture::Kind::legend, "a made-up scan"), nullptr);
+    EXPECT_NE(laid.value().find(picture::Kind::legend, "robot at its true pose"), nullptr);
+  }
+  sim::release_render_caches();  // fontconfig's caches, for LeakSanitizer
 }
 
 TEST_P(SeededStart, Door100IsCrossed) {

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   app.add_option("--trace", trace, "print pose and crossing decisions every N ticks");
   app.add_flag("--echoes", echoes, "with --trace: the localised echoes closer than 1.2 m too");
   app.add_flag("--log", log, "print the XD replies of the run");
-  app.add_option("--picture", picture, "draw the (last) run to this .png or .svg file");
+  app.add_option("--picture", picture, "draw the (last) run to this .png, .svg or .pdf file");
   CLI11_PARSE(app, argc, argv);
   int failures = 0;
   for (int n = seed; n < seed + count; ++n) {

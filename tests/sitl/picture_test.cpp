@@ -1,14 +1,20 @@
 // Pictures from the command line: robuter-sim render (PNG and SVG, bad arguments) and
-// robuterd --sim --picture; the files must be real pictures with content, not blank pages.
+// robuterd --sim --picture; the files must be real pictures with content, ≥ 1000 px wide, and
+// robuterd's picture must lay out its title, legend, scale bar and axes without overlap.
 #include <gtest/gtest.h>
 
 #include <cairo.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include "hal/sitl/sim_picture.hpp"
+#include "tests/support/layout_check.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace {
 
@@ -53,8 +59,8 @@ TEST(Pictures, RobuterSimRendersAPng) {
   ASSERT_EQ(run(kBin + "/robuter-sim render --world " + kWorld + " --ring --pan-tilt 30 -o " + out), 0);
   int w = 0, h = 0;
   const double f = ink(out, w, h);
-  EXPECT_GT(w, 300);
-  EXPECT_GT(h, 200);
+  EXPECT_EQ(w, 1000);  // the default: 1000 px wide, the scale filling the plot
+  EXPECT_GT(h, 400);
   EXPECT_GT(f, 0.05);  // walls, robot, 24 beams: plenty of non-background pixels
   EXPECT_LT(f, 0.95);
 }
@@ -85,7 +91,7 @@ TEST(Pictures, RobuterdWritesAPictureAtExit) {
   ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --ptu-sweep --picture " + out), 0);
   int w = 0, h = 0;
   const double f = ink(out, w, h);
-  EXPECT_GT(w, 300);
+  EXPECT_GE(w, 1000);
   EXPECT_GT(f, 0.05);
   const std::string svg = kOut + "/robuterd_exit.svg";
   ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --picture " + svg), 0);
@@ -94,6 +100,26 @@ TEST(Pictures, RobuterdWritesAPictureAtExit) {
 
 TEST(Pictures, RobuterdRefusesAPictureItCannotWrite) {
   EXPECT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 10 --picture " + kOut + "/x.jpg"), 2);
+}
+
+// The scene robuterd draws at exit, from a simulated robot: its layout explains it (title with
+// the world, the time and the outcome; legend; scale bar; axes; sensor numbers apart).
+TEST(Pictures, RobuterdPictureIsExplained) {
+  const robuter::Config cfg;
+  const robuter::hal::SimRobot robot(cfg, robuter::hal::SimOptions{});
+  ASSERT_FALSE(robot.error());
+  std::array<std::uint16_t, robuter::hal::kRingSensors> mm{};
+  mm.fill(900);
+  const robuter::test::TempDir dir;
+  const auto laid = robuter::hal::write_sim_picture(robot, mm, 0, "no emergency latched", dir.file("exit.png"));
+  ASSERT_TRUE(laid.ok()) << laid.error().describe();
+  robuter::test::expect_explained(laid.value());
+  const auto* title = laid.value().find(robuter::picture::Kind::title, "robuterd --sim");
+  ASSERT_NE(title, nullptr);
+  EXPECT_NE(title->text.find("no emergency latched"), std::string::npos) << title->text;
+  EXPECT_NE(laid.value().find(robuter::picture::Kind::legend, "ring sonar: cone to its echo"), nullptr);
+  EXPECT_GE(laid.value().of(robuter::picture::Kind::label).size(), 12u);  // most of the 24 numbers
+  robuter::hal::release_picture_caches();  // fontconfig's caches, for LeakSanitizer
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/lib/text_render.hpp"
 #include "modules/planner/lib/thesis_files.hpp"
+#include "picture/page.hpp"
 #include "tools/robuter-plan/picture.hpp"
 #include "tools/robuter-plan/world_map.hpp"
 
@@ -29,7 +30,7 @@ struct Options {
   std::string world;                      // -w: the project's world file (.toml) or a seed 000 .env
   std::vector<double> goal;               // --goal X Y (m): overrides the file's goal
   double radius = 0.78;                   // m, disc radius when no -p gives one (the firmware's default)
-  std::string picture;                    // -o: PNG to write
+  std::string picture;                    // -o: picture to write (PNG, or PDF)
   std::string save_map;                   // --save-map: write the map used
   std::vector<std::string> movingai;      // --movingai MAP SCEN
   std::string mode = "optimal";           // optimal | bfs
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
   app.add_option("--goal", o.goal, "goal X Y, m, instead of the file's")->expected(2);
   app.add_option("--radius", o.radius, "disc radius, m, when no -p gives one (default 0.78)")
       ->check(CLI::PositiveNumber);
-  app.add_option("-o,--output", o.picture, "write a PNG picture of the plan");
+  app.add_option("-o,--output", o.picture, "write a picture of the plan (PNG; PDF for a .pdf file): map, path, goal, outcome, axes, scale bar, legend");
   app.add_option("--save-map", o.save_map, "write the map used (robuter-map format)");
   app.add_option("--movingai", o.movingai, "answer a MovingAI .map and its .scen")->expected(2);
   app.add_option("--mode", o.mode, "search: optimal (A*, octile) or bfs (the thesis)")
@@ -184,5 +185,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "robuter-plan: give -p PARAMS [-a ENVIRONMENT | -s SAVED], -w WORLD, or --movingai MAP SCEN\n");
     return 1;
   }
-  return run_thesis(o);
+  const int status = run_thesis(o);
+  if (!o.picture.empty()) robuter::picture::release_caches();  // the picture's fonts: LeakSanitizer
+  return status;
 }

@@ -20,7 +20,11 @@ Status write_picture(const Planner& planner, const Pose2& start, Point2 goal, co
   for (std::size_t i = 1; i < snap.path_len; ++i)
     snap.length += std::hypot(snap.path[i].pose.x - snap.path[i - 1].pose.x, snap.path[i].pose.y - snap.path[i - 1].pose.y);
   snap.plan_number = 1;
-  return write_plan_picture(snap, path);
+  PlanPictureOptions options;
+  options.what = "robuter-plan";  // its maps (thesis files, worlds) are in the world frame
+  auto laid = write_plan_picture(snap, path, options);
+  if (!laid) return laid.error();
+  return Ok{};
 }
 
 }  // namespace robuter::plan::tool

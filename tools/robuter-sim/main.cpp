@@ -16,9 +16,9 @@ int main(int argc, char** argv) {
   render->add_option("--pose", req.pose, "robot pose X,Y,THETA_DEG (m, m, degrees); default: the world's start");
   render->add_flag("--ring", req.ring, "draw the 24 ring sonar beams with their ranges at that pose");
   CLI::Option* pt = render->add_option("--pan-tilt", pan_tilt, "draw the pan-tilt's two rays at this pan angle, degrees (rays at angle ± 90°)");
-  render->add_option("-o,--output", req.output, "picture to write: .png or .svg")->required();
-  render->add_option("--scale", req.scale, "pixels per metre")->check(CLI::Range(5.0, 1000.0));
-  render->add_option("--title", req.title, "caption (default: world name and pose)");
+  render->add_option("-o,--output", req.output, "picture to write: .png, .svg or .pdf")->required();
+  render->add_option("--scale", req.scale, "pixels per metre (default: the scale that makes the picture 1000 pixels wide)")->check(CLI::Range(5.0, 1000.0));
+  render->add_option("--title", req.title, "title (default: world, pose, date and what the sonars report)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,6 +10,7 @@
 #include "hal/sim/render.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world_io.hpp"
+#include "picture/page.hpp"
 
 namespace robuter::simtool {
 
@@ -35,13 +36,27 @@ bool parse_pose(const std::string& text, sim::Pose& out) {
   return true;
 }
 
-// Lower-case extension of a path (why: the output format follows it).
-std::string extension(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-  std::string e = path.substr(dot + 1);
-  for (char& c : e) c = static_cast<char>((c >= 'A' && c <= 'Z') ? c - 'A' + 'a' : c);
-  return e;
+// What, when and outcome: the world and pose, the date, and what the sonars drawn report.
+std::string default_title(const std::string& world, const sim::Pose& pose, const sim::Scene& scene) {
+  char t[320];
+  int n = std::snprintf(t, sizeof t, "robuter-sim render, %s, robot at (%.2f m, %.2f m, %.0f deg), %s", world.c_str(), pose.x,
+                        pose.y, pose.theta / kDeg, picture::utc_now().c_str());
+  const auto report = [&](const std::vector<sim::SonarBeam>& beams, const char* what) {
+    if (beams.empty() || n < 0 || n >= static_cast<int>(sizeof t)) return;
+    int echoes = 0;
+    const sim::SonarBeam* nearest = nullptr;
+    for (const auto& b : beams) {
+      if (b.range <= 0.0) continue;
+      ++echoes;
+      if (nearest == nullptr || b.range < nearest->range) nearest = &b;
+    }
+    n += std::snprintf(t + n, sizeof t - static_cast<std::size_t>(n), "; %s: %d of %zu echo", what, echoes, beams.size());
+    if (nearest != nullptr && n < static_cast<int>(sizeof t))
+      n += std::snprintf(t + n, sizeof t - static_cast<std::size_t>(n), ", nearest %.2f m", nearest->range);
+  };
+  report(scene.beams, "ring");
+  report(scene.pan_tilt, "pan-tilt");
+  return t;
 }
 
 // Why one place: every refusal looks the same and gives the shell status 1.
@@ -55,8 +70,7 @@ int fail(const std::string& why) {
 // models the simulated firmware uses (ring: 33 ms at 300 m/s; pan-tilt: 15 ms at 335 m/s and
 // the seed's calibration error).
 int run_render(const RenderRequest& r) {
-  const std::string ext = extension(r.output);
-  if (ext != "png" && ext != "svg") return fail("-o " + r.output + ": expected a .png or .svg file");
+  if (!sim::picture_format_ok(r.output)) return fail("-o " + r.output + ": expected a .png, .svg or .pdf file");
   const sim::RobotGeometry geometry;
   auto loaded = sim::load_world(r.world, geometry);
   if (!loaded) return fail(loaded.error().describe());
@@ -90,16 +104,10 @@ int run_render(const RenderRequest& r) {
     const sim::PanTiltReading reading = sim::measure_pan_tilt(model, pose, mount, direction);
     scene.pan_tilt = sim::pan_tilt_beams(pose, mount, direction, reading, params);
   }
-  if (r.title.empty()) {
-    char t[200];
-    std::snprintf(t, sizeof t, "%s: robot at (%.2f m, %.2f m, %.0f°)", world.name.c_str(), pose.x, pose.y, pose.theta / kDeg);
-    scene.title = t;
-  } else {
-    scene.title = r.title;
-  }
+  scene.title = r.title.empty() ? default_title(world.name, pose, scene) : r.title;
   sim::RenderOptions options;
   options.pixels_per_metre = r.scale;
-  const sim::Status s = ext == "svg" ? sim::render_svg(scene, options, r.output) : sim::render_png(scene, options, r.output);
+  const auto s = sim::render_file(scene, options, r.output);
   if (!s) return fail(s.error().describe());
   return 0;
 }

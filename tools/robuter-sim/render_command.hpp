@@ -12,9 +12,9 @@ struct RenderRequest {
   std::string pose;                    // "X,Y,THETA_DEG" (m, m, degrees); empty = the world's start
   bool ring = false;                   // draw the 24 ring beams with their ranges at the pose
   std::optional<double> pan_tilt_deg;  // draw the pan-tilt pair at this pan angle, degrees
-  std::string output;                  // .png or .svg
-  double scale = 60.0;                 // pixels (points) per metre
-  std::string title;                   // caption; empty = world name and pose
+  std::string output;                  // .png, .svg or .pdf
+  double scale = 0.0;                  // pixels (points) per metre; 0 = a 1000 px wide picture
+  std::string title;                   // title; empty = world, pose, date and the sonars' report
 };
 
 // Renders the request; 0 on success, else prints why on stderr and returns 1.
