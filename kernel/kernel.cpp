@@ -90,10 +90,23 @@ void Kernel::unwatch_fd(int fd) {
 
 void Kernel::trigger(Process* p) {
   for (std::size_t i = 0; i < count_; ++i) {
-    if (rows_[i].process == p && triggered_[i] < kMaxTriggersPerTick) {
+    if (rows_[i].process != p) continue;
+    if (triggered_[i] < kMaxTriggersPerTick) {
       pending_[i] = 1;
       any_pending_ = true;
+    } else {
+      deferred_[i] = 1;  // not lost: the next budget runs it first
     }
+  }
+}
+
+void Kernel::new_trigger_budget() {
+  triggered_.fill(0);
+  for (std::size_t i = 0; i < count_; ++i) {
+    if (!deferred_[i]) continue;
+    deferred_[i] = 0;
+    pending_[i] = 1;
+    any_pending_ = true;
   }
 }
 
@@ -147,7 +160,7 @@ void Kernel::serve_events_until(Nanos deadline) {
       Watch& w = watches_[poll_map_[s]];
       // Each event activation has its own trigger budget: what it triggers runs now, however
       // many triggered runs the last tick used.
-      triggered_.fill(0);
+      new_trigger_budget();
       for (std::size_t i = 0; i < count_; ++i) {
         if (rows_[i].process == w.process) { activate(i, true); break; }
       }
@@ -191,7 +204,7 @@ void Kernel::step() {
     late_events_ += static_cast<std::uint64_t>(behind);
   }
   log::set_tick(tick_);
-  triggered_.fill(0);
+  new_trigger_budget();
   for (std::size_t k = 0; k < count_; ++k) {
     run_triggered();
     const std::size_t i = order_[k];

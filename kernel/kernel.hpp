@@ -19,7 +19,8 @@ class Kernel {
   static constexpr std::size_t kMaxProcesses = 32;      // rows in the process table
   static constexpr std::size_t kMaxWatches = 16;        // descriptors that can wake a process
   static constexpr int kMaxEventRunsPerTick = 8;        // runs per tick of a descriptor that stays readable
-  static constexpr int kMaxTriggersPerTick = 2;         // bound on triggered activations per tick
+  static constexpr int kMaxTriggersPerTick = 3;         // bound on triggered activations per tick (a
+                                                        // producer's own run and its two triggered ones)
   static constexpr int kMinPriority = 0;                // priority range accepted in a row
   static constexpr int kMaxPriority = 99;
 
@@ -56,7 +57,8 @@ class Kernel {
   // Asks for one more activation of `p` before the current tick ends (after the process now
   // running): a consumer reacts to new data in the same tick instead of at its next period.
   // At most kMaxTriggersPerTick triggered runs per process per tick, and as many again after
-  // each descriptor activation between ticks.
+  // each descriptor activation between ticks; a trigger beyond the bound is not lost but runs
+  // first thing in the next tick (or the next activation between ticks).
   void trigger(Process* p);
 
   std::uint64_t tick() const { return tick_; }          // the tick being run (or next)
@@ -86,6 +88,9 @@ class Kernel {
   void activate(std::size_t i, bool from_event);
   // Runs the triggered processes, by priority, until none is pending.
   void run_triggered();
+  // A new trigger budget (a tick, an activation between ticks): the runs counted so far are
+  // forgotten and the triggers deferred beyond the last budget become pending.
+  void new_trigger_budget();
   // Serves descriptor events until `deadline` (or a stop request).
   void serve_events_until(Nanos deadline);
   // The first tick strictly after `t` at which row i is due.
@@ -105,6 +110,7 @@ class Kernel {
   std::array<std::uint8_t, kMaxProcesses> order_{};   // row indices by descending priority
   std::array<std::uint8_t, kMaxProcesses> pending_{}; // triggered activations wanted this tick
   std::array<std::uint8_t, kMaxProcesses> triggered_{};  // triggered activations run this tick
+  std::array<std::uint8_t, kMaxProcesses> deferred_{};   // triggers beyond the bound: run at the next budget
   bool any_pending_ = false;
   std::size_t count_ = 0;                             // rows in the table
   std::size_t started_ = 0;                           // rows whose init succeeded

@@ -182,7 +182,7 @@ void EmergencyModule::run(Kernel& k) {
   in.at_rest = at_rest(posture);
   in.ranges = &ranges_.peek();
   if (gate_.settings().envelope) {
-    envelope_.observe(in.tick, posture, *in.ranges);
+    envelope_.observe(in.tick, posture, *in.ranges, in.at_rest);
     in.envelope = &envelope_;
   }
   if (settings_.generation() > 0) {

@@ -25,6 +25,12 @@ inline Eigen::Vector2d to_world(const Pose2& pose, const Eigen::Vector2d& q) {
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   return pose.p + Eigen::Vector2d(c * q.x() - s * q.y(), s * q.x() + c * q.y());
 }
+// The odometry frame point p in the frame of a robot at `pose` (the inverse of to_world).
+inline Eigen::Vector2d to_body(const Pose2& pose, const Eigen::Vector2d& p) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const Eigen::Vector2d d = p - pose.p;
+  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+}
 // Where a robot at `pose` is after moving along the arc of (v, w) for `t` (same time unit).
 Pose2 advance(const Pose2& pose, double v, double w, double t);
 

@@ -39,12 +39,23 @@ EnvelopeSettings envelope_settings(const EmergencyConfig& cfg, const RobotConfig
   return e;
 }
 
+StartBlindSettings start_blind_settings(const RobotConfig& robot) {
+  StartBlindSettings s;
+  s.front = robot.axle_to_front_mm / 1000.0;
+  s.rear = (static_cast<double>(robot.length_mm) - robot.axle_to_front_mm) / 1000.0;
+  s.half_width = robot.width_mm / 2000.0;
+  s.near = robot::kRobuter.ring.blanking;
+  s.edge = grid_settings(EmergencyConfig{}).cell * 1.4142135623730951;
+  return s;
+}
+
 RingEnvelope::RingEnvelope(const EmergencyConfig& cfg, const RobotConfig& robot, double tick_s)
     : cfg_(cfg),
       robot_(robot),
       tick_s_(tick_s),
       grid_(grid_settings(cfg)),
-      env_(envelope_settings(cfg, robot, tick_s)) {}
+      env_(envelope_settings(cfg, robot, tick_s)),
+      start_(start_blind_settings(robot)) {}
 
 void RingEnvelope::set_tick(double tick_s) {
   tick_s_ = tick_s;
@@ -52,7 +63,7 @@ void RingEnvelope::set_tick(double tick_s) {
   env_.set_ages(e.free_age_ticks, e.near_age_ticks);
 }
 
-void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges) {
+void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest) {
   tick_ = tick;
   if (posture.tick != posture_tick_) {
     posture_tick_ = posture.tick;
@@ -62,6 +73,7 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
       // A new odometry frame (AC) or the first posture: nothing known so far is placed right.
       if (!first) ++resets_;
       grid_.reset();
+      start_.reset();
       reset_tick_ = posture.tick;
     }
   }
@@ -87,6 +99,7 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
     grid_.add_reading(read, to_world(at, robot::position(m)), at.theta + m.direction, ranges.mm[i] / 1000.0, no_echo,
                       contradicts);
   }
+  start_.observe(tick, now_, at_rest, ranges.scans, ranges.read_tick.data(), kSensors);
   if (tick != body_tick_) {
     body_tick_ = tick;
     const double front = robot_.axle_to_front_mm / 1000.0, rear = (robot_.length_mm - robot_.axle_to_front_mm) / 1000.0;
@@ -105,11 +118,11 @@ EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right, bool 
     return v;
   }
   const double l = left / 100.0, r = right / 100.0;
-  // A creep through the blind near field, and the longer life of its certificates, need a ring
-  // that is reading (a dead ring holds); the creep needs the bumpers armed too: nothing else
+  // A creep through blind space, and the longer life of the near field's certificates, need a
+  // ring that is reading (a dead ring holds); the creep needs the bumpers armed too: nothing else
   // senses there (seed 1631 crept into a box with them masked off).
   const bool alive = last_reading_ != 0 && tick_ - last_reading_ <= env_.settings().free_age_ticks;
-  v = env_.judge(grid_, now_, l, r, tick_, alive, bumpers);
+  v = env_.judge(grid_, now_, l, r, tick_, &start_, alive, bumpers);
   const Twist2 t = history_.velocity();
   const double speed = t.v / tick_s_, turn = t.w / tick_s_;
   const double half_base = 0.5 * robot_.wheel_base_mm / 1000.0;

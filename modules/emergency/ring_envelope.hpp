@@ -8,6 +8,7 @@
 #include "modules/emergency/envelope_judge.hpp"
 #include "modules/emergency/evidence_grid.hpp"
 #include "modules/emergency/pose_history.hpp"
+#include "modules/emergency/start_blind.hpp"
 #include "modules/emergency/swept_envelope.hpp"
 #include "modules/topics.hpp"
 
@@ -29,11 +30,13 @@ class RingEnvelope final : public EnvelopeJudge {
   void set_tick(double tick_s);
   // One activation at `tick`: the newest posture and ranges. Work: one grid certification per
   // new reading (≤ 24), one of the body per tick, at most one window move.
-  void observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges);
+  // `at_rest`: the robot stands still (the emergency module's rule).
+  void observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest);
   EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) override;
 
   const EvidenceGrid& grid() const { return grid_; }
   const Pose2& pose() const { return now_; }
+  const StartBlind& start() const { return start_; }
   std::uint32_t resets() const { return resets_; }
 
  private:
@@ -42,6 +45,7 @@ class RingEnvelope final : public EnvelopeJudge {
   double tick_s_;                        // kernel tick, s
   EvidenceGrid grid_;                    // the evidence
   SweptEnvelope env_;                    // the swept body
+  StartBlind start_;                     // where a creep may go: blind from the last start pose
   PoseHistory history_;                  // recent postures
   std::array<std::uint64_t, kSensors> seen_{};  // read tick of each sensor's last reading taken
   std::uint64_t posture_tick_ = ~0ull;   // tick of the last posture taken

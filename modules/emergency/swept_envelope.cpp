@@ -37,10 +37,10 @@ double SweptEnvelope::fraction_for(double tau, double w, double decel) const {
   return (-s_.reaction + std::sqrt(s_.reaction * s_.reaction + 2.0 * q * tau)) / q;
 }
 
-// A point under the body now is the body; within `near` of it a missing certificate is the blind
-// near field's; farther it is missing data.
+// A point under the body now is the body; a missing certificate is a creep's where no reading could
+// have looked, else missing data.
 SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau,
-                                          std::uint64_t tick, std::uint64_t near_age, Eigen::Vector2d* where) const {
+                                          const Look& look, Eigen::Vector2d* where) const {
   const Pose2 pose = advance(now, v, w, tau);
   const double c = std::cos(pose.theta), sn = std::sin(pose.theta);
   const double c0 = std::cos(now.theta), s0 = std::sin(now.theta);
@@ -54,16 +54,19 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
     const double ex = std::max({-s_.rear - lx, 0.0, lx - s_.front});
     const double ey = std::max({-s_.half_width - ly, 0.0, ly - s_.half_width});
     if (ex == 0.0 && ey == 0.0) continue;  // under the body now
-    const CellState st = g.state(q, tick, s_.free_age_ticks);
+    const CellState st = g.state(q, look.tick, s_.free_age_ticks);
     if (st == CellState::free) continue;
     const bool near = ex * ex + ey * ey <= s_.near * s_.near;
     // No reading can refresh a certificate inside the blind near field: an older one counts there.
-    if (st == CellState::stale && near && g.state(q, tick, near_age) == CellState::free) continue;
+    if (st == CellState::stale && near && g.state(q, look.tick, look.near_age) == CellState::free) continue;
     if (st == CellState::obstacle) {
       if (where) *where = o.q;
       return Meets::obstacle;
     }
-    const Meets m = near ? Meets::near_unknown : Meets::missing;
+    // Blind from the start pose: a creep's. Anything else not certified is missing data (the UD1000
+    // wall: when any unknown near field allowed a creep, a robot that came close to space its ring
+    // had not read crept into a wall 19 mm ahead).
+    const Meets m = look.blind != nullptr && look.blind->covers(q) ? Meets::near_unknown : Meets::missing;
     if (m > worst && where) *where = o.q;
     worst = std::max(worst, m);
   }
@@ -73,8 +76,7 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
 // Poses every `step` of the fastest outline point's travel; the first bad pose is refined by
 // bisection against the last good one.
 double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-                            std::uint64_t tick, std::uint64_t near_age, Meets& what, int& poses,
-                            Eigen::Vector2d* where) const {
+                            const Look& look, Meets& what, int& poses, Eigen::Vector2d* where) const {
   what = Meets::clear;
   const double speed = std::abs(v) + std::abs(w) * reach_;  // fastest outline point, m/s
   if (speed <= 1e-9 || tau_max <= 0.0) return tau_max + 1.0;
@@ -83,7 +85,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
   for (int i = 1; i <= n; ++i) {
     const double tau = tau_max * i / n;
     ++poses;
-    const Meets m = meets(g, now, v, w, tau, tick, near_age, where);
+    const Meets m = meets(g, now, v, w, tau, look, where);
     if (m < level) {
       good = tau;
       continue;
@@ -93,7 +95,7 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
     for (int r = 0; r < kRefine; ++r) {
       const double mid = 0.5 * (good + bad);
       ++poses;
-      const Meets mm = meets(g, now, v, w, mid, tick, near_age);
+      const Meets mm = meets(g, now, v, w, mid, look);
       if (mm < level) {
         good = mid;
       } else {
@@ -107,24 +109,24 @@ double SweptEnvelope::first(const EvidenceGrid& g, const Pose2& now, double v, d
 }
 
 EnvelopeVerdict SweptEnvelope::judge(const EvidenceGrid& g, const Pose2& now, double left, double right,
-                                     std::uint64_t tick, bool ring_alive, bool bumpers) const {
+                                     std::uint64_t tick, const StartBlind* blind, bool ring_alive, bool bumpers) const {
   EnvelopeVerdict out;
   const double wmax = std::max(std::abs(left), std::abs(right));
   if (wmax <= 0.0) return out;
   const double v = 0.5 * (left + right), w = (right - left) / s_.wheel_base;
   const double tau_max = horizon(1.0, wmax, s_.decel);
   // A dead ring refreshes nothing anywhere: the near field's longer life is for a ring that reads.
-  const std::uint64_t near_age = ring_alive ? s_.near_age_ticks : s_.free_age_ticks;
   const bool creep_ok = ring_alive && bumpers;
+  const Look look{tick, ring_alive ? s_.near_age_ticks : s_.free_age_ticks, creep_ok ? blind : nullptr};
   // Where the request first meets anything not certified free (near field included) …
   Meets what_near = Meets::clear;
-  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, tick, near_age, what_near, out.poses, &out.where);
+  const double tau_near = first(g, now, v, w, tau_max, Meets::near_unknown, look, what_near, out.poses, &out.where);
   if (tau_near > tau_max) return out;  // all clear: the whole request
   double k = fraction_for(tau_near, wmax, s_.decel);
   // … and where it first meets missing data or an obstacle (the near field allows a creep there).
   Meets what_hard = what_near;
   double tau_hard = tau_near;
-  if (what_near == Meets::near_unknown) tau_hard = first(g, now, v, w, tau_max, Meets::missing, tick, near_age, what_hard, out.poses);
+  if (what_near == Meets::near_unknown) tau_hard = first(g, now, v, w, tau_max, Meets::missing, look, what_hard, out.poses);
   const double k_hard = tau_hard > tau_max ? 1.0 : fraction_for(tau_hard, wmax, s_.decel);
   const double creep = creep_ok ? s_.creep : 0.0;
   if (what_near == Meets::near_unknown) k = std::max(k, std::min(k_hard, creep / wmax));
@@ -144,7 +146,7 @@ bool SweptEnvelope::braking_meets_obstacle(const EvidenceGrid& g, const Pose2& n
   const double tau = wmax / (2.0 * decel);
   Meets what = Meets::clear;
   int poses = 0;
-  first(g, now, v, w, tau, Meets::obstacle, tick, s_.near_age_ticks, what, poses);
+  first(g, now, v, w, tau, Meets::obstacle, Look{tick, s_.near_age_ticks, nullptr}, what, poses);
   return what == Meets::obstacle;
 }
 

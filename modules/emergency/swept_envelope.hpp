@@ -6,6 +6,7 @@
 
 #include "modules/emergency/evidence_grid.hpp"
 #include "modules/emergency/pose_history.hpp"
+#include "modules/emergency/start_blind.hpp"
 
 namespace robuter::safety {
 
@@ -50,11 +51,13 @@ class SweptEnvelope {
 
   // Precomputes the outline samples (the only allocation).
   explicit SweptEnvelope(const EnvelopeSettings& s);
-  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`. `ring_alive`
-  // false (the ring has read nothing within the age limit): the near field's certificates get no
-  // longer life and no creep is allowed; `bumpers` false (masked off): no creep either.
+  // The largest clear fraction of (left, right) m/s for a robot at `now` at `tick`. A creep goes
+  // only through space `blind` says no reading could have looked at from the start pose (null: no
+  // creep); `ring_alive` false (the ring has read nothing within the age limit): the near field's
+  // certificates get no longer life and no creep is allowed; `bumpers` false (masked off): no
+  // creep either.
   EnvelopeVerdict judge(const EvidenceGrid& g, const Pose2& now, double left, double right, std::uint64_t tick,
-                        bool ring_alive = true, bool bumpers = true) const;
+                        const StartBlind* blind, bool ring_alive = true, bool bumpers = true) const;
   // Whether braking now from the motion (v m/s, w rad/s) at `decel` m/s² sweeps obstacle evidence.
   bool braking_meets_obstacle(const EvidenceGrid& g, const Pose2& now, double v, double w, double decel,
                               std::uint64_t tick) const;
@@ -75,17 +78,22 @@ class SweptEnvelope {
     Eigen::Vector2d q;  // position, m
     Eigen::Vector2d n;  // outward normal of its face
   };
-  // What one pose meets, worst first.
+  // What one pose meets, worst first: `near_unknown` is space not certified that no reading could
+  // have looked at from the start pose (StartBlind), where a creep may go.
   enum class Meets : std::uint8_t { clear, near_unknown, missing, obstacle };
+  // How the grid is read for one request.
+  struct Look {
+    std::uint64_t tick = 0;             // now, ticks
+    std::uint64_t near_age = 0;         // how old a certificate of the blind near field may be, ticks
+    const StartBlind* blind = nullptr;  // where a creep may go (null: nowhere)
+  };
   // The worst the leading outline meets at the pose `tau` along the arc of (v, w) from `now`.
-  // `near_age`: how old a certificate of the blind near field may be, ticks.
-  Meets meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau, std::uint64_t tick,
-              std::uint64_t near_age, Eigen::Vector2d* where = nullptr) const;
+  Meets meets(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau, const Look& look,
+              Eigen::Vector2d* where = nullptr) const;
   // Scans the arc from 0 to tau_max; returns the (refined) first tau at which the pose meets at
   // least `level`, or a value above tau_max when none; `what` gets what it met there.
   double first(const EvidenceGrid& g, const Pose2& now, double v, double w, double tau_max, Meets level,
-               std::uint64_t tick, std::uint64_t near_age, Meets& what, int& poses,
-               Eigen::Vector2d* where = nullptr) const;
+               const Look& look, Meets& what, int& poses, Eigen::Vector2d* where = nullptr) const;
 
   EnvelopeSettings s_;
   std::vector<OutlinePoint> outline_;  // faces of the rectangles grown by 0, step, …, margin

@@ -1,6 +1,7 @@
 // Unit tests of the envelope: the evidence grid, the swept body and its cap, the gate's two stops.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "modules/emergency/evidence_grid.hpp"
@@ -109,7 +110,7 @@ TEST(SweptEnvelope, OpenSpaceGrantsAllAndTheHorizonInvertsExactly) {
   Scene sc;
   sc.all_free();
   SweptEnvelope env(sc.s);
-  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick);
+  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick, nullptr);
   EXPECT_DOUBLE_EQ(v.fraction, 1.0);
   EXPECT_FALSE(v.obstacle);
   for (double k : {0.1, 0.5, 0.9}) EXPECT_NEAR(env.fraction_for(env.horizon(k, 0.6, 1.0), 0.6, 1.0), k, 1e-12);
@@ -124,7 +125,7 @@ TEST(SweptEnvelope, AStraightApproachGetsAtLeastNinetyPercentOfTheAnalyticCap) {
     // A wall across the path d ahead of the front face, seen by a sensor on the face.
     for (double y = -0.6; y <= 0.6; y += 0.05) sc.g.add_reading(sc.tick, {0.695 - 1.2, y}, 0.0, 1.2 + d, false, true);
     SweptEnvelope env(sc.s);
-    const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick);
+    const EnvelopeVerdict v = env.judge(sc.g, sc.now, 1.0, 1.0, sc.tick, nullptr);
     const double free = d - sc.s.margin - 0.05;
     const double cap = free <= 0 ? 0.0 : sc.s.decel * (-sc.s.reaction + std::sqrt(sc.s.reaction * sc.s.reaction + 2 * free / sc.s.decel));
     SCOPED_TRACE(testing::Message() << "d " << d << " m: granted " << v.fraction << " m/s, cap " << cap);
@@ -139,27 +140,83 @@ TEST(SweptEnvelope, BackingAwayFromAWallAheadIsFreeDrivingIntoItIsAProtectiveSto
   sc.all_free();
   for (double y = -0.6; y <= 0.6; y += 0.05) sc.g.add_reading(sc.tick, {0.0, y}, 0.0, 0.72, false, true);  // 25 mm ahead
   SweptEnvelope env(sc.s);
-  const EnvelopeVerdict fwd = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  const EnvelopeVerdict fwd = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, nullptr);
   EXPECT_EQ(fwd.fraction, 0.0);
   EXPECT_TRUE(fwd.obstacle);
-  const EnvelopeVerdict back = env.judge(sc.g, sc.now, -0.3, -0.3, sc.tick);
+  const EnvelopeVerdict back = env.judge(sc.g, sc.now, -0.3, -0.3, sc.tick, nullptr);
   EXPECT_DOUBLE_EQ(back.fraction, 1.0);
-  EXPECT_FALSE(env.judge(sc.g, sc.now, -0.3, 0.3, sc.tick).fraction > 0.5) << "turning in place swings a front corner into it";
+  EXPECT_FALSE(env.judge(sc.g, sc.now, -0.3, 0.3, sc.tick, nullptr).fraction > 0.5) << "turning in place swings a front corner into it";
+}
+
+// A start pose: the robot stood at `at` while the ring made its full passes, every sensor read.
+StartBlind rested(const Pose2& at) {
+  StartBlind b{StartBlindSettings{}};
+  std::array<std::uint64_t, 24> read{};
+  b.observe(10, at, true, 0, read.data(), 24);
+  read.fill(20);
+  b.observe(30, at, true, 2, read.data(), 24);
+  return b;
 }
 
 TEST(SweptEnvelope, UnknownNearFieldAllowsACreepUnknownFarFieldNothing) {
   Scene sc;  // nothing seen at all
   SweptEnvelope env(sc.s);
   sc.g.certify_rectangle(sc.tick, sc.now.p, sc.now.theta, {-sc.s.rear, -sc.s.half_width}, {sc.s.front, sc.s.half_width});
-  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  const StartBlind start = rested(sc.now);
+  ASSERT_TRUE(start.valid());
+  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, &start);
   EXPECT_NEAR(v.fraction * 0.3, sc.s.creep, 1e-9) << "a creep through the blind near field";
   EXPECT_TRUE(v.missing);
   EXPECT_FALSE(v.obstacle);
+  // Without the bumpers, nothing senses there: a hold, not a creep.
+  const EnvelopeVerdict masked = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, &start, true, false);
+  EXPECT_EQ(masked.fraction, 0.0);
+  EXPECT_TRUE(masked.missing);
+  EXPECT_FALSE(masked.obstacle);
   // Obstacle evidence inside the near field: not even a creep.
   sc.g.add_reading(sc.tick, {0.0, 0.0}, 0.0, 0.71, false, true);
-  const EnvelopeVerdict w = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick);
+  const EnvelopeVerdict w = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, &start);
   EXPECT_EQ(w.fraction, 0.0);
   EXPECT_TRUE(w.obstacle);
+}
+
+// The UD1000 wall of the whole-firmware matrix, as a unit: a robot that moved into space its ring
+// could have seen but did not read (no start pose here: it came there moving) is held, not let
+// creep — when any unknown near field allowed a creep, it crept into an unseen wall 19 mm ahead.
+TEST(SweptEnvelope, UnseenSpaceReachedByMovingIsAHoldNotACreep) {
+  Scene sc;
+  SweptEnvelope env(sc.s);
+  sc.g.certify_rectangle(sc.tick, sc.now.p, sc.now.theta, {-sc.s.rear, -sc.s.half_width}, {sc.s.front, sc.s.half_width});
+  const EnvelopeVerdict v = env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, nullptr);
+  EXPECT_EQ(v.fraction, 0.0);
+  EXPECT_TRUE(v.missing);
+  EXPECT_FALSE(v.obstacle);
+  // A start pose 0.5 m back: the space now ahead of the face was in its front cones, not blind.
+  const StartBlind back = rested({{-0.5, 0.0}, 0.0});
+  EXPECT_FALSE(back.covers({0.75, 0.0})) << "in front of the face, seen from 0.5 m back";
+  EXPECT_EQ(env.judge(sc.g, sc.now, 0.3, 0.3, sc.tick, &back).fraction, 0.0);
+  // From here, at rest: blind (inside the blanking range), so a creep.
+  EXPECT_TRUE(rested(sc.now).covers({0.75, 0.0}));
+}
+
+// Which space is blind from a start pose: the near field, the gaps between the cones that read,
+// nothing in a cone that read, nothing beyond the gaps' reach; no start pose, nothing.
+TEST(StartBlind, NearFieldAndGapsBetweenTheConesThatRead) {
+  StartBlind none{StartBlindSettings{}};
+  EXPECT_FALSE(none.covers({0.75, 0.0}));
+  const StartBlind b = rested({});
+  EXPECT_TRUE(b.covers({0.80, 0.0}));   // 0.105 m ahead of the face: inside the blanking range
+  EXPECT_FALSE(b.covers({1.40, 0.0}));  // 0.7 m ahead on the axis: the front sensors' cones
+  EXPECT_FALSE(b.covers({3.0, 0.0}));   // beyond the gaps' reach
+  StartBlind moved = rested({});
+  std::array<std::uint64_t, 24> read{};
+  moved.observe(40, {{0.1, 0.0}, 0.0}, false, 2, read.data(), 24);  // moving: the start stays
+  EXPECT_TRUE(moved.valid());
+  StartBlind far = rested({});
+  far.observe(40, {{0.7, 0.0}, 0.0}, false, 2, read.data(), 24);  // … for the start's first 0.65 m
+  EXPECT_FALSE(far.valid());
+  moved.observe(50, {{0.2, 0.0}, 0.0}, true, 2, read.data(), 24);   // at rest again: a new one later
+  EXPECT_FALSE(moved.valid());
 }
 
 // A judge that answers what the test says.

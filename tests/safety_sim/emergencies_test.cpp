@@ -135,7 +135,8 @@ TEST(Emergencies, SilenceBeyondTheCommunicationLimitStopsWithCommLoss) {
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("AM 10 10"), "ack");
   const std::uint64_t last = fw.bb().link_status.reader().peek().last_message_tick;
-  ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 10; }, 100));
+  // A start from rest waits for two full ring passes (docs/SAFETY.md §13), well inside the limit.
+  ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 10; }, 200));
   std::uint64_t stopped = 0;
   ASSERT_TRUE(fw.run_until(
       [&] {

@@ -112,8 +112,9 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
   const std::string am = "AM " + std::to_string(speed) + " " + std::to_string(speed);
   const double t0 = fw.seconds();
   const std::uint32_t stops0 = fw.bb().emergency.reader().peek().protective_stops;
-  // Long enough for 4 m at a creep with a ring that reads a node every 10 s.
-  const int limit = 4000 * 100 / 5 + 20'000;
+  // Long enough for 4 m at a creep; with a node every 10 s (UD1000) the robot moves as certificates
+  // and start looks (two full passes at rest, 20 s) come: up to 80 simulated minutes.
+  const int limit = ud >= 1000 ? 600'000 : 4000 * 100 / 5 + 20'000;
   for (int t = 0; t < limit; ++t) {
     if (t % kResendTicks == 0) out.acked = fw.ask(am) == "ack" && out.acked;
     fw.step();

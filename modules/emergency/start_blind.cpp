@@ -1,0 +1,61 @@
+// The start pose's blind set: the near field and the gaps between the cones that read at rest.
+#include "modules/emergency/start_blind.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "robot/model_geometry.hpp"
+#include "robot/robot_model.hpp"
+
+namespace robuter::safety {
+
+void StartBlind::observe(std::uint64_t tick, const Pose2& now, bool at_rest, std::uint32_t scans,
+                         const std::uint64_t* read_tick, int sensors) {
+  if (!at_rest) {
+    resting_ = false;  // moving: the start pose, if any, stays for the start's first metres
+    if (valid_ && (now.p - start_.p).norm() > s_.travel) valid_ = false;
+    return;
+  }
+  if (!resting_) {
+    resting_ = true;
+    valid_ = false;  // a new rest: a new start pose once the ring has looked around it
+    rest_tick_ = tick;
+    rest_scans_ = scans;
+    return;
+  }
+  if (valid_ || scans - rest_scans_ < s_.scans) return;
+  fired_ = 0;
+  for (int i = 0; i < sensors && i < 32; ++i)
+    if (read_tick[i] > rest_tick_) fired_ |= 1u << i;
+  start_ = now;
+  valid_ = true;
+}
+
+void StartBlind::reset() {
+  resting_ = false;
+  valid_ = false;
+}
+
+bool StartBlind::covers(const Eigen::Vector2d& p) const {
+  if (!valid_) return false;
+  const Eigen::Vector2d l = to_body(start_, p);
+  const double ex = std::max({-s_.rear - l.x(), 0.0, l.x() - s_.front});
+  const double ey = std::max({-s_.half_width - l.y(), 0.0, l.y() - s_.half_width});
+  const double out = std::hypot(ex, ey);
+  if (out <= s_.near) return true;
+  if (out > s_.wedge_reach) return false;
+  const auto& ring = robot::kRobuter.ring;
+  for (int s = 1; s <= robot::kRingSensors; ++s) {
+    if (!(fired_ & (1u << (s - 1)))) continue;
+    const robot::SonarMount& m = ring.sensor(s).mount;
+    const Eigen::Vector2d v = l - robot::position(m);
+    const double r = v.norm();
+    if (r < ring.blanking + s_.edge) continue;
+    // Inside a cone that read, farther than a cell from its edges: it was certified or shadowed.
+    const double off = std::acos(std::clamp(v.dot(robot::axis(m)) / r, -1.0, 1.0));
+    if (off < ring.half_angle && r * std::sin(ring.half_angle - off) >= s_.edge) return false;
+  }
+  return true;
+}
+
+}  // namespace robuter::safety
