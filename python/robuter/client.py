@@ -118,11 +118,26 @@ class Emergency:
         mask, clock = _ints(f[3:5], reply)
         return cls(held != 0, latched != 0, f[2], mask, clock, tuple(f[5:]))
 
+    @property
+    def granted(self) -> Optional[int]:
+        """Share of the requested speeds granted now, % (``XE``'s sixth field; None if absent)."""
+        return int(self.extra[0]) if self.extra and self.extra[0].isdigit() else None
+
+    @property
+    def rule(self) -> Optional[str]:
+        """The obstacle rule: ``envelope`` (the default) or ``seed`` (None if absent)."""
+        return self.extra[1] if len(self.extra) > 1 else None
+
+    @property
+    def protective(self) -> bool:
+        """A protective stop is in force: stopped short of an obstacle, nothing latched, no ``XR``."""
+        return len(self.extra) > 2 and self.extra[2] == "1"
+
 
 @dataclasses.dataclass(frozen=True)
 class Status:
     """A status stream line (``XS``): ``@ <x> <y> <theta> <servo> <left> <right> <emergency>
-    <clock>``; ``emergency`` is 0 clear, +1 motion held, +2 latched."""
+    <clock>``; ``emergency`` is 0 clear, +1 motion held, +2 latched, +4 protective stop."""
     x: int
     y: int
     theta: int

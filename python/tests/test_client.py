@@ -28,6 +28,10 @@ def test_emergency_keeps_the_fields_after_the_clock():
     e = Emergency.parse("E 1 0 none 3 55 later-field 42")
     assert (e.held, e.latched, e.cause, e.mask, e.clock) == (True, False, "none", 3, 55)
     assert e.extra == ("later-field", "42")
+    p = Emergency.parse("E 0 0 none 7 18530 0 envelope 1")
+    assert (p.granted, p.rule, p.protective) == (0, "envelope", True)
+    assert not Emergency.parse("E 0 0 none 7 18234 42 envelope 0").protective
+    assert Emergency.parse("E 0 1 obstacle 7 18234").granted is None
 
 
 def test_errors_carry_code_and_word():
