@@ -1,5 +1,6 @@
 // robuter_doors_bench: N seeded starts per world through AG + Ad on the simulated firmware;
-// success rate, crossing times, and the reason of every failure (tools/bench/60-doors.sh).
+// success rate, crossing times, and the reason of every failure (tools/bench/60-doors.sh);
+// ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule.
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     for (int seed = 1; seed <= starts; ++seed) {
       CrossingSetup s = seeded_start(w, static_cast<std::uint64_t>(seed));
       s.sonar_noise = s.odometry_noise = noise;
+      // The obstacle rule to compare (docs/SAFETY.md §13): ROBUTER_EMERGENCY_RULE=seed|envelope.
+      if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) s.config.emergency.rule = rule;
       const CrossingResult r = run_crossing(s);
       const bool success = r.doors == "crossed" && !r.contact && r.body_through;
       contacts += r.contact ? 1 : 0;
