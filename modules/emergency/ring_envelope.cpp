@@ -39,13 +39,14 @@ EnvelopeSettings envelope_settings(const EmergencyConfig& cfg, const RobotConfig
   return e;
 }
 
-StartBlindSettings start_blind_settings(const RobotConfig& robot) {
+// The body and the near field are the envelope's; a cone's edge tolerance is a cell's diagonal.
+StartBlindSettings start_blind_settings(const EnvelopeSettings& e) {
   StartBlindSettings s;
-  s.front = robot.axle_to_front_mm / 1000.0;
-  s.rear = (static_cast<double>(robot.length_mm) - robot.axle_to_front_mm) / 1000.0;
-  s.half_width = robot.width_mm / 2000.0;
-  s.near = robot::kRobuter.ring.blanking;
-  s.edge = grid_settings(EmergencyConfig{}).cell * 1.4142135623730951;
+  s.front = e.front;
+  s.rear = e.rear;
+  s.half_width = e.half_width;
+  s.near = e.near;
+  s.edge = e.step * 1.4142135623730951;
   return s;
 }
 
@@ -55,7 +56,7 @@ RingEnvelope::RingEnvelope(const EmergencyConfig& cfg, const RobotConfig& robot,
       tick_s_(tick_s),
       grid_(grid_settings(cfg)),
       env_(envelope_settings(cfg, robot, tick_s)),
-      start_(start_blind_settings(robot)) {}
+      start_(start_blind_settings(env_.settings())) {}
 
 void RingEnvelope::set_tick(double tick_s) {
   tick_s_ = tick_s;

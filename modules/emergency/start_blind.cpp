@@ -49,11 +49,12 @@ bool StartBlind::covers(const Eigen::Vector2d& p) const {
     if (!(fired_ & (1u << (s - 1)))) continue;
     const robot::SonarMount& m = ring.sensor(s).mount;
     const Eigen::Vector2d v = l - robot::position(m);
-    const double r = v.norm();
-    if (r < ring.blanking + s_.edge) continue;
-    // Inside a cone that read, farther than a cell from its edges: it was certified or shadowed.
-    const double off = std::acos(std::clamp(v.dot(robot::axis(m)) / r, -1.0, 1.0));
-    if (off < ring.half_angle && r * std::sin(ring.half_angle - off) >= s_.edge) return false;
+    if (v.squaredNorm() < (ring.blanking + s_.edge) * (ring.blanking + s_.edge)) continue;
+    // Inside a cone that read, farther than a cell from its edges (r·sin(half − off), written
+    // with the axis components): it was certified or shadowed.
+    const Eigen::Vector2d a = robot::axis(m);
+    const double along = v.dot(a), across = std::abs(a.x() * v.y() - a.y() * v.x());
+    if (std::sin(ring.half_angle) * along - std::cos(ring.half_angle) * across >= s_.edge) return false;
   }
   return true;
 }
