@@ -13,6 +13,7 @@
 #include "tests/doors_sim/crossing_picture.hpp"
 #include "tests/doors_sim/crossing_run.hpp"
 #include "tests/support/layout_check.hpp"
+#include "tests/support/sample.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace robuter::test {
@@ -39,13 +40,9 @@ void expect_crossed(const CrossingSetup& s, CrossingResult* out = nullptr) {
 }
 
 // The 20 seeded starts per door width, one test each (ctest runs them in parallel). The
-// sanitizer build, 10× slower, runs the first 4 of each: it looks for memory and UB errors on
+// sanitizer build, 10× slower, runs the first 2 of each: it looks for memory and UB errors on
 // the same paths, the success figures come from the normal build and from make bench (100 each).
-#ifdef ROBUTER_SANITIZE
-constexpr int kSeededStarts = 4;
-#else
-constexpr int kSeededStarts = 20;
-#endif
+constexpr int kSeededStarts = sample(20, 2);
 
 class SeededStart : public ::testing::TestWithParam<int> {};
 

@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "tests/support/sample.hpp"
 #include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
@@ -85,9 +86,7 @@ void check_laps(std::uint32_t laps, bool noise, std::uint64_t seed, double max_m
 // (the calibration resets it), and the module then stops and says so (XD: finished).
 TEST(Demo, FiveLapsWithOdometryNoiseEndOnTheRecalibrationPoint) {
   check_laps(5, true, 7, 120.0, 5.0);
-#if !defined(ROBUTER_SANITIZE)  // under the sanitizers one seed is the sample (≈ 270 s alone)
-  check_laps(5, true, 11, 120.0, 5.0);
-#endif
+  if (!test::kSanitized) check_laps(5, true, 11, 120.0, 5.0);  // under the sanitizers one seed is the sample
 }
 
 TEST(Demo, LapsWithExactOdometry) { check_laps(2, false, 1, 40.0, 2.0); }

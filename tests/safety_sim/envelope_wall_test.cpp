@@ -10,6 +10,7 @@
 
 #include "modules/emergency/emergency.hpp"
 #include "tests/safety_sim/support.hpp"
+#include "tests/support/sample.hpp"
 
 namespace robuter::test::safety_sim {
 namespace {
@@ -143,12 +144,6 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
   }
   return out;
 }
-
-#if defined(ROBUTER_SANITIZE)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
 
 // Acceptance: 10, 30, 60, 100 cm/s × UD 3, 10, 35, 100, 1000 × Uu 0/1 — every setting acked, no
 // contact, clearance at rest between the margin and margin + stopping distance + 100 mm, the

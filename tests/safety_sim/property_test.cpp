@@ -17,6 +17,7 @@
 #include "modules/emergency/emergency.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
 #include "tests/safety_sim/support.hpp"
+#include "tests/support/sample.hpp"
 
 namespace robuter::test::safety_sim {
 namespace {
@@ -27,11 +28,7 @@ constexpr int kShards = 4;  // the sequences are split over this many tests (cte
 // ten times slower); ROBUTER_SAFETY_SIM_SEQUENCES overrides (longer soak runs).
 int total_sequences() {
   if (const char* env = std::getenv("ROBUTER_SAFETY_SIM_SEQUENCES")) return std::max(kShards, std::atoi(env));
-#if defined(ROBUTER_SANITIZE)
-  return 100;  // the envelope's grid work makes a sequence ~40× slower under ASan: 200 took 20 min of CPU
-#else
-  return 2000;
-#endif
+  return sample(2000, 24);  // under the sanitizers a sequence costs ~40× more: 200 took 20 min of CPU
 }
 
 // Debugging a failing seed: ROBUTER_SAFETY_SIM_SEED=n runs only that sequence (in shard 0) and

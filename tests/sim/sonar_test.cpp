@@ -8,6 +8,7 @@
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world_io.hpp"
 #include "tests/sim/sim_test_util.hpp"
+#include "tests/support/sample.hpp"
 
 namespace robuter::sim {
 namespace {
@@ -323,7 +324,8 @@ TEST(Sonar, FastTracerAgreesWithExhaustiveSearch) {
   SonarModel model(w, SonarParams{});
   Rng rng(2024);
   int echoes = 0;
-  for (int i = 0; i < 600; ++i) {
+  const int poses = test::sample(600, 120);  // the brute force is slow under the sanitizers
+  for (int i = 0; i < poses; ++i) {
     const Vec2 o(rng.uniform(0.1, 7.9), rng.uniform(0.1, 5.9));
     const double dir = rng.uniform(-kPi, kPi);
     if (w.obstacle_containing(o) >= 0) continue;
@@ -334,7 +336,7 @@ TEST(Sonar, FastTracerAgreesWithExhaustiveSearch) {
     if (fast > 0.0) ++echoes;
     EXPECT_NEAR(fast, slow, 2e-3) << "origin " << o.transpose() << " direction " << dir;
   }
-  EXPECT_GT(echoes, 350);
+  EXPECT_GT(echoes, poses * 350 / 600);
 }
 
 }  // namespace
