@@ -24,8 +24,10 @@ class PictureCaches : public ::testing::Environment {
 const auto* const kPictureCaches = ::testing::AddGlobalTestEnvironment(new PictureCaches);
 
 // The map covers the lab with half a metre to spare; odometry is set to the world's frame.
+// ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule (the comparison of docs/SAFETY.md §13).
 Config lab_config() {
   Config cfg;
+  if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
   cfg.planner.map_origin_x_mm = -500;
   cfg.planner.map_origin_y_mm = -500;
   cfg.planner.map_width_mm = 19'000;

@@ -25,12 +25,12 @@ Config door_config() {
 // protective stop pauses it and it goes on once its envelope is clear; nothing trips.
 // Quarantined (run with --gtest_also_run_disabled_tests): measured, the planner reports
 // `unreachable` after 40 s without crossing — no trip, no protective stop, no contact, closest
-// 418 mm — and the same with the seed's rule (ROBUTER_SAFETY_SIM_RULE=seed: unreachable after
+// 418 mm — and the same with the seed's rule (ROBUTER_EMERGENCY_RULE=seed: unreachable after
 // 33 s, closest 415 mm): the planner without a prior map does not find the door in this world;
 // the envelope holds nothing it needs (issue #16's a-priori map; docs/SAFETY.md §13).
 TEST(EnvelopeDoor, DISABLED_XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArrivesWithoutATrip) {
   Config dc = door_config();
-  if (const char* r = std::getenv("ROBUTER_SAFETY_SIM_RULE")) dc.emergency.rule = r;
+  if (const char* r = std::getenv("ROBUTER_EMERGENCY_RULE")) dc.emergency.rule = r;
   SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/default.toml", dc);
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;

@@ -73,9 +73,9 @@ std::string random_world(sim::Rng& rng) {
 }
 
 // The obstacle rule under test: the envelope (default) or, for the comparison figures of
-// docs/SAFETY.md, the seed's (ROBUTER_SAFETY_SIM_RULE=seed).
+// docs/SAFETY.md, the seed's (ROBUTER_EMERGENCY_RULE=seed).
 std::string rule_under_test() {
-  const char* env = std::getenv("ROBUTER_SAFETY_SIM_RULE");
+  const char* env = std::getenv("ROBUTER_EMERGENCY_RULE");
   if (env && (std::string(env) == "envelope" || std::string(env) == "seed")) return env;
   return Config{}.emergency.rule;
 }
@@ -448,7 +448,7 @@ class RandomSequences : public testing::TestWithParam<int> {};
 // trigger bound waited for the executor's next period: this test found both); no automatic mode
 // drives after an operator's command; nothing resumes by itself; and issue #13's criterion, no
 // contact while the ultrasonic detection is on. Runs the default obstacle rule (the envelope;
-// ROBUTER_SAFETY_SIM_RULE=seed for the seed's, which fails the contact criterion: docs/SAFETY.md
+// ROBUTER_EMERGENCY_RULE=seed for the seed's, which fails the contact criterion: docs/SAFETY.md
 // §12 lists its seeds).
 TEST_P(RandomSequences, NoContactWhileTheSonarWatchesNoSpeedWhileLatched) {
   const Totals tot = run_shard(GetParam(), true);

@@ -324,7 +324,7 @@ TEST(Sonar, FastTracerAgreesWithExhaustiveSearch) {
   SonarModel model(w, SonarParams{});
   Rng rng(2024);
   int echoes = 0;
-  const int poses = test::sample(600, 120);  // the brute force is slow under the sanitizers
+  const int poses = robuter::test::sample(600, 120);  // the brute force is slow under the sanitizers
   for (int i = 0; i < poses; ++i) {
     const Vec2 o(rng.uniform(0.1, 7.9), rng.uniform(0.1, 5.9));
     const double dir = rng.uniform(-kPi, kPi);
