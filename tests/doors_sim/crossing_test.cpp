@@ -40,9 +40,9 @@ void expect_crossed(const CrossingSetup& s, CrossingResult* out = nullptr) {
 }
 
 // The 20 seeded starts per door width, one test each (ctest runs them in parallel). The
-// sanitizer build, 10× slower, runs the first 2 of each: it looks for memory and UB errors on
+// sanitizer build, 10× slower, runs the first 4 of each: it looks for memory and UB errors on
 // the same paths, the success figures come from the normal build and from make bench (100 each).
-constexpr int kSeededStarts = sample(20, 2);
+constexpr int kSeededStarts = sample(20, 4);
 
 class SeededStart : public ::testing::TestWithParam<int> {};
 
