@@ -12,7 +12,7 @@
 #include "hal/linux/can/can_backend.hpp"
 #include "hal/linux/can/loopback_bus.hpp"
 #include "hal/linux/can/sim_nodes.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test {
 namespace {

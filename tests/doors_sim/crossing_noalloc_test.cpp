@@ -3,8 +3,8 @@
 // demonstration course (calibration included), with the allocation counter armed.
 #include <gtest/gtest.h>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -14,8 +14,8 @@
 #include "hal/sim/rng.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/emergency/emergency.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/doors_sim/crossing_picture.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter::test {
 

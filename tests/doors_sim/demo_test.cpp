@@ -12,8 +12,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/sample.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -2,8 +2,8 @@
 // 10,000 steady-state ticks while a client talks to it.
 #include <gtest/gtest.h>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "hal/link/pty_link.hpp"
 #include "hal/sitl/sim_stepper.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/hal_linux/fake_device.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

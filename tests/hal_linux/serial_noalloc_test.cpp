@@ -7,9 +7,9 @@
 #include <memory>
 #include <thread>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/hal_linux/fake_device.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

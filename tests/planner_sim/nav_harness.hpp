@@ -5,8 +5,8 @@
 #include <string>
 #include <string>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "modules/planner/planner_module.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter::test {
 

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <string>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "hal/sitl/byte_pipe.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cstdlib>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test::safety_sim {
 

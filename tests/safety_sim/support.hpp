@@ -9,7 +9,7 @@
 #include "hal/sim/footprint.hpp"
 #include "hal/sim/world.hpp"
 #include "kernel/config.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test::safety_sim {
 

@@ -13,7 +13,7 @@
 
 #include "hal/sitl/sim_robot.hpp"
 #include "kernel/config.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test {
 namespace {
