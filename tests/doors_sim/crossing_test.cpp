@@ -10,11 +10,11 @@
 #include <string>
 
 #include "hal/sim/render.hpp"
-#include "tests/doors_sim/crossing_picture.hpp"
-#include "tests/doors_sim/crossing_run.hpp"
 #include "tests/support/layout_check.hpp"
 #include "tests/support/sample.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 namespace robuter::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/doors_sim/crossing_run.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 int main(int argc, char** argv) {
   using namespace robuter::test;

@@ -1,5 +1,5 @@
 // The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook) and named in its legend.
-#include "tests/doors_sim/crossing_picture.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
 
 #include <cairo.h>
 

@@ -1,5 +1,5 @@
 // The run: temporary world with the start moved, the firmware with the emulated pan-tilt, AG, Ad.
-#include "tests/doors_sim/crossing_run.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 #include <unistd.h>
 
@@ -15,7 +15,7 @@
 #include "modules/doors/doors_module.hpp"
 #include "modules/emergency/emergency.hpp"
 #include "modules/firmware/sim_firmware.hpp"
-#include "tests/doors_sim/crossing_picture.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
 
 namespace robuter::test {
 
