@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The harness: temporary pty, firmware on a virtual clock, line-level client.
 #include "modules/firmware/sim_firmware.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware on the simulated robot, on a virtual clock, with a client on a real pty —
 // tests and robuter-doors-run step time and talk to robuterd exactly as an operator would.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware on the CAN backends over a loopback bus with simulated drives and sonar
 // nodes, on the virtual clock: move, then heartbeat loss, drive fault, error-passive and bus-off
 // each end in an emergency whose cause XE shows; recovery after a drive fault; without a pan-tilt

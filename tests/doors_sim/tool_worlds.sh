@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuter-doors-run's worlds: a name found in --worlds-dir; a name found in an installed
 # prefix's share/robuterd/worlds beside its bin/ (the tool copied into a temporary prefix,
 # with a world that exists only there); an unknown world refused with exit status 2.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the whole firmware (simulator, link, ring, emergency, executor) allocates nothing in
 // 10,000 steady-state ticks while a client talks to it.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware on the simulated robot: AX, motion on the simulated robot.
 #include <gtest/gtest.h>
 

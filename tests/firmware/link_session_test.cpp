@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Command-link sessions and the stop byte's guarantee (issue #14): the whole firmware on a pty.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance (issue #8): a serial device removed and restored under a running robuterd — a pty
 // that disappears and comes back stands in for it — and the link resumes without a restart;
 // the same for the pan-tilt unit's port. The whole firmware on the simulated robot.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the serial link allocates nothing on the periodic path: lines exchanged over a serial
 // device, the device lost and found again, more lines — all inside the counted region.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test support: run a navigation of the whole firmware and record what happened on the way.
 #pragma once
 

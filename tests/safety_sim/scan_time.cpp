@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Full-scan time of a stopped robot over the link: UT all ones, UD3, Ut33, then USS and USN.
 #include "tests/safety_sim/scan_time.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared helpers of the whole-firmware safety acceptance tests: worlds, replies, geometry, monitors.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated robot's own parameters ([sim] in the configuration) against what the firmware
 // believes: a wheel base 2 % off, a different speed of sound, a mounting error, broken tables.
 #include <gtest/gtest.h>

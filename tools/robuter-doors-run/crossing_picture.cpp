@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook) and named in its legend.
 #include "tools/robuter-doors-run/crossing_picture.hpp"
 

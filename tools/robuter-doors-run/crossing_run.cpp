@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The run: temporary world with the start moved, the firmware with the emulated pan-tilt, AG, Ad.
 #include "tools/robuter-doors-run/crossing_run.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-doors-run: one door crossing (AG then Ad) on the simulated firmware from a seeded or a
 // given start; prints how it ended and can draw it (trail and pan-tilt scans) — for looking into
 // one start of the bench, and for the picture in docs/DOORS.md.

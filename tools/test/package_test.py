@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Installs the robuterd .deb, checks its files, and starts robuterd.service's command as systemd would."""
 # Usage (as root): tools/test/package_test.py build-deb/robuterd_<version>_<arch>.deb
 #
