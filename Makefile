@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuterd — top-level entry points; CMake and ctest do the work underneath.
 BUILD    ?= build
 SAN_BUILD ?= build-san

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuter_add_subfolders(): adds every direct sub-folder that has its own CMakeLists.txt, so a
 # new part of the project is one new folder (the parent lists are never edited).
 function(robuter_add_subfolders)

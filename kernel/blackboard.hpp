@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Blackboard topics: one struct per topic, a single writer enforced by the types, readers
 // that tell new data by a generation counter (PX4 uORB's updated()/copy(), with the owner
 // made a compile-time fact instead of a convention).

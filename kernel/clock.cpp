@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Real, virtual and scaled clocks behind the kernel's Clock interface.
 #include "kernel/clock.hpp"
 

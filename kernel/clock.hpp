@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Time sources of the kernel: a real monotonic clock and a virtual clock that tests step.
 #pragma once
 

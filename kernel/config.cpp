@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reads the configuration with toml++ and checks every key against the schema.
 #include "kernel/config.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robot's configuration: one TOML file, defaults equal to the seed's constants.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The checks before reading a given file: its type and size from the open descriptor (no race with a swap).
 #include "kernel/input_file.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a file robuterd was given (configuration, world, map): a regular file of bounded size, or a reason.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The kernel's table validation, lifecycle and tick loop.
 #include "kernel/kernel.hpp"
 

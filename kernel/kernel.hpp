@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cooperative periodic-process kernel: a validated table of processes run on a fixed tick.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The log ring (single producer: the kernel thread) and its drain thread.
 #include "kernel/log.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Levelled log stamped with the kernel tick; the periodic path only formats into a fixed ring.
 #pragma once
 

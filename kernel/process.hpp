@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A periodic process of the kernel and the row that schedules it.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SCHED_FIFO and mlockall, with plain-language messages where the system says no.
 #include "kernel/realtime.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Optional real-time set-up of the firmware process: SCHED_FIFO and locked memory.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Signal handlers: stop flags, user-signal bits, and the async-signal-safe fatal path.
 #include "kernel/signals.hpp"
 

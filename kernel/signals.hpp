@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuterd's signal policy: clean stops, ignored signals, and the emergency stop on a fatal signal.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The configuration's [sim] tables, kept as parsed for the simulated robot (hal/sitl reads them).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lateness histogram arithmetic.
 #include "kernel/stats.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-process execution statistics and the tick lateness histogram.
 #pragma once
 

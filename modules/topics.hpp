@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every blackboard topic of the firmware: one small struct each, with its owner module.
 // docs/ARCHITECTURE.md has the table of writers and readers; keep the two in step.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing a page as PNG (image surface), SVG or PDF (vector surfaces) with cairo.
 #include "picture/file.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A page's file: a PNG, SVG or PDF surface by the path's extension, drawn by a callback, written or refused.
 #pragma once
 

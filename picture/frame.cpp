@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sizing the page around the world box and the world-to-page transform.
 #include "picture/frame.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the world goes on the page: the plot area (metres, y up) between the title, the axes and the legend.
 #pragma once
 

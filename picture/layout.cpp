@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rectangle tests and look-ups over the items a picture laid out.
 #include "picture/layout.hpp"
 

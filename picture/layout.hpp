@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a picture laid out: every title, legend entry, scale bar, axis label and text label with its box.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gathering the inks a picture used and drawing their keys in the column beside the plot.
 #include "picture/legend.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The legend: one entry per colour and kind of line a picture used, gathered while it draws.
 #pragma once
 

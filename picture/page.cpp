@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Title, axes, scale bar and collision-free labels, each recorded in the Layout it returns through.
 #include "picture/page.hpp"
 

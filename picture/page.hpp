@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The words around and on a plot: title, axis ticks in metres, scale bar, and labels nudged clear of each other.
 #pragma once
 

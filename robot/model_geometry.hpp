@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robot model's geometry as Eigen vectors: sensor positions and directions, body corners.
 #pragma once
 

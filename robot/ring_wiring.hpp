@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ultrasonic ring's counts and node wiring: 24 sensors on 6 nodes of 4 (seed 002, us.c).
 // Array sizes and wire formats depend on these, so they are compile-time and Eigen-free.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Robuter as every part of the firmware and the simulator sees it: body, wheels, ultrasonic
 // ring (sensors, cones, node wiring) and pan-tilt mount — the one place these numbers are stated.
 // Plain numbers (no Eigen) so that the configuration's defaults can name them; the geometry on

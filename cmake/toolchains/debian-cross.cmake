@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Shared part of the Debian cross toolchain files: compilers, multiarch search paths, pkg-config, qemu-user.
 # The including file sets ROBUTER_CROSS_TRIPLET (GNU triplet) and ROBUTER_CROSS_PROCESSOR (uname -m),
 # ROBUTER_CROSS_QEMU (the qemu-user program's suffix: aarch64, arm).

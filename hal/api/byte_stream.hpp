@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // HAL: a byte stream (command link or pan-tilt port): non-blocking, with a descriptor to wait on.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // HAL: generic digital inputs (switches, contacts) read as one bit mask.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // HAL: the differential drive — servo (brake) power, wheel speed commands, odometry.
 #pragma once
 

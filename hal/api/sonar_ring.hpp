@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // HAL: the ultrasonic ring — nodes of four sensors fired single-shot, ranges read back.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Non-blocking read and write with hang-up detection, shared by the descriptor-based links.
 #include "hal/link/fd_stream.hpp"
 

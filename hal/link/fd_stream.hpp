@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A ByteStream over a non-blocking descriptor pair: the common part of pty, serial and stdio links.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pty creation in raw mode, the client's symbolic link and its lock, client sessions (inotify).
 #include "hal/link/pty_link.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A pseudo-terminal the server creates; PATH becomes a symbolic link to its slave side.
 #pragma once
 

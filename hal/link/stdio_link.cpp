@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Standard input/output made non-blocking.
 #include "hal/link/stdio_link.hpp"
 

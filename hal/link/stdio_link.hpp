@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Standard input and output as a command link (scripts, pipes, a terminal).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GPIO v2 request building, value and edge-event decoding, pulse latching.
 #include "hal/linux/gpio_decode.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pure encoding and decoding of the Linux GPIO v2 uAPI structures (no device needed).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Line request on /dev/gpiochipN, non-blocking event drain and level read.
 #include "hal/linux/gpio_lines.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bumpers and digital inputs on a Linux GPIO chip (character device, v2 uAPI, edge events).
 #pragma once
 

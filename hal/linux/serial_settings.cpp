@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parsing of the serial configuration words and the termios bits they stand for.
 #include "hal/linux/serial_settings.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Serial line settings (rate, parity, stop bits, flow control) and their termios encoding.
 #pragma once
 

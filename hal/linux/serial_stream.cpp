@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Serial device I/O on the periodic path; open, configure, watch and close on a helper thread.
 #include "hal/linux/serial_stream.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A serial device as a ByteStream that survives the device going away and coming back.
 #pragma once
 

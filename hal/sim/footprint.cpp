@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rectangle-versus-edges contact: each nearby edge is moved into the robot frame and clipped.
 #include "hal/sim/footprint.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Robuter's rectangular footprint and its contact test against the world.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planar geometry: exact arcs, Liang-Barsky clipping, segment intersection, polygon tests.
 #include "hal/sim/geometry.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planar geometry the simulator needs: exact unicycle arcs, segment and box tests, polygons.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cairo renderer: the scene's layers on the plot, then its labels, title, axes, scale bar and legend.
 #include "hal/sim/render.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures of the simulated world with cairo: obstacles, doors, robot and trail, sonar beams and
 // pan-tilt rays, with title, axes, scale bar and legend, to PNG, SVG or PDF through one renderer.
 #pragma once

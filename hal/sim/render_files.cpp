@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The picture's page (world area, scale, size), its files (PNG, SVG, PDF) and the beams to draw.
 #include <limits>
 

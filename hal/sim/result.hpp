@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Error values for the simulator's loaders: a message naming the file and line, never a throw.
 #pragma once
 

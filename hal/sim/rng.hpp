@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A small seeded random generator (xoshiro256**) whose sequence is the same on every platform.
 #pragma once
 

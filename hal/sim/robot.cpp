@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Differential-drive motion: synchronised acceleration ramps, exact arcs per sub-step, contact
 // search by bisection, and encoder odometry with optional seeded scale, noise and slip errors.
 #include "hal/sim/robot.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated Robuter: differential drive with acceleration limits, exact arc integration,
 // contact with the world (bumper, no tunnelling), and odometry with optional seeded errors.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Builds the uniform edge grid in two passes (count, then fill) into compressed rows.
 #include "hal/sim/segment_grid.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A coarse uniform grid over the world's obstacle edges, so queries touch only nearby edges.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TOML overrides of the simulator's configuration, strict like the world loader.
 #include "hal/sim/sim_config.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simulator configuration from TOML: robot geometry and limits, odometry errors, sonar
 // behaviour, and overrides of rows of the ring layout table and of the pan-tilt mount.
 #pragma once

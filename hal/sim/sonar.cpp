@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sonar cone tracing: each nearby edge is clipped to the beam wedge, its nearest in-cone point is
 // the echo candidate, and the nearest candidate with acceptable incidence that no grazing edge
 // hides is the echo.

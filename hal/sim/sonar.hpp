@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ultrasonic range model: a beam cone, nearest specular echo, grazing-incidence misses,
 // time-out range, blanking, and optional seeded noise, drop-outs and spurious short echoes.
 #pragma once

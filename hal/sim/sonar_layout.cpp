@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulator's view of the ring and pan-tilt mounts (robot frame: origin at the wheel-axle
 // midpoint, x forward, y left), and the pan-tilt pair's firing.
 #include "hal/sim/sonar_layout.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated ring's and pan-tilt's mounts, by default the robot model's (robot/robot_model.hpp,
 // docs/ROBOT.md), and the trajectory radius through a sensor.
 #pragma once

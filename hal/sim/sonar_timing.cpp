@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ring firing schedule: nodes in order, a delay before each, results after the time-out.
 #include "hal/sim/sonar_timing.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // When ring nodes fire and when their results are ready, for a HAL that models firing timing.
 #pragma once
 

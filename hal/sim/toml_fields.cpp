@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Strict TOML table reader: typed values, file:line errors, unknown-key rejection.
 #include "hal/sim/toml_fields.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Strict reading of TOML tables for the simulator's files: typed getters that report the file
 // and line of a bad value, and rejection of keys nobody asked for. Internal to robuter_sim.
 #pragma once

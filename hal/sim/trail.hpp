@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A fixed-capacity record of where the robot has been, for pictures (oldest points drop off).
 #pragma once
 

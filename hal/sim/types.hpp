@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Basic value types of the simulated world: planar vectors, poses, angles and unit conversions.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // World finalisation: polygon edges, bounds and the spatial grid.
 #include "hal/sim/world.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated world: polygonal obstacles in metres, doors, named markers, start and goal.
 #pragma once
 

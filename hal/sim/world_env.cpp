@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 000's environment-file loader: strict line structure, every error with its line.
 #include <algorithm>
 #include <cctype>

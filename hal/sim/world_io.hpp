@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Loading worlds: seed 000's environment files (.env) and the project's TOML worlds (.toml).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The project's TOML world loader: walls with doors, boxes, rectangles, closed polygons, start,
 // goal and markers, in metres, centimetres or millimetres; every error with file and line.
 #include <algorithm>

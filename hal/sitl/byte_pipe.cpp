@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The in-process pipe: two fixed rings, no locks (one thread: the kernel's).
 #include "hal/sitl/byte_pipe.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Two byte streams joined inside the process: what one end writes, the other reads (the
 // simulated pan-tilt unit wired to the PTU module under --sim, no pty on the filesystem).
 #pragma once

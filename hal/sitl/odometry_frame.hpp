@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the firmware's odometry frame lies in the simulated world: written each tick by the kernel's thread, read by picture threads.
 #pragma once
 

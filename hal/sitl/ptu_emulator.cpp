@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The PTU emulator: command tokenizer, replies in the unit's conventions, trapezoidal pan motion.
 #include "hal/sitl/ptu_emulator.hpp"
 

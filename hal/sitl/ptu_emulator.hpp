@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A PTU-46-style pan-tilt unit as a pure byte-level state machine: commands in, replies out, motion as time advances.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Servicing the pan-tilt emulator's byte stream: bounded non-blocking reads and writes per tick.
 #include "hal/sitl/ptu_port.hpp"
 

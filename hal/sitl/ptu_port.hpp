@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pan-tilt emulator on a byte stream (its pty): what the host writes is fed in, replies written back.
 #pragma once
 

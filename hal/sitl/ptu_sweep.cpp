@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The built-in pan-tilt sweep: turn round at the limits, fire channel 7 on 5° marks.
 #include "hal/sitl/ptu_sweep.hpp"
 

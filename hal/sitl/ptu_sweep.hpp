@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuterd --ptu-sweep: a sweep of the emulated unit and its sonars without the PTU module or the protocol (the bench, pictures).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robuterd --picture scene: built from the SimRobot and the ranges the firmware last read.
 #include "hal/sitl/sim_picture.hpp"
 

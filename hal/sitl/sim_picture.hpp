@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures of the simulated robot as the firmware left it: world, robot, trail, ring beams, last pan-tilt firing.
 #pragma once
 

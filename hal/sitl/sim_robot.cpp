@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated robot behind the HAL: world loading, physics stepping, firing timing of the ring.
 #include "hal/sitl/sim_robot.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SITL backend: the HAL's drive, ultrasonic ring and bumpers implemented on the simulated Robuter.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The kernel process that advances the simulated world to the kernel's clock each tick.
 #pragma once
 

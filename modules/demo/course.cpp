@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The course: legs followed on odometry, the three-phase calibration against the boxes.
 #include "modules/demo/course.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed's demonstration course (dem.c, annex A) as a pure state machine: a loop driven on
 // odometry, re-calibrated once a lap against known boxes in three phases.
 #pragma once

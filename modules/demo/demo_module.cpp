@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Demonstration glue: settings, one course step per activation, requests and status.
 #include "modules/demo/demo_module.hpp"
 

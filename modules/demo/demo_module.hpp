@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Demonstration module (XT1, or [demo] enabled at start-up): drives the seed's course through the emergency gate.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door crossing: fresh scan, steer, wait when blocked, through, drive on, done.
 #include "modules/doors/crossing.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The door crossing's decisions, pure: the seed's steering on echoes carried by odometry, the
 // wait when blocked on both sides, the end test, and a last stretch so the rear clears the door.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Units converted and the seed's geometry gathered from the robot model ([robot], [ptu] mount).
 #include "modules/doors/crossing_settings.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The [doors], [ptu] and [robot] configuration in the door crossing's terms.
 #pragma once
 

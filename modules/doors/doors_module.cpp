@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door-crossing glue: runs handed by the arbiter, the detections wish, interruptions, requests, status.
 #include "modules/doors/doors_module.hpp"
 

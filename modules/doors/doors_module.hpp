@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door-crossing module (Ad / Af): runs DoorCrossing, asking the emergency module for the seed's
 // lowered detections while it is in the door.
 #pragma once

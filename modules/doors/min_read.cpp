@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // init_doors()'s table and its continuous twin.
 #include "modules/doors/min_read.hpp"
 

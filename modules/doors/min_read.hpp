@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door crossing's minimum admissible pan-tilt reading per direction, from the robot's geometry (seed doors.c).
 #pragma once
 

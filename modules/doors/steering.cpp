@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed's reactive rules, one function each.
 #include "modules/doors/steering.hpp"
 

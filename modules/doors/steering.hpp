@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door crossing's steering rules on the 72 pan-tilt sectors (seed doors.c, doors()).
 #pragma once
 

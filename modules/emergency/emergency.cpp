@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Emergency process glue: reads the topics, runs the gate, publishes verdict, command and table.
 #include "modules/emergency/emergency.hpp"
 

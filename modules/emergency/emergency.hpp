@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Emergency module: the request-to-move gate between every motion source and the executor.
 #pragma once
 

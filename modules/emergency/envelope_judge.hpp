@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the gate asks of the obstacle envelope: how much of a request may be granted now.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The evidence grid: free-space certificates of each reading's cone, obstacle evidence on its echo arc.
 #include "modules/emergency/evidence_grid.hpp"
 

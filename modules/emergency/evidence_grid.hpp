@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Obstacle evidence and free-space certificates of the ring, in a rolling grid of the odometry frame.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The arbitration table and the owner's changes.
 #include "modules/emergency/motion_arbiter.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The motion arbiter: the one place that decides who drives — the operator or one automatic mode.
 #pragma once
 

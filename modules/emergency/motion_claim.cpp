@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The arbiter's authority topic read from a mode's side.
 #include "modules/emergency/motion_claim.hpp"
 

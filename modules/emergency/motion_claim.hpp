@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A mode's view of the motion arbiter: when the robot is handed to it, and why its run ended.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gate's decision: re-enable, requests, detections, then trip / latch / hold / grant.
 #include "modules/emergency/motion_gate.hpp"
 

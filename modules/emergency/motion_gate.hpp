@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The request-to-move gate: the emergency module's whole decision, a pure state machine.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Safety distance and the watch-dog verdict.
 #include "modules/emergency/obstacle_check.hpp"
 

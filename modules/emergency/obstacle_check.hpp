@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Safety distance and the verdict of the watch-dog sensors' readings (seed get_us_limit + emergency()).
 #pragma once
 

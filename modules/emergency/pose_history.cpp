@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pose history: arcs between postures, a jump test for a set odometry.
 #include "modules/emergency/pose_history.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A short history of the executor's odometry postures: the pose at any recent tick, and the velocity.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ring envelope: postures into the pose history, readings into the grid, requests into verdicts.
 #include "modules/emergency/ring_envelope.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The envelope fed by the firmware: ring readings and postures into the grid, requests judged on it.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The start pose's blind set: the near field and the gaps between the cones that read at rest.
 #include "modules/emergency/start_blind.hpp"
 

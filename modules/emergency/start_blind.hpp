@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the ring could not see from the pose the robot last started from: where a creep may go.
 #pragma once
 

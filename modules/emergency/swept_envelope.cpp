@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Swept envelope: outline samples, the arc's poses, the clear fraction from the stopping horizon.
 #include "modules/emergency/swept_envelope.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The body's rectangle swept along the arc of wheel speeds over the stopping horizon, judged on the grid.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Main sensor, watch-dog sets and auto-toggle table: a faithful reading of the seed's emerg.c.
 #include "modules/emergency/watchdog_sets.hpp"
 

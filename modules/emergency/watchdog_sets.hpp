@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Main sensor from the wheel speeds, watch-dog sets and the auto-toggle table (seed emerg.c).
 #pragma once
 

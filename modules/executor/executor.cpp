@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Executor glue: odometry out, servo and odometry requests, the granted command, the go-to.
 #include "modules/executor/executor.hpp"
 

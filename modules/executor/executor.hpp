@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Motion executor (seed executor.c): the only module that commands the drive.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Go-to-posture: three phases with proportional control and speed limits.
 #include "modules/executor/go_to.hpp"
 

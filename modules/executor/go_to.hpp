@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Go-to-posture controller (AW): turn towards (x, y), drive there, turn to theta. Pure.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Posture unit conversions.
 #include "modules/executor/posture_units.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conversions between the drive's odometry (m, rad) and the protocol's posture units (0.1 mm, 0.01°).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Composition of the firmware from options and configuration; everything allocated here, once.
 #include "modules/firmware/firmware.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware, composed: clock, HAL backend, links, modules, process table and kernel.
 #pragma once
 

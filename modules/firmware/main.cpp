@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuterd: parses the command line and configuration, composes the firmware and runs it.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>

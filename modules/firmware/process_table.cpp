@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Default process table and how configuration changes it.
 #include "modules/firmware/process_table.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The firmware's process table (the seed's kernel.c table), with configuration overrides.
 #pragma once
 

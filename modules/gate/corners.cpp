@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Corner detection and passage centre, seed gate.c with its loop bounded and its wrap fixed.
 #include "modules/gate/corners.hpp"
 

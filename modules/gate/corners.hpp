@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The passage finder's corner detection on the differences of a 72-sector scan (seed gate.c).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Passage estimate: corner lock, wall fit by a search over the normal, edges on the wall line.
 #include "modules/gate/door_estimate.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the passage is, from a stationary pan-tilt scan: its wall line, its two edges, its centre.
 #pragma once
 

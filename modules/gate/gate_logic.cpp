@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stop, scan, estimate, manoeuvre, scan again: the passage finder as a state machine.
 #include "modules/gate/gate_logic.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The passage finder's decisions, pure: stop and scan, find the passage, manoeuvre onto its centre
 // line facing it, check again — until aligned, or a reason to give up.
 #pragma once

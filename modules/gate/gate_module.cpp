@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Passage-finder glue: runs handed by the arbiter (AG) and their end, requests and status.
 #include "modules/gate/gate_module.hpp"
 

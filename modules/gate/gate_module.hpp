@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Passage-finder module (AG / AT): runs GateLogic, asks for motion through the emergency gate.
 #pragma once
 

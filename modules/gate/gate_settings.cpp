@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Units converted: 0.01° to degrees; the pan axis and the front face from the robot model.
 #include "modules/gate/gate_settings.hpp"
 

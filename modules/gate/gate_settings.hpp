@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The [gate], [ptu] and [doors] configuration in the passage finder's terms.
 #pragma once
 

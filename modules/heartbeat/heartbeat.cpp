@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heartbeat activation.
 #include "modules/heartbeat/heartbeat.hpp"
 

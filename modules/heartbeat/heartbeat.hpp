@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heartbeat: a proof-of-life process that publishes a beat and logs it at debug level.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // READY=1, WATCHDOG=1 on the periodic path (no allocation, no blocking), STOPPING=1.
 #include "modules/notify/notify_module.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // systemd notification from the periodic path: READY=1 once the loop ticks, WATCHDOG=1 while every row runs on time.
 #pragma once
 

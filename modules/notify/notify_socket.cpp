@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The notify socket: environment, address (path or abstract), non-blocking sendto.
 #include "modules/notify/notify_socket.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A datagram socket to systemd's $NOTIFY_SOCKET, opened at start-up, written without blocking.
 #pragma once
 

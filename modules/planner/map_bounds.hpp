@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a point lies on the planner's map, from the configuration alone (used by the link).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window rendering: one character per cell, top row first.
 #include "modules/planner/map_window.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 003's characters for a square window of the map, written into fixed storage (for XM).
 #pragma once
 

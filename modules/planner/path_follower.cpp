@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Turn-then-drive legs with proportional control, as the go-to (AW) does, but in both directions.
 #include "modules/planner/path_follower.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Follows legs (turn in place, then drive straight, forward or backing) with wheel-speed requests. Pure.
 #pragma once
 

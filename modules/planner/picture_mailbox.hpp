@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-slot hand-off of plan snapshots from the planner (kernel thread) to the picture writer.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planner's picture thread: take a snapshot from the mailbox, draw it, free the slot.
 #include "modules/planner/picture_writer.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The firmware's planner pictures: a thread (outside the kernel) that writes each plan's PNG.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planner process glue: ring → map, goal requests, the scan / plan / follow loop, reports.
 #include "modules/planner/planner_module.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The grid planner as a kernel process: map from the ring, plan, follow the visible prefix, scan, replan.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Configuration (mm, counts) → planner settings (m, cells, rad).
 #include "modules/planner/planner_settings.hpp"
 

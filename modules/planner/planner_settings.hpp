@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planner module's settings in the units it works in (m, rad), made from the configuration.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Visible prefix, legs and the blocked check.
 #include "modules/planner/route.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // From a planned path to what the robot executes: the visible prefix (seed 000) and its legs.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Beams from the ring's mounts, and the body's cells, in world cells.
 #include "modules/planner/sonar_mapping.hpp"
 

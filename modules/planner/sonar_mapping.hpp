@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring's readings and the robot's body written into the occupancy map (seed 003's counts).
 #pragma once
 

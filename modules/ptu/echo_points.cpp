@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Echo localisation (runs of equal ranges, farther neighbours) and odometric carrying of points.
 #include "modules/ptu/echo_points.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where each pan-tilt echo is: localised within its beam from its neighbours, carried by odometry
 // to the robot's current frame. Shared by the passage finder and the door crossing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed's angle arithmetic, reproduced digit for digit (read_pt's last-digit rounding).
 #include "modules/ptu/pan_angles.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pan positions to angles and to the 72 five-degree sectors, as seed 002's ptu.c computes them.
 #pragma once
 

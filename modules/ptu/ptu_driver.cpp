@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pan-tilt driver: start-up sequence, sweep between the ends, position polling, firing.
 #include "modules/ptu/ptu_driver.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drives a PTU-46-style pan-tilt unit over its byte stream and fires its two sonars every 5°.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pan-tilt process glue: what is wanted, one driver step, scan and status out.
 #include "modules/ptu/ptu_module.hpp"
 

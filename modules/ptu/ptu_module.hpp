@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pan-tilt module: runs the driver while scanning is wanted and publishes the 72-sector scan.
 #pragma once
 

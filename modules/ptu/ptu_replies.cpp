@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reply assembly and parsing for the pan-tilt unit; fixed buffers, no allocation.
 #include "modules/ptu/ptu_replies.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The PTU-46 text protocol from the host's side: reply lines assembled from bytes, and parsed.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // [ptu] → PtuSettings: units converted (0.01° to degrees), the rest copied.
 #include "modules/ptu/ptu_settings.hpp"
 

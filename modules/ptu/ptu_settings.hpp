@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The [ptu] configuration section in the driver's terms.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Range correction, spike filter and differences exactly as seed 002's ptu.c.
 #include "modules/ptu/scan_filter.hpp"
 

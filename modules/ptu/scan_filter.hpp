@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed's post-processing of a 72-sector scan: range correction, spike filter, differences.
 #pragma once
 

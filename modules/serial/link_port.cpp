@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Each protocol request mapped onto the topic that carries it; reads from the owners' topics.
 #include "modules/serial/link_port.hpp"
 

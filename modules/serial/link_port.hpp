@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The protocol's RobotPort over the blackboards: what a command reads and which topic it writes.
 #pragma once
 

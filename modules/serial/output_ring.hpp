@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A fixed byte ring holding a link's replies until the client reads them.
 #pragma once
 

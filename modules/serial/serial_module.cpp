@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Link service: attach and re-attach clients, feed bytes to the codec, queue and flush replies.
 #include "modules/serial/serial_module.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command-link process: reads every link, answers each complete line in order, never blocks.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring's firing state machine: pick a firing (seed order or watch schedule) → wait → fire → read.
 #include "modules/us/ring_scanner.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring's non-blocking firing sequence (seed us.c read_sensors): one state machine step per activation.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running means of the ring's node and full-scan read times (USN, USS).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ultrasonic process glue: settings in, one scanner step, ranges and timing out.
 #include "modules/us/ultrasonic.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ultrasonic module (seed us.c): fires the ring without blocking and publishes ranges and timing.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Throughput of the protocol codec on a realistic command mix: decode only, framing + decode,
 // and the whole link path (framing, decode, fake port, reply formatting).
 #include <benchmark/benchmark.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CRC-16/CCITT-FALSE for the opt-in line checksums, table-driven.
 #include "protocol/codec/checksum.hpp"
 

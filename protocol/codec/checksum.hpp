@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Opt-in line checksums (XC1): CRC-16/CCITT-FALSE written as `*HHHH` at the end of a line.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A decoded command: its id and its parameters, ready for a handler.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Identifiers of every command the protocol knows, one per command-table row.
 #pragma once
 

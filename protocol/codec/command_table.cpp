@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The protocol's command table: every seed message and every extension, one row each.
 #include "protocol/codec/command_table.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one command table: (category, type) → command id, parameter schema and handler.
 #pragma once
 

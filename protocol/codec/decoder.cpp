@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The decoder: looks up the command table and checks parameters against the row's schema.
 #include "protocol/codec/decoder.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Decoding: one line of text → a typed command and its table row, or an error code.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Why a line was answered `error`: the codes and names shown by verbose errors (XB1).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Declarations of the command handlers the command table points to.
 #pragma once
 

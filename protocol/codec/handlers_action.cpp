@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the A messages: motion, servo, pass-through, odometry, go-to, shutdown.
 #include "protocol/codec/handlers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the X extensions: emergency, re-enable, kernel figures, version, session options.
 #include <algorithm>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the B messages: posture, ranges, clock, time-out and pan-tilt arrays.
 #include "protocol/codec/handlers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handler of XD: the pan-tilt scanner's, passage finder's, door crossing's and demonstration's states.
 #include "protocol/codec/handlers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the grid planner's X extensions: goal, halt, status and the map window.
 #include "protocol/codec/handlers.hpp"
 

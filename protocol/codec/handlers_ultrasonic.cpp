@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the U messages: sensor table, node delay, timing figures, time-out, auto-toggle.
 #include "protocol/codec/handlers.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed sizes of the Robuter text protocol: line length, sensor and sector counts, buffers.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Framing of the command link: terminators, length bound, bad bytes and the stop byte.
 #include "protocol/codec/line_assembler.hpp"
 

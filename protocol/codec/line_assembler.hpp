@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Framing: turns received bytes into complete lines, framing errors and stop events.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The per-line path: checksum check (when on), decode, run the handler. (The communication
 // watchdog is stamped by the codec for every complete line, before this.)
 #include "protocol/codec/line_handler.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One complete line in, exactly one reply line out: checksum, decode, dispatch, format.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The non-template parts of the link codec: the stream schedule and reset.
 #include "protocol/codec/link_codec.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The codec of one link: framing, session state and replies bundled for the serial module.
 #pragma once
 

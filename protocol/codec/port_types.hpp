@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Value types exchanged between the codec and the robot port (posture, ranges, statuses).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The reply writer's formatting: integers with to_chars, checksum and terminator at the end.
 #include "protocol/codec/reply_writer.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The reply writer: builds exactly one reply line in a fixed buffer, in the session's format.
 #pragma once
 

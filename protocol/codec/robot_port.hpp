@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robot port: everything the protocol's messages read or change, as an abstract interface.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parameter schemas of the command table: what a message's parameters must look like.
 #pragma once
 

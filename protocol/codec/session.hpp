@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-link session state: the options a client switched on with extensions.
 #pragma once
 

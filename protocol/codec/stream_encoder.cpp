@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Encoder of the status stream's lines: a compact snapshot that never looks like a reply.
 #include "protocol/codec/stream_encoder.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The status line of the opt-in stream (XS): `@ <x> <y> <theta> <servo> <left> <right> <emerg> <clock>`.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The firmware's one vocabulary: the enums that cross topics and the link, each with its words from one list.
 #pragma once
 

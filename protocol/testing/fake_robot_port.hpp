@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A scriptable RobotPort for tests, fuzzing and benchmarks: fixed values in, calls recorded.
 #pragma once
 

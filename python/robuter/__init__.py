@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """robuter — a Python client for robuterd, the Robuter firmware (docs/PYTHON.md).
 
     from robuter import Robot

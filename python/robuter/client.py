@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A client for robuterd's command link (docs/PROTOCOL.md), for lab scripts.
 
 Replies are paired by the protocol, never by count: every line sent gets exactly one reply line;

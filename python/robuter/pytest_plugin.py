@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """pytest fixtures for lab scripts and tests: ``robuterd`` (a fresh ``robuterd --sim`` on a
 temporary pty) and ``robot`` (a ``Robot`` connected to it). Load with ``-p robuter.pytest_plugin``
 or ``pytest_plugins = ["robuter.pytest_plugin"]`` in a conftest.py.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Runs robuterd on its simulated robot (``robuterd --sim``) on a pty in a temporary folder.
 
     from robuter import Robot, sim

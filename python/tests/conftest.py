@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The package is used from the source tree (no install needed): python/ on the path, fixtures
 # from robuter.pytest_plugin.
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The client on its own: reply decoding, and pairing by protocol against a fake robot on a pty
 (stale input flushed on open, status lines kept apart, any reply terminator). No robuterd."""
 import os

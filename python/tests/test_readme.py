@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The README's Python example runs as written (against a fresh simulated robuterd)."""
 import contextlib
 import io

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Conformance cases written with the client, against a fresh `robuterd --sim` each (the
 `robot` fixture). These are the examples for lab scripts: no sleeps, since an `ack` means every
 later query sees the command (docs/PROTOCOL.md, "What ack means"); waits for the simulated robot

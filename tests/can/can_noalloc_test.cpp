@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the CAN protocol path allocates nothing once started: 10,000 ticks of the backend with
 // two simulated drives and six sonar nodes through enable, motion, faults, recovery, heartbeat
 // loss, bus states and ring firings, every malloc of the thread counted.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test rig: a loopback bus with two simulated CiA 402 drives, six sonar nodes and the host's CAN backend, on explicit time.
 #pragma once
 

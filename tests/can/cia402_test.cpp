@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CiA 301/402 frames and state machine against bytes written out by hand from the specifications.
 #include <gtest/gtest.h>
 #include <linux/can/error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The drive-side watchdog (issue #14): the host's heartbeat, the drives' consumer heartbeat
 // (0x1016) and their quick stop when it is lost (0x6007 = 3), on the loopback bus; the Unix
 // datagram transport that carries the bus between processes; the fatal-signal quick stop.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware on the CAN backends over a loopback bus with simulated drives and sonar
 // nodes, on the virtual clock: move, then heartbeat loss, drive fault, error-passive and bus-off
 // each end in an emergency whose cause XE shows; recovery after a drive fault; without a pan-tilt
@@ -12,7 +13,7 @@
 #include "hal/linux/can/can_backend.hpp"
 #include "hal/linux/can/loopback_bus.hpp"
 #include "hal/linux/can/sim_nodes.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CAN protocol on an in-process loopback bus: simulated drives through bring-up, enable,
 // velocity, fault and recovery; heartbeat loss, bus states, odometry and the sonar nodes.
 #include <gtest/gtest.h>

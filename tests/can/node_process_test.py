@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Issue #14, the drive-side watchdog on the real binaries: robuter-can-nodes (the simulated CiA 402
 drives and ultrasonic nodes as their own process) on a Unix-socket bus, robuterd on it
 ([can] interface = "unix:PATH"). The robot drives; `kill -9` of robuterd: both drives quick-stop

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A third-party client (Debian's python3-serial) drives robuterd's pty: the worked exchange,
 a close and re-open of the port (the client is served again), and pipelined requests."""
 import re

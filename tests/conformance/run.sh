@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs one conformance script against a live `robuterd --sim --pty`, then checks robuterd
 # stopped cleanly (exit 0): after SIGINT, or by itself when the script ends with AX.
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Drives robuterd's pty with a third-party client from Debian (python3-serial).
 set -u
 robuterd=$1; client=$2

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Serial transport: robuterd opens a tty (hal/linux SerialStream, 8N1); this test holds the other
 end of a pty pair as 'the wire', then removes nothing and checks the exchange."""
 import os

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Standard input/output transport: requests piped in, replies on stdout, AX ends it with status 0.
 set -u
 robuterd=$1

@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the passage finder, the door crossing, the pan-tilt and the demonstration allocate
 // nothing on the periodic path: a whole AG + Ad run through the 90 cm door, and a whole lap of the
 // demonstration course (calibration included), with the allocation counter armed.
 #include <gtest/gtest.h>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Door crossing on the whole simulated firmware, the pan-tilt emulated on its own pty: AG then Ad
 // from seeded starts before the 90 and 100 cm doors (lateral ±40 cm, heading ±20°), the 70 cm
 // gap, and every way out of the crossing giving the emergency mask back.
@@ -10,11 +11,11 @@
 #include <string>
 
 #include "hal/sim/render.hpp"
-#include "tests/doors_sim/crossing_picture.hpp"
-#include "tests/doors_sim/crossing_run.hpp"
 #include "tests/support/layout_check.hpp"
 #include "tests/support/sample.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 namespace robuter::test {
 namespace {

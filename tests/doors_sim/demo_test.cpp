@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The demonstration course on the whole simulated firmware in worlds/seed002_course.toml: laps
 // with their three-phase calibration, odometry noise on; the true pose at every recalibration
 // point against where it should be (5.0 m, 1.6 m, 180°) — the end-of-lap error.
@@ -12,8 +13,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/sample.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

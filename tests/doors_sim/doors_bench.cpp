@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter_doors_bench: N seeded starts per world through AG + Ad on the simulated firmware;
 // success rate, crossing times, and the reason of every failure (tools/bench/60-doors.sh);
 // ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule.
@@ -7,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/doors_sim/crossing_run.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 int main(int argc, char** argv) {
   using namespace robuter::test;

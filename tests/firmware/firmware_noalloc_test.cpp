@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the whole firmware (simulator, link, ring, emergency, executor) allocates nothing in
 // 10,000 steady-state ticks while a client talks to it.
 #include <gtest/gtest.h>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

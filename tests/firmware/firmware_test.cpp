@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole firmware on the simulated robot: AX, motion on the simulated robot.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

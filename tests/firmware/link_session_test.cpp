@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Command-link sessions and the stop byte's guarantee (issue #14): the whole firmware on a pty.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Read-your-writes (issue #14, item 2): after an `ack`, every later query already reflects the
 // command — the whole firmware on a pty, simulated ticks, lines pipelined in one write.
 #include <gtest/gtest.h>
@@ -6,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

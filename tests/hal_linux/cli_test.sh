@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuterd with serial and GPIO configuration: devices named but absent pass --check-config and
 # stop a start with one clear line; a bad key names file:line; SIGTERM with a serial link open.
 set -u

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pty creation, unplug and re-plug for the serial device tests.
 #include "tests/hal_linux/fake_device.hpp"
 

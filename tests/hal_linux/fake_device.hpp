@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A pty pair standing in for a serial device: DEV is a symbolic link to the slave, and the
 // test unplugs (closes the master, removes DEV) and re-plugs (a new pty, DEV points at it).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GPIO v2 uAPI decoding with hand-filled structures, the line set over a fake line descriptor
 // (a pipe carrying events), and the start-up error without a chip.
 #include <gtest/gtest.h>

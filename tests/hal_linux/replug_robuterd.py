@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Acceptance (issue #8) on the real binary: robuterd --serial DEV where DEV is a symbolic link
 to a pty slave; BO answered; the pty closed and DEV removed (device gone): robuterd keeps
 running; a new pty at DEV: BO answered again, no restart. Waits are liveness bounds only."""

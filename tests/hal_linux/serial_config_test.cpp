@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // [links.serial], the [ptu] line keys and [hardware.gpio]: values, defaults and clear
 // file:line errors; the rates the configuration accepts are the ones the HAL can set.
 #include <gtest/gtest.h>

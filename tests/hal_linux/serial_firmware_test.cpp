@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance (issue #8): a serial device removed and restored under a running robuterd — a pty
 // that disappears and comes back stands in for it — and the link resumes without a restart;
 // the same for the pan-tilt unit's port. The whole firmware on the simulated robot.
@@ -12,8 +13,8 @@
 
 #include "hal/link/pty_link.hpp"
 #include "hal/sitl/sim_stepper.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/hal_linux/fake_device.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

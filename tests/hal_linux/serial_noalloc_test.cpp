@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the serial link allocates nothing on the periodic path: lines exchanged over a serial
 // device, the device lost and found again, more lines — all inside the counted region.
 #include <gtest/gtest.h>
@@ -7,9 +8,9 @@
 #include <memory>
 #include <thread>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/hal_linux/fake_device.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The serial device stream: line settings, bytes both ways, and the device lost (hang-up,
 // node removed or replaced) and found again without re-creating the stream.
 #include <gtest/gtest.h>

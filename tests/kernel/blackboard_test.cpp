@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Blackboard topics: generation counters, updated()/copy(), and the owner's writable handle.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuterd's command line: bad configurations exit 2 with one clear line; SIGINT stops it cleanly.
 set -u
 bin=$1; configs=$2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Configuration parsing: defaults equal the seed's constants; each bad file gives one clear error.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The log ring: levels filter, records carry the tick, a full ring drops and counts.
 #include <gtest/gtest.h>
 

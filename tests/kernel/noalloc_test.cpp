@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the periodic path allocates nothing: every malloc of the kernel thread is counted
 // while 10,000 steady-state ticks run.
 #include <gtest/gtest.h>

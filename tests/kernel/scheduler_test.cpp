@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Kernel tick loop on a virtual clock: timing of activations, priorities, overruns, slips, stop, events.
 #include <gtest/gtest.h>
 #include <fcntl.h>

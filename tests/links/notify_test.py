@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Issue #14, systemd notification on the real binary, with a fake NOTIFY_SOCKET (a datagram
 socket bound in a temporary folder) and WATCHDOG_USEC=200000: READY=1 arrives once the loop
 ticks; WATCHDOG=1 keeps arriving (every 100 ms); none while robuterd is stopped with SIGSTOP,

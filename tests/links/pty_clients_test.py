@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Issue #14 on the real binary: `robuterd --sim --pty A --pty B`. A client on A leaves; then
 one-shot clients (`printf … > A`) still stop and move the robot, each one starts a fresh session,
 a second robuterd on A is refused (flock), and a killed robuterd leaves nothing that stops the

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Issue #14, signals and crashes, on the real binary (`robuterd --sim --pty P`, the robot turning):
 SIGHUP, SIGQUIT and SIGTERM stop it cleanly (drive stopped, servo off, exit 0, pty link removed);
 SIGUSR1 and SIGUSR2 are logged and ignored, SIGPIPE ignored; SIGSEGV, SIGABRT, SIGBUS and SIGFPE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the incremental cost field: equal to a full recomputation after random map changes.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the file loaders: thesis parameter and environment files, saved maps; clear errors.
 #include <gtest/gtest.h>
 

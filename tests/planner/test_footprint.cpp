@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of footprints and the (x, y, heading) search: the Robuter passes a 90 cm door, a disc does not.
 #include <gtest/gtest.h>
 

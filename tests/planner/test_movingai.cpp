@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests on the MovingAI benchmark: file parsing, and optimal lengths equal the published ones.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the occupancy grid: beam integration (seed 003's rule), change log, text rendering.
 #include <gtest/gtest.h>
 

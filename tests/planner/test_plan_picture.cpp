@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures of plans: title with the outcome (the reason when there is no path), the goal marked,
 // legend, scale bar and axes laid out without overlap, world frame, ≥ 1000 px wide, PNG and PDF.
 #include <gtest/gtest.h>

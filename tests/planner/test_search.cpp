@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the 2D searches: optimal A*, the thesis' BFS, no corner cutting, failures, unknown cost.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers shared by the planner tests: grids from ASCII art, temporary files.
 #pragma once
 

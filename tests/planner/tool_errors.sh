@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # robuter-plan with broken input files: each run must fail with exit status 1 and one clear
 # "file:line: message" error, print no plan, and write nothing (no picture, no saved map).
 set -u

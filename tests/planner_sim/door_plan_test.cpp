@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // (b) The 90 cm door of worlds/default.toml at plan level, on the known map: the Robuter's
 // rectangle (the firmware's default planner) passes, the disc of the thesis' method does not.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planner module's pure parts: ring beams and body in the map, the window, prefix, legs, follower.
 #include <gtest/gtest.h>
 

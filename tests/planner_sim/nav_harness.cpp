@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The navigation harness: stepping, invariants, figures and optional pictures.
 #include "tests/planner_sim/nav_harness.hpp"
 

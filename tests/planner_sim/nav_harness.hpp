@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test support: run a navigation of the whole firmware and record what happened on the way.
 #pragma once
 
@@ -5,8 +6,8 @@
 #include <string>
 #include <string>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "modules/planner/planner_module.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter::test {
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 000's experiment on the whole firmware: no prior map, the 18 x 10 m lab, a goal 13 m away.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves a whole navigation — scans, marks, plans, replans, following, XP/XM queries — allocates
 // nothing in the kernel's thread once the firmware has started — with the planner's pictures on
 // (each plan copied for its picture in the kernel's thread, drawn by the writer's own thread).
@@ -8,10 +9,10 @@
 #include <filesystem>
 #include <string>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

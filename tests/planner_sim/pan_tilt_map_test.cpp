@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pan-tilt's scan marks the planner's map too (the ring switched off to tell them apart).
 #include <gtest/gtest.h>
 

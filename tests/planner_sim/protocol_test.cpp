@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // (c) The planner's protocol on the whole firmware: goal errors, unreachable goals, XP, XM, XH.
 #include <gtest/gtest.h>
 

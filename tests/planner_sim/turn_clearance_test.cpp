@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The library's turn clearance (turning in place needs more room than driving) and prepare().
 #include <gtest/gtest.h>
 

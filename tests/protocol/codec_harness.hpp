@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test harness: a LinkCodec and a fake port, fed with strings, collecting replies as strings.
 #pragma once
 

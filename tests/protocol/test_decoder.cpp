@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the decoder: lookup, every schema, separators, and every parameter error.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The X extensions: emergency, re-enable, kernel figures, version, stream, verbose errors,
 // checksums and the reply terminator.
 #include <gtest/gtest.h>

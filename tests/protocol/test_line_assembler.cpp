@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the framing: terminators, length bound, bad bytes, stop byte, split input.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The codec on a link: framing errors, terminators, stop byte, pipelining, random bytes.
 #include <gtest/gtest.h>
 

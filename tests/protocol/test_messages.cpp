@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every seed message through the whole codec: reply formats and the port calls they make.
 #include <gtest/gtest.h>
 

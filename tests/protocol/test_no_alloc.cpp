@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the per-line path never touches the heap, by counting global operator new calls.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The grid planner's X extensions: XG (goal, optional theta), XH (halt), XP (status), XM (map window).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The reply writer alone: one line per reply, overflow safety, session snapshot.
 #include <gtest/gtest.h>
 

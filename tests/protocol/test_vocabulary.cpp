@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one vocabulary: every enumerator has its own non-empty word, the words read back, and the wire words stay put.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Passage corners from a scan's differences (seed gate.c get_corners / get_center), by hand.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The passage estimate on scans the simulator's sonar model makes in the shipped door worlds:
 // centre, direction and width against the true door from every start the door tests use.
 #include <gtest/gtest.h>

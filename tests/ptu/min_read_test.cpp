@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Minimum admissible readings per sector from the robot's geometry (seed init_doors), by hand.
 #include <gtest/gtest.h>
 

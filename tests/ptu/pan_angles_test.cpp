@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pan positions to degrees and sectors: values worked out by hand from seed ptu.c (read_pt).
 #include <gtest/gtest.h>
 

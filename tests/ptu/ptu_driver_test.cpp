@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pan-tilt driver against the PTU emulator (in process, no pty) and against broken units:
 // start-up sequence, full sweeps with every sector filled at its angle, silent / garbage /
 // refusing / vanished units detected in ticks without ever blocking.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The PTU module in the whole firmware on the simulated robot, the unit emulated on its own pty or
 // (robuterd --sim's default) wired inside the process: Ap/Ag, BP/BF/BD from the scan, XD, a unit
 // that vanishes, and a robot without one (Ap, AG, Ad answer error no-unit).
@@ -11,7 +12,7 @@
 #include <vector>
 
 #include "hal/sitl/byte_pipe.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

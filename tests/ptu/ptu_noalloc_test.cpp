@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the pan-tilt path allocates nothing: 10,000 ticks of the whole firmware scanning with the
 // emulated unit (on its pty, and wired in-process) while a client reads BP, BF, BD and XD, then
 // the unit unplugged and detected.
 #include <gtest/gtest.h>
 
+#include "modules/firmware/sim_firmware.hpp"
 #include "tests/support/alloc_counter.hpp"
-#include "tests/support/sim_firmware.hpp"
 
 namespace robuter {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reply lines of the PTU protocol: assembly from bytes and parsing of terse, verbose and echoed forms.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Range correction, spike filter and differences: hand-computed values from seed ptu.c.
 #include <gtest/gtest.h>
 

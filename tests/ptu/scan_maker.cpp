@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sector k measured by the transducer looking 5k° from forward; readings corrected as read_pt().
 #include "tests/ptu/scan_maker.hpp"
 

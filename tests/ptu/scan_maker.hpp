@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test helper: a complete pan-tilt scan of a world, as the firmware would hold it after a sweep
 // with the robot standing still at a pose (the simulator's sonar model, the seed's correction).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The door-crossing steering rules (seed doors()) on hand-made scans.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """robuterctl against a live `robuterd --sim --pty` (issue #15).
 
 Every case is a friction an operator met with the old robuterctl: a stale reply taken as the

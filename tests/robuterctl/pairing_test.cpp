@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuterctl's pairing of replies by the protocol, and its decoding, without a robot.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The three modules together in a kernel on a virtual clock with the seed's table: stops reach
 // the drive in the tick their cause is read, hold and resume, trips, latch and re-enable,
 // auto-toggle, servo requests, go-to through the gate, shut-down.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit tests of the envelope: the evidence grid, the swept body and its cap, the gate's two stops.
 #include <gtest/gtest.h>
 

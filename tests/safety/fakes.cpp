@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fake HALs: the drive's rule checks and odometry, the ring's scripted readings.
 #include "tests/safety/fakes.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fake HALs for the safety tests: a drive that checks every command, a scripted ring, bumpers.
 #pragma once
 

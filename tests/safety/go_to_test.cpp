@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The go-to-posture controller on an ideal differential drive, and the posture unit conversions.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test stand-in for the serial module: the owner of the link's topics, driven by the test.
 // (The real robuter::SerialModule lives in modules/serial and is never linked into these tests.)
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The request-to-move gate on its own: grant, hold and resume, trips, latch and re-enable,
 // old speeds never resuming, inhibits at rest, motion time-out, hold limit, auto-toggle table.
 #include <gtest/gtest.h>

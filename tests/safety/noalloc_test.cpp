@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the three safety modules allocate nothing on the periodic path: every malloc of the
 // kernel thread is counted over 10,000 ticks with motion, obstacles, holds, trips and re-enables.
 #include <gtest/gtest.h>

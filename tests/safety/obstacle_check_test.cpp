@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Safety distance (seed get_us_limit) and the watch-dog verdict: clear, hold, obstacle.
 #include <gtest/gtest.h>
 

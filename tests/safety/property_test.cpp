@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thousands of seeded random command sequences (AM, AS, AW, AC, UT, Uu, UD, XR, stop byte, mask
 // changes, bumpers, drive faults, link silence) over random obstacle ranges. The fake drive checks
 // every command as it arrives: no non-zero speed and no servo-on while an emergency holds, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The safety core as the firmware runs it: us, emergency and executor in a kernel on a virtual
 // clock with the seed's process table, fake HALs and a test double of the link.
 #pragma once

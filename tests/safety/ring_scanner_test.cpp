@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring's firing sequence on a scripted ring: order, node delay, skipped nodes, table changes
 // on the next scan, no-echo ranges, lost readings, USN/USS statistics; the watch schedule while moving.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Main sensor from curvature and watch-dog sets: every one of the 24 sensors, the seed's code
 // transcribed verbatim as an oracle, ring arithmetic and the auto-toggle table.
 #include <gtest/gtest.h>

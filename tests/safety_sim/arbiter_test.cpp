@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The motion arbiter on the whole firmware: each operator command ends each automatic mode within
 // one tick, nothing of the mode drives again (not after XR either) until its own start, and the
 // door crossing's lowered detections never cover anyone else's motion.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 7: auto-toggle fires the watch set only (none stopped); UT OR-ed when off, kept when on.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 4: bumper and communication-loss emergencies, latch and re-enable, BO/XE after a trip.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The envelope is not a toy: XG through the 90 cm door of worlds/default.toml, the ultrasonic detection on.
 #include <gtest/gtest.h>
 

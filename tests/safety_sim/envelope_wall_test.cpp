@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The envelope on the whole firmware: straight at a wall for every speed × UD × Uu, the granted
 // speed against the analytic cap, and a straight run down a 1.2 m corridor.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The gate alone: no re-enable and no new motion while a tripped robot still brakes (at_rest).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 6: AW reaches 20 random reachable postures in worlds/empty.toml within 2 cm and 2°.
 #include <gtest/gtest.h>
 

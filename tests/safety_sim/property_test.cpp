@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 5: thousands of seeded random command sequences checked on every tick of the firmware.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reaction-time trials: a generated arena with one box, the firmware driving at it, a per-tick probe.
 #include "tests/safety_sim/reaction.hpp"
 

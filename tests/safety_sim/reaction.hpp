@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reaction-time trials on the whole simulated firmware, shared by the test and tools/bench/safety.
 #pragma once
 

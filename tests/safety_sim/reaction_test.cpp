@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 3: an obstacle in the path — the drive gets zero speed in the tick the range was read.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring that watches where the robot goes: the stopped full-scan time and the latency property on the whole firmware.
 #include <gtest/gtest.h>
 

@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Full-scan time of a stopped robot over the link: UT all ones, UD3, Ut33, then USS and USN.
 #include "tests/safety_sim/scan_time.hpp"
 
 #include <cstdlib>
 
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test::safety_sim {
 

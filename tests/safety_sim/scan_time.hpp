@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ring's full-scan time (USS) and node time (USN) of a stopped robot, as the link reports them.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers of the safety acceptance tests: temporary worlds, reply parsing, true clearance, monitor.
 #include "tests/safety_sim/support.hpp"
 

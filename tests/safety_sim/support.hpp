@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared helpers of the whole-firmware safety acceptance tests: worlds, replies, geometry, monitors.
 #pragma once
 
@@ -9,7 +10,7 @@
 #include "hal/sim/footprint.hpp"
 #include "hal/sim/world.hpp"
 #include "kernel/config.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test::safety_sim {
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 1: straight at a wall 4 m ahead at 10, 30 and 60 cm/s, the robot stops short of it.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Acceptance 2: AM curves and rotations select the seed's main sensor and watch set, firmware level.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Contact between the Robuter's rectangle and the world: bumper, stop at the contact pose, no
 // tunnelling through thin walls at any step size, doors that fit and gaps that do not.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simulator configuration overrides from TOML, including rows of the ring layout table.
 #include <gtest/gtest.h>
 

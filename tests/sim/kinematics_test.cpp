@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Kinematics of the simulated Robuter against closed-form unicycle motion.
 #include <gtest/gtest.h>
 

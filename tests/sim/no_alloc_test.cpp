@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The periodic path allocates nothing: robot steps (with contacts) and sonar readings (ring with
 // noise, pan-tilt) are run with a counting global operator new.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures: the default world with the robot, its trail, sonar beams and pan-tilt rays, to PNG,
 // SVG and PDF; the files exist, are ≥ 1000 px wide and not blank; what they lay out (title,
 // legend, scale bar, axes, labels) is there, on the page and never overlapping.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the pure simulated world: simulated seconds per wall-clock second on the default
 // world, robot stepped every 10 ms, all 24 ring sonars every 40 ms, the pan-tilt pair every 30 ms.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Helpers shared by the simulator tests.
 #include "tests/sim/sim_test_util.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default ring table (numbering, the seed's emergency thresholds, symmetry, nodes) and the
 // node firing schedule.
 #include <gtest/gtest.h>

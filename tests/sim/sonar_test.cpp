@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sonar ranges against hand-computed geometry: normal incidence, oblique and grazing surfaces,
 // the beam cone, time-out range, blanking, occlusion, noise, and the pan-tilt's pair.
 #include <gtest/gtest.h>

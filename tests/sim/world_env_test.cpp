@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 000's environment-file format: what loads, and each error kind with its file and line.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The project's TOML world format: contents, units, doors, and each error kind with its line.
 #include <gtest/gtest.h>
 

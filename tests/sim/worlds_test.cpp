@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shipped worlds: all load, and each has the geometry it promises.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The in-process pipe that wires the simulated pan-tilt unit to the PTU module under --sim:
 // bytes cross both ways, a full ring takes what fits, an unplugged pipe reads closed, and the
 // emulator answers over it as over its pty.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Channel 7 of the SITL ring: the pan-tilt's two sonars, fired at the emulated unit's angle,
 // against hand-computed ranges in a walled box; timing, masks, and the built-in sweep.
 #include <gtest/gtest.h>

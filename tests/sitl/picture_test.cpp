@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures from the command line: robuter-sim render (PNG and SVG, bad arguments) and
 // robuterd --sim --picture; the files must be real pictures with content, ≥ 1000 px wide, and
 // robuterd's picture must lay out its title, legend, scale bar and axes without overlap.

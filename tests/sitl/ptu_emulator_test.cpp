@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The PTU emulator: replies to every command of the seed's subset (echo, verbose and terse),
 // errors and limits, byte-level framing, and pan motion against the closed-form trapezoid.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pan-tilt emulator over a real pty: a client opens the slave like a serial port, sends the
 // seed's commands and reads the unit's replies while the port (or the whole firmware) steps.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The SITL ring's timing: a node measures when it fires and reports once its echoes are in, or at the firing's time-out.
 #include <gtest/gtest.h>
 

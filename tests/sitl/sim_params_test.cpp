@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated robot's own parameters ([sim] in the configuration) against what the firmware
 // believes: a wheel base 2 % off, a different speed of sound, a mounting error, broken tables.
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@
 
 #include "hal/sitl/sim_robot.hpp"
 #include "kernel/config.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 namespace robuter::test {
 namespace {

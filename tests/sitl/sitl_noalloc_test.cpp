@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Proves the pan-tilt paths allocate nothing after start-up: the emulator's protocol and motion,
 // channel-7 firing, the built-in sweep and the pty service, inside the whole firmware.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Interposes malloc and friends (glibc allows it) to count the calling thread's allocations.
 // Linked only into non-sanitized test programs: the sanitizers replace malloc themselves.
 #include "tests/support/alloc_counter.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counts heap allocations made by the current thread while an AllocCounter is alive.
 #pragma once
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The verdicts of the Python process tests: one line per check, the failures counted, the exit status."""
 import sys
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks shared by the picture tests: what every picture must lay out, nothing overlapping, all on the page.
 #pragma once
 

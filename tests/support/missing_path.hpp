@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Paths that cannot exist or cannot be written, made in a private temporary folder (never a fixed
 // global path that another program or user could create).
 #pragma once

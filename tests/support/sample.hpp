@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sample sizes of the long simulated tests: one rule for the sanitizer tree's smaller samples.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A private temporary folder for a test's output files, removed with the object (no fixed global path).
 #pragma once
 

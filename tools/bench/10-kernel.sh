@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Kernel figures: real-clock tick lateness of robuterd beside cyclictest at the same period,
 # robuterd's resident memory after a minute, and the kernel's own per-tick cost.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Bench section 20: protocol codec throughput (lines/s) on a realistic command mix.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}/bench_protocol

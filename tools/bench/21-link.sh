@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Link figures: pty round-trip latency of BO over 10,000 requests with the 10 ms tick running,
 # as a normal process and with SCHED_FIFO (robuterd realtime = true, the client under chrt),
 # against the floor measured in the same run: a bare pty that answers each line at once.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Serial re-open figures: a pty standing in for a USB serial adapter is removed and restored 20
 # times under a running robuterd; time from the device being back to the link answering.
 set -euo pipefail

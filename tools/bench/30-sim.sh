@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Simulator figures: simulated seconds per wall second of the pure world model (default world,
 # robot stepped every 10 ms, all 24 ring sonars every 40 ms, the pan-tilt pair every 30 ms).
 set -euo pipefail

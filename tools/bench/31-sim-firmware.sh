@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Whole-firmware simulation speed: robuterd --sim --speed max on the default world, every module
 # running, all 24 ring sonars firing and the pan-tilt sweeping with its two sonars (--ptu-sweep):
 # simulated seconds per wall second (and per CPU second), from --stats and the shell's timer.

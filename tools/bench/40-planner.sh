@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Planner bench: optimal search vs BGL astar_search on MovingAI maps, 1000x1000 full plans, replans.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}

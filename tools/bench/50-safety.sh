@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Safety figures: range read to zero speed at the drive (seeded trials), ring latency and stopped
 # full-scan time before/after the watch schedule, then the random-sequence property of
 # docs/SAFETY.md §12–§13 at bench size (10,000 sequences; make test runs 2,000).

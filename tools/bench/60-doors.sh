@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Door crossing: 100 seeded starts per door width (lateral ±40 cm, heading ±20°, 1.5 m in front),
 # AG then Ad on the whole simulated firmware with the emulated pan-tilt; success rate, mean
 # crossing time, every failure with its reason. Target: ≥ 95 % at 90 cm, every failure stopped.

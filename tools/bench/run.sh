@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every benchmark section (tools/bench/NN-*.sh) in order; each prints its own figures.
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Serial re-open figures: robuterd --sim --serial DEV (DEV a symbolic link to a pty slave);
 N times: the pty closed and DEV removed, then a new pty at DEV; measured from the new DEV to the
 first reply to BO (re-sent every 5 ms). Bounded by retry_ms + a tick by design."""

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Prepares a Debian cross build for TRIPLET: the target architecture in dpkg, toolchain, qemu-user, target libraries.
 # Usage: tools/deps/cross.sh TRIPLET   (aarch64-linux-gnu or arm-linux-gnueabihf)
 set -euo pipefail

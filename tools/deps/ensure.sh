@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the missing Debian packages named in the given lists (as root), or says exactly what to install.
 set -euo pipefail
 native=$(dpkg --print-architecture)

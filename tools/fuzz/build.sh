@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the protocol's libFuzzer targets with clang (the main g++ build cannot) into build-fuzz/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: framing + decoding of arbitrary bytes (no port, no replies).
 #include <cstddef>
 #include <cstdint>

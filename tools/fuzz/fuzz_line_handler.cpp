@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the whole link codec with the fake robot port, checking reply invariants.
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every protocol fuzz target: run.sh [SECONDS | -runs=N | --short]  (default 60 s each).
 # Seeds come from tools/fuzz/corpus/<target>/; new inputs go to build-fuzz/corpus/<target>/.
 # Ends with one line per target: "<target>: <N> executions in <S> s".

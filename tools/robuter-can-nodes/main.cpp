@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-can-nodes: two simulated CiA 402 wheel drives and six ultrasonic nodes on a bus shared with robuterd.
 #include <CLI/CLI.hpp>
 

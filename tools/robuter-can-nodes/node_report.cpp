@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Change lines of one simulated drive.
 #include "tools/robuter-can-nodes/node_report.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What robuter-can-nodes prints about a simulated drive: state changes, motion, heartbeat events.
 #pragma once
 

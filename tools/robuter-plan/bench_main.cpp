@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-plan-bench: our optimal search vs Boost Graph Library astar_search, big grids, replans.
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/astar_search.hpp>

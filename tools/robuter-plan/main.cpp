@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-plan: plans once from the thesis' files (-p / -a) or answers MovingAI scenario files.
 #include <CLI/CLI.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tool's picture of a plan: the planner copied into a snapshot, drawn by the module's picture code.
 #include "tools/robuter-plan/picture.hpp"
 

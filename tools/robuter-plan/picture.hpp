@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tool's picture of a plan (map, grown obstacles, path, footprints, goal; title with the outcome).
 #pragma once
 

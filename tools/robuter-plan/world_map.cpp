@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // World files into planner maps: the simulator's loader, then the edges rasterised.
 #include "tools/robuter-plan/world_map.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The project's world files (worlds/*.toml, or seed 000 .env through the simulator's loader) as planner maps.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-sim: command-line tools around the simulated Robuter (for now: `render`, pictures).
 #include <CLI/CLI.hpp>
 

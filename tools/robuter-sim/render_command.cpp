@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-sim render: load the world, place the robot, measure the sonars there, draw.
 #include "tools/robuter-sim/render_command.hpp"
 

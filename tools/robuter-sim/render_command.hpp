@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuter-sim render: options and the picture of a world with the robot and its sonars at one pose.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Raw terminal set-up and line reading with a deadline.
 #include "tools/robuterctl/client.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A client end of the command link: opens a pty or serial device raw, sends lines, reads replies.
 #pragma once
 

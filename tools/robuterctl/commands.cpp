@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command table of robuterctl (docs/PROTOCOL.md is the reference; this is its summary).
 #include "tools/robuterctl/commands.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every message robuterd knows and robuterctl's own words: for `help`, completion and pairing.
 #pragma once
 

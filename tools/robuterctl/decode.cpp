@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Field-by-field decoding of replies (units from docs/PROTOCOL.md).
 #include "tools/robuterctl/decode.hpp"
 

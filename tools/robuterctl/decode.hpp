@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Replies decoded for people: names and units for each field of the seed's and extension replies.
 #pragma once
 

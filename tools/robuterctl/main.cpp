@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // robuterctl: interactive console, conformance script runner and latency bench for robuterd's link.
 //
 // The console is one poll() loop over the terminal and the link, with readline's callback

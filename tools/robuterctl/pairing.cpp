@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Protocol pairing of replies (see pairing.hpp).
 #include "tools/robuterctl/pairing.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Replies paired with the lines that asked for them by the protocol, never by count.
 //
 // robuterd answers every line with exactly one reply, in order (docs/PROTOCOL.md §1), and never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pattern compilation to std::regex, with integer ranges checked on the captures.
 #include "tools/robuterctl/pattern.hpp"
 

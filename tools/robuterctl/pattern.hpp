@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reply patterns of conformance scripts: literal text with {int}, {int:a..b}, {ints:N}, {word}, {any}.
 #pragma once
 

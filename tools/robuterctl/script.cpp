@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The script interpreter. Directives:
 //   ! raw HEX..           send bytes given in hex, no terminator added
 //   ! repeat N TEXT       send TEXT N times, no terminator

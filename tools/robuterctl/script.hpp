@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conformance scripts: `> send`, `< expect`, and `!` directives, run against a live link.
 #pragma once
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Installs the robuterd .deb, checks its files, and starts robuterd.service's command as systemd would."""
 # Usage (as root): tools/test/package_test.py build-deb/robuterd_<version>_<arch>.deb
 #
@@ -23,7 +24,7 @@ PACKAGE = "robuterd"
 UNIT = "/lib/systemd/system/robuterd.service"
 EXPECTED_FILES = [
     "/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim",
-    "/etc/robuterd/robuterd.toml", "/etc/default/robuterd", UNIT,
+    "/usr/bin/robuter-doors-run", "/etc/robuterd/robuterd.toml", "/etc/default/robuterd", UNIT,
     "/usr/lib/sysusers.d/robuterd.conf", "/usr/share/robuterd/worlds/default.toml",
     "/usr/share/robuterd/udev/99-robuterd.rules", "/usr/share/doc/robuterd/INSTALL.md.gz",
 ]
@@ -138,7 +139,8 @@ def main():
         # 2. The files, conffiles, user and enablement the package promises.
         for f in EXPECTED_FILES:
             check(os.path.isfile(f), f"installed: {f}")
-        for f in ["/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim"]:
+        for f in ["/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim",
+                  "/usr/bin/robuter-doors-run"]:
             check(os.access(f, os.X_OK), f"executable: {f}")
         conf = run(["dpkg-query", "-W", "-f=${Conffiles}", PACKAGE]).stdout
         for f in EXPECTED_CONFFILES:
@@ -156,6 +158,9 @@ def main():
         check(v.returncode == 0 and v.stdout.startswith("robuterd "), f"robuterd --version: {v.stdout.strip()}")
         c = run(["/usr/bin/robuterd", "--check-config", "--config", "/etc/robuterd/robuterd.toml"])
         check(c.returncode == 0, "the installed configuration is valid: " + c.stdout.strip())
+        d = run(["/usr/bin/robuter-doors-run", "--world", "door90", "--seed", "1"], cwd="/")
+        check(d.returncode == 0 and "doors crossed" in d.stdout,
+              "robuter-doors-run crosses the installed worlds' door90: " + (d.stdout + d.stderr).strip())
 
         unit = parse_unit(UNIT)
         svc = lambda k: unit.get(("Service", k), [])  # noqa: E731

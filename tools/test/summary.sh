@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Adds up the ctest summaries of the given logs into one closing line: "N passed, N failed".
 set -u
 passed=0; failed=0

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CAN backend process: frame dispatch, periodic supervision and SYNC, transition logs.
 #include "hal/linux/can/can_backend.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The kernel process that runs the CAN bus: takes frames, supervises drives and sonar nodes, sends RPDOs and SYNC.
 #pragma once
 

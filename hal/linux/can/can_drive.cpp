@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CAN drive pair: unit conversions, odometry with Eigen, health from bus and drives, immediate RPDO1s.
 #include "hal/linux/can/can_drive.hpp"
 

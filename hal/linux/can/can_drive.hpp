@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hal::Drive on two CiA 402 drives on CAN: servo and wheel speeds as RPDO1s, odometry from encoder counts (Eigen).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CAN sonar ring: liveness by heartbeat, NMT start, one outstanding firing per node, faulty transducers withheld.
 #include "hal/linux/can/can_sonar_ring.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hal::SonarRing on CAN ultrasonic nodes (docs/CAN.md frame set): fire frames out, ranges and status back.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CiA 301/402 subset: statusword decoding, the drive state machine on both sides, frame encoders and parsers.
 #include "hal/linux/can/cia402.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CANopen (CiA 301) and CiA 402 subset for a velocity-mode drive: frames, statusword decoding, state machine. Pure.
 #pragma once
 

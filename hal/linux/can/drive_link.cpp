@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The host's CiA 402 drive bring-up and supervision: SDO configuration, NMT start, controlword stepping, faults.
 #include "hal/linux/can/drive_link.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Host side of one CiA 402 drive: bring-up (SDO, NMT start), controlword stepping, feedback, heartbeat and fault watch. Pure.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Little-endian byte packing of CAN frames (CANopen's byte order), shared by every frame encoder.
 #pragma once
 

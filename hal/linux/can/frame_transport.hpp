@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CAN frame transport: the one interface every CAN frame of robuterd goes through (SocketCAN or loopback).
 #pragma once
 

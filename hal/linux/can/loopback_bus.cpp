@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The in-process bus: fan-out to fixed receive rings, injectable controller state.
 #include "hal/linux/can/loopback_bus.hpp"
 

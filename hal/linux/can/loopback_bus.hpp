@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An in-process CAN bus: every frame sent by one endpoint reaches every other endpoint; bus state injectable.
 #pragma once
 

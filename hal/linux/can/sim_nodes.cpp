@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated drive and sonar nodes: CiA 301 NMT/SDO/heartbeat, CiA 402 state machine and PDOs, sonar frames.
 #include "hal/linux/can/sim_nodes.hpp"
 

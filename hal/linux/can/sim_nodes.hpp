@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simulated CAN nodes for tests: a CiA 402 velocity-mode drive and an ultrasonic node, each on a FrameTransport.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // SocketCAN: open with clear start-up errors, non-blocking read/write, error frames → bus state.
 #include "hal/linux/can/socketcan_transport.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FrameTransport on a Linux SocketCAN raw socket (PF_CAN, SOCK_RAW, CAN_RAW), with controller error frames.
 #pragma once
 

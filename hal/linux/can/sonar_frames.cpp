@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Encoders and parsers of the ultrasonic nodes' frames (little-endian, like CANopen).
 #include "hal/linux/can/sonar_frames.hpp"
 

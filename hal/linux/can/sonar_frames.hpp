@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ultrasonic nodes' CAN frame set (docs/CAN.md): fire with mask, ranges back, node status. Pure.
 #pragma once
 

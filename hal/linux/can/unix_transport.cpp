@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unix datagram CAN transport: server binds the path and answers its last client; client sends to the path.
 #include "hal/linux/can/unix_transport.hpp"
 

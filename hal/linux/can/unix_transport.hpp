@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FrameTransport between processes: classic CAN frames as datagrams on a Unix socket (robuterd ↔ robuter-can-nodes).
 #pragma once
 

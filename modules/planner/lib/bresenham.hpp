@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bresenham's line between two cells, as the thesis rasterises obstacle edges and sonar beams.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A ring of f-buckets with O(1) push, move and pop, for searches with bounded edge costs.
 #pragma once
 

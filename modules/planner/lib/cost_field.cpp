@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reverse Dijkstra from the goal with subtree invalidation for incremental repairs.
 #include "modules/planner/lib/cost_field.hpp"
 

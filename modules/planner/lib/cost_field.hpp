@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Incremental cost-to-goal field: a reverse Dijkstra from the goal, repaired after map changes.
 #pragma once
 

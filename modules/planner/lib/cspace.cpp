@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building and incrementally updating footprint-dilated C-space layers.
 #include "modules/planner/lib/cspace.hpp"
 

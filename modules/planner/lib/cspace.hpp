@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Configuration-space layers: the map's obstacles dilated by a footprint mask, kept as a PassGrid.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cell masks of discs and of rectangles swept over heading intervals.
 #include "modules/planner/lib/footprint.hpp"
 

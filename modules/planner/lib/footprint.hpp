@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Robot footprints as cell masks: the thesis' disc, and the Robuter's rectangle per heading slice.
 #pragma once
 

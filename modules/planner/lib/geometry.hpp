@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small geometric value types shared by the planner library: world points, poses, grid cells.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A* (bucket open list, heap fallback) and the thesis' breadth-first search, on preallocated arrays.
 #include "modules/planner/lib/grid_search.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-shot 2D searches on a PassGrid: optimal A* (octile) and the thesis' breadth-first search.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Jump point search without corner cutting: the optimal mode's engine for uniform costs.
 #include <algorithm>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A* over (cell, heading slice) with in-place turns and a relaxation field as heuristic.
 #include "modules/planner/lib/heading_search.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Optimal search in (x, y, heading slice) for a non-circular robot: seed 004's slices on a grid.
 #pragma once
 

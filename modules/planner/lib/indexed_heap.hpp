@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A 4-ary min-heap of node indexes with decrease-key, preallocated for a fixed node count.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing and reading the "robuter-map 1" saved-map format.
 #include "modules/planner/lib/map_file.hpp"
 

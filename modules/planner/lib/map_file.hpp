@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planner's own saved-map format ("robuter-map 1"): header lines, then hex counts per cell.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parsers for MovingAI .map and .scen files (CRLF tolerated, errors name file and line).
 #include "modules/planner/lib/movingai.hpp"
 

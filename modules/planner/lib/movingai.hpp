@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MovingAI grid benchmark files (Sturtevant 2012): .map grids and .scen scenario lists.
 #pragma once
 

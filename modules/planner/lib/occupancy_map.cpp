@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The occupancy grid: counts, beam integration (seed 003) and the change log.
 #include "modules/planner/lib/occupancy_map.hpp"
 

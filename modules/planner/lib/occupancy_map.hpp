@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The occupancy grid: hit/miss counts per cell (seed 003), free / occupied / unknown, change log.
 #pragma once
 

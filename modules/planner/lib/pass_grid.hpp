@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The searchable grid: a cost class per cell with a blocked border, and 8-neighbour tables.
 #pragma once
 

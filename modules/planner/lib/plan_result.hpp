@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Outcome of a plan: status, cost, geometric length and effort.
 #pragma once
 

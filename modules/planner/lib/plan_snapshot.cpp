@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Copying a plan into a PlanSnapshot: bounded loops over preallocated arrays.
 #include "modules/planner/lib/plan_snapshot.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A plan copied for a picture: the map's cells, the expanded obstacles, the path, start and goal.
 #pragma once
 

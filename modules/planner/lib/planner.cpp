@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planner facade: layers from the map, the right search per footprint, incremental upkeep.
 #include "modules/planner/lib/planner.hpp"
 

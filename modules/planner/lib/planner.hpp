@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planner facade: owns a map, its footprint C-space layers and the searches; plans poses.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Error values and a small Result<T>: the planner library reports failures without exceptions.
 #pragma once
 

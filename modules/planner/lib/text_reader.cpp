@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whole-file reads, line splitting, strict number parsing and a line-counting tokenizer.
 #include "modules/planner/lib/text_reader.hpp"
 

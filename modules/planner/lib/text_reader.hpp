@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading text files for the loaders: whole-file read, line splitting, tokens with line numbers.
 #pragma once
 

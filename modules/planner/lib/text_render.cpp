@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Text rendering of occupancy-map windows in seed 003's characters.
 #include "modules/planner/lib/text_render.hpp"
 

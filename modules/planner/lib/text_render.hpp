@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 003's text picture of a map window: '.' unknown, '#' obstacle, ' ' free, 'P' robot.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Parsers for the thesis' parameter and environment files, and polygon edge rasterisation.
 #include "modules/planner/lib/thesis_files.hpp"
 

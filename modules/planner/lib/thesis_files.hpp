@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seed 000's input files (annex 1): the parameter file and the environment description file.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drawing a PlanSnapshot's cells, path, footprints, start and goal on the plot, world frame.
 #include "modules/planner/picture/plan_drawing.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plan's layers on the plot: cells, grown obstacles, path, footprints, start and goal, with their inks.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A plan's picture: its page in the world frame, its title and outcome, and the PNG or PDF file.
 #include "modules/planner/picture/plan_picture.hpp"
 

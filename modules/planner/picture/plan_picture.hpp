@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures of a plan (cairo), drawn from a PlanSnapshot in the world frame: map, grown obstacles, path, goal, outcome.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Must compile: the control case of writer_outside_owner.cpp, the owner takes its handle.
 #include "kernel/blackboard.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Must NOT compile: a module that is not the topic's owner asks for its writable handle.
 #include "kernel/blackboard.hpp"
 

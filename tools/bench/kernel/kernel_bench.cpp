@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost of the kernel itself: one tick of a seed-sized table on a virtual clock, and topic traffic.
 #include <benchmark/benchmark.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A bare pty that answers each CR-terminated line with one fixed reply: the floor of a pty round trip.
 #include <cerrno>
 #include <csignal>

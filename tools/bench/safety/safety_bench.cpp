@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Safety bench: reaction and ring latency of seeded trials, and the stopped scan time, before/after the watch schedule.
 #include <fmt/format.h>
 

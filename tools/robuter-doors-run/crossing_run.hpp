@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One door crossing on the whole simulated firmware: a world with its start moved, AG until the
 // passage finder ends, Ad until the crossing ends; contact, times and the end pose recorded.
 #pragma once

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The crossing picture: the simulator's renderer with the scans drawn on top (overlay hook) and named in its legend.
-#include "tests/doors_sim/crossing_picture.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
 
 #include <cairo.h>
 

@@ -1,5 +1,6 @@
-// Test harness: the whole firmware on the simulated robot, on a virtual clock, with a client on
-// a real pty — tests step time and talk to robuterd exactly as an operator would.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The whole firmware on the simulated robot, on a virtual clock, with a client on a real pty —
+// tests and robuter-doors-run step time and talk to robuterd exactly as an operator would.
 #pragma once
 
 #include <functional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A picture of a door crossing: the world, the robot's trail and end pose, and pan-tilt scans
 // drawn where their echoes were (each sector from the pose it was fired at).
 #pragma once

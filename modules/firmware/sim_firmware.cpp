@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The harness: temporary pty, firmware on a virtual clock, line-level client.
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
 
 #include <fcntl.h>
 #include <termios.h>

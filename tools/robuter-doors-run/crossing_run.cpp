@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The run: temporary world with the start moved, the firmware with the emulated pan-tilt, AG, Ad.
-#include "tests/doors_sim/crossing_run.hpp"
+#include "tools/robuter-doors-run/crossing_run.hpp"
 
 #include <unistd.h>
 
@@ -14,8 +15,8 @@
 #include "hal/sim/rng.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/emergency/emergency.hpp"
-#include "tests/doors_sim/crossing_picture.hpp"
-#include "tests/support/sim_firmware.hpp"
+#include "modules/firmware/sim_firmware.hpp"
+#include "tools/robuter-doors-run/crossing_picture.hpp"
 
 namespace robuter::test {
 
