@@ -24,7 +24,7 @@ PACKAGE = "robuterd"
 UNIT = "/lib/systemd/system/robuterd.service"
 EXPECTED_FILES = [
     "/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim",
-    "/usr/bin/robuter-doors-run", "/etc/robuterd/robuterd.toml", "/etc/default/robuterd", UNIT,
+    "/usr/bin/robuter-doors-run", "/usr/bin/robuter-can-nodes", "/etc/robuterd/robuterd.toml", "/etc/default/robuterd", UNIT,
     "/usr/lib/sysusers.d/robuterd.conf", "/usr/share/robuterd/worlds/default.toml",
     "/usr/share/robuterd/udev/99-robuterd.rules", "/usr/share/doc/robuterd/INSTALL.md.gz",
 ]
@@ -140,7 +140,7 @@ def main():
         for f in EXPECTED_FILES:
             check(os.path.isfile(f), f"installed: {f}")
         for f in ["/usr/bin/robuterd", "/usr/bin/robuterctl", "/usr/bin/robuter-plan", "/usr/bin/robuter-sim",
-                  "/usr/bin/robuter-doors-run"]:
+                  "/usr/bin/robuter-doors-run", "/usr/bin/robuter-can-nodes"]:
             check(os.access(f, os.X_OK), f"executable: {f}")
         conf = run(["dpkg-query", "-W", "-f=${Conffiles}", PACKAGE]).stdout
         for f in EXPECTED_CONFFILES:
