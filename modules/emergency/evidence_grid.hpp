@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -34,8 +35,16 @@ class EvidenceGrid {
  public:
   explicit EvidenceGrid(const GridSettings& s);
 
-  // Forgets everything (the odometry frame was set, or a fresh start). Work: side² cells.
+  // Forgets everything (a fresh start). Work: side² cells.
   void reset();
+  // The odometry frame was set (AC): the obstacle evidence is carried into the new frame, where
+  // x_new = rotation · x_old + translation, and the window re-placed around `robot` (new frame, m);
+  // free certificates are forgotten (space is certified again by the next readings). A cell of
+  // evidence marks every new cell of its turned square's bounding box: the carried evidence is
+  // never narrower than it was. At most kCarried cells, nearest to the robot first (within 1 m,
+  // then the rest). Work: 2 × side² cells + 9 × kCarried marks.
+  void carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d& translation, const Eigen::Vector2d& robot);
+  static constexpr std::size_t kCarried = 8192;  // cells of evidence carried through a new frame, count
   // Keeps the window around `robot` (odometry frame, m). Work: at most side² cells when it jumps
   // by a whole window, else (columns + rows moved) × side.
   void follow(const Eigen::Vector2d& robot);
@@ -74,7 +83,16 @@ class EvidenceGrid {
   void clear_column(int gx);
   void clear_row(int gy);
 
+  // A cell of evidence on its way into a new frame.
+  struct Carried {
+    Eigen::Vector2d centre;  // cell centre, old frame, m
+    std::uint64_t tick;      // its evidence tick
+  };
+  // Adds the evidence cells of the window within (near) or beyond (!near) `radius` of `robot`
+  // (old frame, m) to carried_, up to kCarried.
+  void collect(const Eigen::Vector2d& robot, double radius, bool near);
   GridSettings s_;
+  std::vector<Carried> carried_;  // scratch of carry(), kCarried reserved at construction
   int mask_ = 255;           // side − 1
   std::vector<Cell> cells_;  // side² cells, slot (gx mod side, gy mod side)
   int ox_ = 0;               // global index of the window's first column

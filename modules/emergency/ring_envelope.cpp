@@ -2,6 +2,8 @@
 // Ring envelope: postures into the pose history, readings into the grid, requests into verdicts.
 #include "modules/emergency/ring_envelope.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
@@ -71,10 +73,19 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
     posture_tick_ = posture.tick;
     const Pose2 p{{posture.x / 10000.0, posture.y / 10000.0}, posture.theta / 100.0 * robot::kDeg};
     const bool first = history_.empty();
+    const Pose2 before = first ? p : history_.at(posture.tick);  // the same moment in the old frame
     if (!history_.add(posture.tick, p, kMaxStepPerTick, kMaxTurnPerTick) || first) {
-      // A new odometry frame (AC) or the first posture: nothing known so far is placed right.
-      if (!first) ++resets_;
-      grid_.reset();
+      // A new odometry frame (AC): the robot did not move, its coordinates did. The obstacle
+      // evidence is carried into the new frame (the box it came to rest against is still there,
+      // inside the blanking range where no reading can see it again); free space and the start
+      // pose are certified again. The first posture: nothing is known yet.
+      if (!first) {
+        ++resets_;
+        const Eigen::Matrix2d rot = Eigen::Rotation2Dd(p.theta - before.theta).toRotationMatrix();
+        grid_.carry(rot, p.p - rot * before.p, p.p);
+      } else {
+        grid_.reset();
+      }
       start_.reset();
       reset_tick_ = posture.tick;
     }

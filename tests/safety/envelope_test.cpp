@@ -2,6 +2,8 @@
 // Unit tests of the envelope: the evidence grid, the swept body and its cap, the gate's two stops.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 
@@ -63,6 +65,40 @@ TEST(EvidenceGrid, AReadingThatDoesNotContradictLeavesEvidenceOneThatDoesClearsI
   EXPECT_EQ(g.state({2.6, 0.0}, 20, kAge), CellState::unknown) << "past the reach";
   g.add_reading(30, {0.0, 0.0}, 0.0, 4.95, true, true);  // allowed to contradict
   EXPECT_EQ(g.state({1.01, 0.0}, 30, kAge), CellState::free);
+}
+
+// AC sets the odometry: the robot stays, its coordinates move. Evidence goes with the world into
+// the new frame (never narrower), free certificates are forgotten.
+TEST(EvidenceGrid, ANewOdometryFrameCarriesTheEvidenceAndForgetsFreeSpace) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);  // evidence at (1.01, 0), free before it
+  ASSERT_EQ(g.state({1.01, 0.0}, 10, kAge), CellState::obstacle);
+  // The new frame: the robot at the origin facing +x becomes (5, -3) facing +y.
+  const Eigen::Matrix2d rot = Eigen::Rotation2Dd(M_PI / 2).toRotationMatrix();
+  const Vector2d trans(5.0, -3.0);
+  g.carry(rot, trans, trans);
+  EXPECT_EQ(g.state({5.0, -3.0 + 1.01}, 10, kAge), CellState::obstacle) << "the box, where it is in the new frame";
+  EXPECT_EQ(g.state({5.0 + 1.01 * std::sin(0.2), -3.0 + 1.01 * std::cos(0.2)}, 10, kAge), CellState::obstacle)
+      << "the whole arc";
+  EXPECT_EQ(g.state({5.0, -3.0 + 0.5}, 10, kAge), CellState::unknown) << "free space is certified again";
+  EXPECT_EQ(g.state({1.01, 0.0}, 10, kAge), CellState::unknown) << "nothing left at the old coordinates";
+  // A turn that is not a quarter turn and a translation off the cells: every point that was
+  // evidence still is, at its new coordinates (sampled at a fifth of a cell).
+  EvidenceGrid before = placed_grid();
+  before.add_reading(10, {0.0, 0.0}, 0.0, 0.60, false, true);
+  EvidenceGrid after = before;
+  const Eigen::Matrix2d r30 = Eigen::Rotation2Dd(0.5236).toRotationMatrix();
+  const Vector2d t(0.013, -0.007);
+  after.carry(r30, t, t);
+  int evidence = 0;
+  for (double x = 0.4; x <= 0.7; x += 0.005) {
+    for (double y = -0.2; y <= 0.2; y += 0.005) {
+      if (before.state({x, y}, 10, kAge) != CellState::obstacle) continue;
+      ++evidence;
+      EXPECT_EQ(after.state(r30 * Vector2d(x, y) + t, 10, kAge), CellState::obstacle) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(evidence, 100);
 }
 
 TEST(EvidenceGrid, TheBodyIsFreeAndTheWindowForgetsWhatItLeaves) {
