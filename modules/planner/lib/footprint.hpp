@@ -50,12 +50,23 @@ FootprintMask disc_mask(double radius, double resolution);
 FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
                              double heading_hi);
 
-// Heading slices of a footprint symmetric under a half turn: slice k is centred on
-// k * pi / slices and covers the headings within half a slice of it.
+// Why: a heading slice's mask. The search's state knows a slice, not which way round the robot
+// faces (an Aligned leg is driven forwards or backwards, so the body's heading is the slice's or
+// the slice's plus pi), and the body is not symmetric under a half turn when its centre is ahead
+// of the rotation centre (the Robuter: 182.5 mm): the cells meeting the rectangle at any heading
+// of [heading_lo, heading_hi] or of [heading_lo + pi, heading_hi + pi]. With center_offset 0 the
+// two are the same set and this is rectangle_mask.
+FootprintMask rectangle_slice_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
+                                   double heading_hi);
+
+// Heading slices over a half turn: slice k is centred on k * pi / slices and covers the headings
+// within half a slice of it, and the same headings plus pi (rectangle_slice_mask).
 double slice_heading(int slice, int slices);
 int slice_of_heading(double heading, int slices);
 
-// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per slice.
+// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per slice, each
+// covering the body both ways round (rectangle_slice_mask), so a (cell, slice) free in the
+// layers is free at every heading of the full turn that the slice stands for.
 std::vector<FootprintMask> rectangle_slices(const RectangleFootprint& rect, double resolution,
                                             int slices);
 
