@@ -119,29 +119,21 @@ FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, 
   return swept_mask(rect, resolution, {&span, 1});
 }
 
-FootprintMask rectangle_slice_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
-                                   double heading_hi) {
-  // A rectangle centred on its rotation centre is the same set a half turn later: one span.
-  if (rect.center_offset == 0.0) return rectangle_mask(rect, resolution, heading_lo, heading_hi);
-  const HeadingSpan spans[2] = {{heading_lo, heading_hi}, {heading_lo + kPi, heading_hi + kPi}};
-  return swept_mask(rect, resolution, spans);
-}
-
-double slice_heading(int slice, int slices) { return slice * kPi / slices; }
+double slice_heading(int slice, int slices) { return slice * 2.0 * kPi / slices; }
 
 int slice_of_heading(double heading, int slices) {
-  const double w = wrap_angle(heading, kPi);
-  const int k = static_cast<int>(std::lround(w / (kPi / slices)));
+  const double w = wrap_angle(heading, 2.0 * kPi);
+  const int k = static_cast<int>(std::lround(w / (2.0 * kPi / slices)));
   return k % slices;
 }
 
 std::vector<FootprintMask> rectangle_slices(const RectangleFootprint& rect, double resolution,
                                             int slices) {
   std::vector<FootprintMask> out;
-  const double half = 0.5 * kPi / slices;
+  const double half = kPi / slices;
   for (int k = 0; k < slices; ++k) {
     const double c = slice_heading(k, slices);
-    out.push_back(rectangle_slice_mask(rect, resolution, c - half, c + half));
+    out.push_back(rectangle_mask(rect, resolution, c - half, c + half));
   }
   return out;
 }

@@ -50,23 +50,15 @@ FootprintMask disc_mask(double radius, double resolution);
 FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
                              double heading_hi);
 
-// Why: a heading slice's mask. The search's state knows a slice, not which way round the robot
-// faces (an Aligned leg is driven forwards or backwards, so the body's heading is the slice's or
-// the slice's plus pi), and the body is not symmetric under a half turn when its centre is ahead
-// of the rotation centre (the Robuter: 182.5 mm): the cells meeting the rectangle at any heading
-// of [heading_lo, heading_hi] or of [heading_lo + pi, heading_hi + pi]. With center_offset 0 the
-// two are the same set and this is rectangle_mask.
-FootprintMask rectangle_slice_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
-                                   double heading_hi);
-
-// Heading slices over a half turn: slice k is centred on k * pi / slices and covers the headings
-// within half a slice of it, and the same headings plus pi (rectangle_slice_mask).
+// Heading slices over the full turn: slice k of S is centred on k * 2pi / S and covers the
+// headings within half a slice of it. The planner's pose is the rotation centre (the Robuter's
+// axle) and the body's centre is ahead of it (center_offset), so the body is not symmetric under
+// a half turn: a slice and the slice a half turn away hold different bodies.
 double slice_heading(int slice, int slices);
 int slice_of_heading(double heading, int slices);
 
-// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per slice, each
-// covering the body both ways round (rectangle_slice_mask), so a (cell, slice) free in the
-// layers is free at every heading of the full turn that the slice stands for.
+// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per full-turn slice,
+// so a (cell, slice) free in the layers is free at every heading of the slice.
 std::vector<FootprintMask> rectangle_slices(const RectangleFootprint& rect, double resolution,
                                             int slices);
 
