@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <span>
 
 #include "modules/planner/lib/geometry.hpp"
 
@@ -56,67 +55,34 @@ FootprintMask disc_mask(double radius, double resolution) {
   });
 }
 
-namespace {
-
-// A heading interval [lo, hi] (rad).
-struct HeadingSpan {
-  double lo;
-  double hi;
-};
-
-// Why: the one construction behind rectangle_mask and rectangle_slice_mask: cells meeting the
-// rectangle (placed from the rotation centre, offset included) at any heading of any of the
-// spans, each sampled every 0.5 degree with the rectangle grown by the largest displacement
-// between its samples, so the union is conservative.
-FootprintMask swept_mask(const RectangleFootprint& rect, double resolution, std::span<const HeadingSpan> spans) {
+FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
+                             double heading_hi) {
   const double a0 = (0.5 * rect.length + rect.margin) / resolution;
   const double b0 = (0.5 * rect.width + rect.margin) / resolution;
   const double off = rect.center_offset / resolution;
   const double radius = std::hypot(std::fabs(off) + a0, b0);
+  const double span = std::max(heading_hi - heading_lo, 0.0);
   const double max_step = 0.5 * kPi / 180.0;
-  struct Sampling {
-    int samples;
-    double step;
-    double grow;
-  };
-  std::vector<Sampling> sampling;
-  double max_grow = 0.0;
-  for (const HeadingSpan& s : spans) {
-    const double span = std::max(s.hi - s.lo, 0.0);
-    const int samples = static_cast<int>(std::ceil(span / max_step)) + 1;
-    const double step = samples > 1 ? span / (samples - 1) : 0.0;
-    const double grow = radius * 0.5 * step;  // largest displacement to the nearest sample
-    sampling.push_back({samples, step, grow});
-    max_grow = std::max(max_grow, grow);
-  }
-  const int reach = static_cast<int>(std::ceil(radius + max_grow + 1.0));
+  const int samples = static_cast<int>(std::ceil(span / max_step)) + 1;
+  const double step = samples > 1 ? span / (samples - 1) : 0.0;
+  const double grow = radius * 0.5 * step;  // largest displacement to the nearest sample
+  const double a = a0 + grow, b = b0 + grow;
+  const int reach = static_cast<int>(std::ceil(radius + grow + 1.0));
   // Mark the cells met at each sampled heading (trigonometry once per sample), then read runs.
   const int side = 2 * reach + 1;
   std::vector<std::uint8_t> met(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
-  for (std::size_t k = 0; k < spans.size(); ++k) {
-    const Sampling& sm = sampling[k];
-    const double a = a0 + sm.grow, b = b0 + sm.grow;
-    for (int i = 0; i < sm.samples; ++i) {
-      const double th = spans[k].lo + sm.step * i;
-      const double c = std::cos(th), sn = std::sin(th);
-      for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx) {
-          std::uint8_t& cell = met[static_cast<std::size_t>((dy + reach) * side + (dx + reach))];
-          if (!cell && square_meets_rectangle(dx, dy, off * c, off * sn, c, sn, a, b)) cell = 1;
-        }
-    }
+  for (int i = 0; i < samples; ++i) {
+    const double th = heading_lo + step * i;
+    const double c = std::cos(th), sn = std::sin(th);
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        std::uint8_t& cell = met[static_cast<std::size_t>((dy + reach) * side + (dx + reach))];
+        if (!cell && square_meets_rectangle(dx, dy, off * c, off * sn, c, sn, a, b)) cell = 1;
+      }
   }
   return mask_from(reach, [&](int dx, int dy) {
     return (dx == 0 && dy == 0) || met[static_cast<std::size_t>((dy + reach) * side + (dx + reach))] != 0;
   });
-}
-
-}  // namespace
-
-FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
-                             double heading_hi) {
-  const HeadingSpan span{heading_lo, heading_hi};
-  return swept_mask(rect, resolution, {&span, 1});
 }
 
 double slice_heading(int slice, int slices) { return slice * 2.0 * kPi / slices; }
