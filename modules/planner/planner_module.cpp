@@ -221,7 +221,7 @@ bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
     const int k = planner_.slices();
     const plan::Cell c = planner_.map().cell_of({pose.x, pose.y});
     if (!planner_.map().contains(c)) return false;
-    const double step = plan::kPi / k;
+    const double step = 2.0 * plan::kPi / k;
     const double lo = std::min(pose.heading, target), hi = std::max(pose.heading, target);
     for (double h = lo; h < hi + step; h += step) {
       const int slice = plan::slice_of_heading(std::min(h, hi), k);

@@ -69,7 +69,7 @@ std::size_t build_legs(std::span<const plan::Waypoint> prefix, double heading, i
     leg.end = {prefix[i].pose.x, prefix[i].pose.y};
     if (slices > 0) {
       // Rectangle: the turns sweep the slices the path checked; then face d or d + π.
-      const double turned = h + pending * plan::kPi / slices;
+      const double turned = h + pending * 2.0 * plan::kPi / slices;
       const double fwd = nearest_turn(d, turned), back = nearest_turn(d + plan::kPi, turned);
       leg.forward = std::abs(fwd - turned) <= std::abs(back - turned);
       leg.heading = leg.forward ? fwd : back;

@@ -31,7 +31,8 @@ std::size_t visible_prefix(const plan::OccupancyMap& map, std::span<const plan::
 // Why: a path is cells with heading slices; the robot executes "turn in place, drive straight".
 // Consecutive moves along one direction make one leg; turns between slices (rectangle) pick the
 // heading to face: the move's direction or its opposite, whichever the path's turns lead to
-// (`heading` = the robot's unwrapped heading at the start, `slices` = K, 0 for a disc, which
+// (`heading` = the robot's unwrapped heading at the start, `slices` = the planner's full-turn
+// slices (2K), 0 for a disc, which
 // always drives forward). Writes at most out.size() legs and returns how many; `used` = how
 // many waypoints those legs cover (fewer than the prefix when `out` is full).
 std::size_t build_legs(std::span<const plan::Waypoint> prefix, double heading, int slices, std::span<Leg> out,

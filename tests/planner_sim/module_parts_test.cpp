@@ -111,12 +111,12 @@ TEST(MapWindow, SameCharactersAsTheLibrarysTextView) {
   EXPECT_EQ(out[0], '.');
 }
 
-// Waypoints of a hand-made rectangle path (K = 16): cells and slices.
+// Waypoints of a hand-made rectangle path (K = 16: 32 slices over the full turn): cells and slices.
 std::vector<plan::Waypoint> path_of(const plan::OccupancyMap& map, std::initializer_list<plan::CellPose> cells) {
   std::vector<plan::Waypoint> w;
   for (const plan::CellPose& c : cells) {
     const plan::Point2 p = map.center({c.x, c.y});
-    w.push_back({c, {p.x, p.y, plan::slice_heading(c.slice, 16)}});
+    w.push_back({c, {p.x, p.y, plan::slice_heading(c.slice, 32)}});
   }
   return w;
 }
@@ -128,7 +128,7 @@ TEST(Route, StraightRunsMakeOneLegAndTurnsSetTheNextHeading) {
                                   {13, 10, 3}, {13, 10, 4}, {14, 11, 4}, {15, 12, 4}});
   std::array<Leg, 8> legs{};
   std::size_t used = 0;
-  const std::size_t n = build_legs(path, 0.02, 16, legs, used);
+  const std::size_t n = build_legs(path, 0.02, 32, legs, used);
   ASSERT_EQ(n, 2u);
   EXPECT_EQ(used, path.size());
   EXPECT_TRUE(legs[0].forward);
@@ -141,19 +141,19 @@ TEST(Route, StraightRunsMakeOneLegAndTurnsSetTheNextHeading) {
 
 TEST(Route, TheLongWayRoundIsKept) {
   const plan::OccupancyMap map = small_map();
-  // Clockwise by 12 slices (135°) from slice 0 to slice 4, then along (+1, +1): the robot
-  // faces -135° and backs north-east; it does not turn 45° counter-clockwise instead.
+  // Clockwise by 12 slices (135°) from slice 0 to slice 20 (-135°), then along (+1, +1): the
+  // robot faces -135° and backs north-east; it does not turn 45° counter-clockwise instead.
   std::vector<plan::CellPose> cells = {{10, 10, 0}};
-  for (int k = 1; k <= 12; ++k) cells.push_back({10, 10, (16 - k) % 16});
-  cells.push_back({11, 11, 4});
+  for (int k = 1; k <= 12; ++k) cells.push_back({10, 10, (32 - k) % 32});
+  cells.push_back({11, 11, 20});
   std::vector<plan::Waypoint> path;
   for (const plan::CellPose& c : cells) {
     const plan::Point2 p = map.center({c.x, c.y});
-    path.push_back({c, {p.x, p.y, plan::slice_heading(c.slice, 16)}});
+    path.push_back({c, {p.x, p.y, plan::slice_heading(c.slice, 32)}});
   }
   std::array<Leg, 4> legs{};
   std::size_t used = 0;
-  ASSERT_EQ(build_legs(path, 0.0, 16, legs, used), 1u);
+  ASSERT_EQ(build_legs(path, 0.0, 32, legs, used), 1u);
   EXPECT_NEAR(legs[0].heading, -3 * plan::kPi / 4, 1e-12);
   EXPECT_FALSE(legs[0].forward);
 }
@@ -163,11 +163,11 @@ TEST(Route, MovingAgainstTheHeadingIsBacking) {
   const auto path = path_of(map, {{10, 10, 0}, {9, 10, 0}, {8, 10, 0}});  // west, slice 0 (heading 0)
   std::array<Leg, 4> legs{};
   std::size_t used = 0;
-  ASSERT_EQ(build_legs(path, 0.0, 16, legs, used), 1u);
+  ASSERT_EQ(build_legs(path, 0.0, 32, legs, used), 1u);
   EXPECT_FALSE(legs[0].forward);
   EXPECT_NEAR(legs[0].heading, 0.0, 1e-12);
   // A robot facing west (heading π) drives the same path forward.
-  ASSERT_EQ(build_legs(path, plan::kPi, 16, legs, used), 1u);
+  ASSERT_EQ(build_legs(path, plan::kPi, 32, legs, used), 1u);
   EXPECT_TRUE(legs[0].forward);
   EXPECT_NEAR(legs[0].heading, plan::kPi, 1e-12);
   // A disc always drives forward: it turns to face west.

@@ -85,18 +85,18 @@ FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, 
   });
 }
 
-double slice_heading(int slice, int slices) { return slice * kPi / slices; }
+double slice_heading(int slice, int slices) { return slice * 2.0 * kPi / slices; }
 
 int slice_of_heading(double heading, int slices) {
-  const double w = wrap_angle(heading, kPi);
-  const int k = static_cast<int>(std::lround(w / (kPi / slices)));
+  const double w = wrap_angle(heading, 2.0 * kPi);
+  const int k = static_cast<int>(std::lround(w / (2.0 * kPi / slices)));
   return k % slices;
 }
 
 std::vector<FootprintMask> rectangle_slices(const RectangleFootprint& rect, double resolution,
                                             int slices) {
   std::vector<FootprintMask> out;
-  const double half = 0.5 * kPi / slices;
+  const double half = kPi / slices;
   for (int k = 0; k < slices; ++k) {
     const double c = slice_heading(k, slices);
     out.push_back(rectangle_mask(rect, resolution, c - half, c + half));

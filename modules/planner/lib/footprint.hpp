@@ -50,12 +50,15 @@ FootprintMask disc_mask(double radius, double resolution);
 FootprintMask rectangle_mask(const RectangleFootprint& rect, double resolution, double heading_lo,
                              double heading_hi);
 
-// Heading slices of a footprint symmetric under a half turn: slice k is centred on
-// k * pi / slices and covers the headings within half a slice of it.
+// Heading slices over the full turn: slice k of S is centred on k * 2pi / S and covers the
+// headings within half a slice of it. The planner's pose is the rotation centre (the Robuter's
+// axle) and the body's centre is ahead of it (center_offset), so the body is not symmetric under
+// a half turn: a slice and the slice a half turn away hold different bodies.
 double slice_heading(int slice, int slices);
 int slice_of_heading(double heading, int slices);
 
-// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per slice.
+// Why: seed 004's (x, y, theta) slices on a grid: one swept rectangle mask per full-turn slice,
+// so a (cell, slice) free in the layers is free at every heading of the slice.
 std::vector<FootprintMask> rectangle_slices(const RectangleFootprint& rect, double resolution,
                                             int slices);
 

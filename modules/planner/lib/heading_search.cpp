@@ -11,7 +11,7 @@ namespace robuter::plan {
 
 std::uint8_t allowed_moves(int slice, int slices, MotionModel motion) {
   if (motion == MotionModel::Holonomic) return 0xFF;
-  const double half = 0.5 * kPi / slices + 1e-9;
+  const double half = kPi / slices + 1e-9;  // half of a full-turn slice
   const double th = slice_heading(slice, slices);
   std::uint8_t bits = 0;
   for (int m = 0; m < 8; ++m) {

@@ -20,13 +20,13 @@ void Planner::set_map(const OccupancyMap& map) {
     masks_resolution_ = res;
     masks_.clear();
     if (cfg_.footprint == FootprintKind::Disc) masks_.push_back(disc_mask(cfg_.radius, res));
-    else masks_ = rectangle_slices(cfg_.rectangle, res, cfg_.heading_slices);
+    else masks_ = rectangle_slices(cfg_.rectangle, res, full_turn_slices());
     relaxation_mask_ = disc_mask(inscribed_radius(cfg_.rectangle), res);
     turn_masks_.clear();
     if (cfg_.footprint == FootprintKind::Rectangle && cfg_.turn_clearance > 0.0) {
       RectangleFootprint grown = cfg_.rectangle;
       grown.margin += cfg_.turn_clearance;
-      turn_masks_ = rectangle_slices(grown, res, cfg_.heading_slices);
+      turn_masks_ = rectangle_slices(grown, res, full_turn_slices());
     }
   }
   layers_.resize(masks_.size());
@@ -44,7 +44,7 @@ void Planner::set_map(const OccupancyMap& map) {
   field_.reserve(w, h);
   field_ready_ = false;
   grid_search_.reserve(w, h);
-  if (cfg_.footprint == FootprintKind::Rectangle) heading_search_.reserve(w, h, cfg_.heading_slices);
+  if (cfg_.footprint == FootprintKind::Rectangle) heading_search_.reserve(w, h, full_turn_slices());
   cells_.reserve(map_.cell_count() + 1);
   waypoints_.reserve(2 * map_.cell_count() + layers_.size());
 }
@@ -110,7 +110,7 @@ PlanResult Planner::plan(const Pose2& start, Point2 goal) {
     if (r.found()) fill_waypoints_2d(cells_);
     return r;
   }
-  const int k = slice_of_heading(start.heading, cfg_.heading_slices);
+  const int k = slice_of_heading(start.heading, full_turn_slices());
   const PassGrid& relax = relaxation_.grid();
   const CostField* h = nullptr;
   if (relax.contains(g)) {
@@ -119,7 +119,7 @@ PlanResult Planner::plan(const Pose2& start, Point2 goal) {
   }
   HeadingOptions opt;
   opt.motion = cfg_.motion;
-  opt.rotation_step_cost = cfg_.rotation_cost * (kPi / cfg_.heading_slices) / map_.resolution();
+  opt.rotation_step_cost = cfg_.rotation_cost * (2.0 * kPi / full_turn_slices()) / map_.resolution();
   r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h, turn_grids_);
   if (r.found()) fill_waypoints_3d(heading_search_.path());
   return r;
@@ -139,7 +139,7 @@ void Planner::fill_waypoints_2d(const std::vector<Cell>& cells) {
 void Planner::fill_waypoints_3d(const std::vector<CellPose>& cells) {
   for (const CellPose& c : cells) {
     const Point2 p = map_.center({c.x, c.y});
-    waypoints_.push_back({c, Pose2{p.x, p.y, slice_heading(c.slice, cfg_.heading_slices)}});
+    waypoints_.push_back({c, Pose2{p.x, p.y, slice_heading(c.slice, full_turn_slices())}});
   }
 }
 

@@ -28,7 +28,9 @@ struct PlannerConfig {
   FootprintKind footprint = FootprintKind::Disc;  // robot model
   double radius = 0.30;                           // m, disc radius (Disc)
   RectangleFootprint rectangle{};                 // m, body (Rectangle)
-  int heading_slices = 16;                        // slices over a half turn (Rectangle)
+  int heading_slices = 16;                        // slices over a half turn (Rectangle); the
+                                                  // layers and the search hold twice as many,
+                                                  // over the full turn (slices())
   MotionModel motion = MotionModel::Aligned;      // moves within a slice (Rectangle)
   double rotation_cost = 0.30;                    // m of path per rad turned in place (Rectangle)
   double turn_clearance = 0.0;                    // m, extra room all round the body needed to
@@ -78,6 +80,9 @@ class Planner {
   // layer when no turn clearance is configured).
   const PassGrid& turnable(int slice = 0) const;
   int slices() const { return static_cast<int>(layers_.size()); }
+  // Why: the rectangle's slices over the full turn (the body is not symmetric under a half
+  // turn: its centre is ahead of the axle, the pose).
+  int full_turn_slices() const { return 2 * cfg_.heading_slices; }
   const CostField& field() const { return field_; }
 
  private:
