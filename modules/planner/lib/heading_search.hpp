@@ -57,7 +57,7 @@ class HeadingSearch {
   static constexpr int kTileCells = 1 << (2 * kTileShift);  // cells per tile
   // States the pool holds by default: 262,144 (17 bytes each with the bucket ring, 37 with the
   // heap; resident only where a search writes). The seed 000 lab run's largest search took
-  // 111 k (217 pages of 512); see docs/PLANNER.md.
+  // 108 k (211 pages of 512); see docs/PLANNER.md.
   static constexpr std::size_t kDefaultStateBudget = std::size_t{1} << 18;
 
   // Why: size every buffer for slices of width x height (the only allocation); `state_budget`
