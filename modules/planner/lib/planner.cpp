@@ -43,9 +43,13 @@ void Planner::set_map(const OccupancyMap& map) {
   field_changes_.reserve(map_.cell_count());
   field_.reserve(w, h);
   field_ready_ = false;
-  grid_search_.reserve(w, h);
-  if (cfg_.footprint == FootprintKind::Rectangle) heading_search_.reserve(w, h, full_turn_slices());
-  cells_.reserve(map_.cell_count() + 1);
+  // Each footprint reserves only the search it uses (the rectangle never runs the 2D one).
+  if (cfg_.footprint == FootprintKind::Rectangle) {
+    heading_search_.reserve(w, h, full_turn_slices());
+  } else {
+    grid_search_.reserve(w, h);
+    cells_.reserve(map_.cell_count() + 1);
+  }
   waypoints_.reserve(2 * map_.cell_count() + layers_.size());
 }
 
