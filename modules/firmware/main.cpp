@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "cli/parse_or_usage.hpp"
 #include "kernel/config.hpp"
 #include "kernel/log.hpp"
 #include "kernel/realtime.hpp"
@@ -61,11 +62,7 @@ int main(int argc, char** argv) {
   app.add_option("--log-level", log_level, "debug, info, warn, error or off (overrides the configuration)");
   app.add_flag("--check-config", check_only, "validate the configuration and exit");
   app.add_flag("--version", version, "print the version and exit");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitUsage;
-  }
+  if (const auto status = cli::parse_or_usage(app, argc, argv)) return *status;  // kExitOk or kExitUsage
   if (version) {
     fmt::print("robuterd {}\n", ROBUTER_VERSION);
     return kExitOk;
