@@ -12,6 +12,7 @@
 #include "cli/parse_or_usage.hpp"
 #include "kernel/config.hpp"
 #include "kernel/log.hpp"
+#include "kernel/memory_usage.hpp"
 #include "kernel/realtime.hpp"
 #include "kernel/signals.hpp"
 #include "modules/firmware/firmware.hpp"
@@ -147,6 +148,9 @@ int main(int argc, char** argv) {
   if (const int sig = signals::stop_signal()) log::info("robuterd: {} received: stopped cleanly", signals::name(sig));
   log::info("robuterd stopped after {} ticks", fw.kernel().tick());
   log::stop();
-  if (stats) fw.kernel().print_stats(stdout);
+  if (stats) {
+    fw.kernel().print_stats(stdout);
+    if (const auto kb = peak_rss_kb()) fmt::print("peak memory (VmHWM) {} kB\n", *kb);
+  }
   return status == 0 ? kExitOk : kExitRuntime;
 }
