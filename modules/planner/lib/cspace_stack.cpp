@@ -29,17 +29,6 @@ void CSpaceStack::rebuild(const OccupancyMap& map) {
   }
 }
 
-std::uint16_t CSpaceStack::count(int x0, int y0, int x1, int y1) const {
-  x0 = std::max(x0, 0);
-  y0 = std::max(y0, 0);
-  x1 = std::min(x1, w_ - 1);
-  y1 = std::min(y1, h_ - 1);
-  if (x0 > x1 || y0 > y1) return 0;
-  const std::uint16_t* a = sat_.data() + static_cast<std::size_t>(y0) * stride_;
-  const std::uint16_t* b = sat_.data() + static_cast<std::size_t>(y1 + 1) * stride_;
-  return static_cast<std::uint16_t>(b[x1 + 1] - b[x0] - a[x1 + 1] + a[x0]);
-}
-
 void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells) {
   bool moved = false;
   for (std::uint32_t o : cells) {

@@ -42,7 +42,16 @@ class CSpaceStack {
   }
   // Why: occupied cells in columns [x0, x1] of rows [y0, y1], clipped to the map (wraps past
   // 65,535 cells: callers ask about rectangles smaller than that, or only compare with 0).
-  std::uint16_t count(int x0, int y0, int x1, int y1) const;
+  std::uint16_t count(int x0, int y0, int x1, int y1) const {
+    x0 = x0 < 0 ? 0 : x0;
+    y0 = y0 < 0 ? 0 : y0;
+    x1 = x1 >= w_ ? w_ - 1 : x1;
+    y1 = y1 >= h_ ? h_ - 1 : y1;
+    if (x0 > x1 || y0 > y1) return 0;
+    const std::uint16_t* a = sat_.data() + static_cast<std::size_t>(y0) * stride_;
+    const std::uint16_t* b = sat_.data() + static_cast<std::size_t>(y1 + 1) * stride_;
+    return static_cast<std::uint16_t>(b[x1 + 1] - b[x0] - a[x1 + 1] + a[x0]);
+  }
   // Why: one row's run, the layers' inner test.
   bool any_in_row(int y, int x0, int x1) const { return count(x0, y, x1, y) != 0; }
   bool occupied(int x, int y) const { return any_in_row(y, x, x); }
