@@ -188,5 +188,39 @@ TEST(CSpaceStack, PlannerLayersAfterSyncsEqualAFreshPlanner) {
   }
 }
 
+// Why: the disc planner's one layer after syncs equals a fresh build, and its incremental cost
+// field, repaired from the layer's reports at every sync, gives the plan a fresh planner gives.
+TEST(CSpaceStack, DiscPlannerAfterSyncsEqualsAFreshPlanner) {
+  PlannerConfig cfg;
+  cfg.footprint = FootprintKind::Disc;
+  cfg.radius = 0.30;
+  cfg.unknown_cost = 1.5;
+  Planner p(cfg);
+  OccupancyMap start(MapGeometry{60, 45, 0.05, {}});
+  for (int y = 0; y < 45; ++y)
+    for (int x = 0; x < 60; ++x)
+      if ((x / 9 + y / 7) % 3 != 0) start.mark_free({x, y});
+  std::mt19937 rng(21);
+  random_batch(start, rng, 30, 10);
+  start.clear_changes();
+  p.set_map(start);
+  const Pose2 from{0.3, 0.3, 0.0};
+  const Point2 goal{2.7, 1.9};
+  for (int batch = 0; batch < 30; ++batch) {
+    p.plan(from, goal);  // the field to the goal exists, later syncs repair it
+    random_batch(p.map(), rng, 8, 10);
+    p.sync();
+    Planner fresh(cfg);
+    fresh.set_map(p.map());
+    ASSERT_EQ(p.expanded(0).cls, fresh.expanded(0).cls) << "batch " << batch;
+    const PlanResult a = p.plan(from, goal);
+    const PlanResult b = fresh.plan(from, goal);
+    ASSERT_EQ(a.status, b.status) << "batch " << batch;
+    if (a.found()) {
+      ASSERT_NEAR(a.cost, b.cost, 1e-9) << "batch " << batch;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace robuter::plan
