@@ -26,9 +26,14 @@ const auto* const kPictureCaches = ::testing::AddGlobalTestEnvironment(new Pictu
 
 // The map covers the lab with half a metre to spare; odometry is set to the world's frame.
 // ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule (the comparison of docs/SAFETY.md §13).
+// Measurements by hand (docs/PLANNER.md "Seed 003's numbers"): ROBUTER_PLANNER_COUNTS=INITIAL,THRESHOLD
+// sets [planner] initial_count and hit_threshold, ROBUTER_PLANNER_BEAM_RANGE_MM its beam_range_mm.
 Config lab_config() {
   Config cfg;
   if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
+  if (const char* counts = std::getenv("ROBUTER_PLANNER_COUNTS"))
+    std::sscanf(counts, "%u,%u", &cfg.planner.initial_count, &cfg.planner.hit_threshold);
+  if (const char* range = std::getenv("ROBUTER_PLANNER_BEAM_RANGE_MM")) cfg.planner.beam_range_mm = std::atoi(range);
   cfg.planner.map_origin_x_mm = -500;
   cfg.planner.map_origin_y_mm = -500;
   cfg.planner.map_width_mm = 19'000;
@@ -38,6 +43,7 @@ Config lab_config() {
 
 // (a) From (2.5, 2.0) to (15.0, 5.5) with nothing known: the robot scans, plans, follows what it
 // can see, and replans until it arrives, never touching anything and never tripping the gate.
+// ROBUTER_SONAR_NOISE_SEED=N (by hand) turns the simulator's sonar noise on with seed N.
 // The firmware's pictures (robuterd --planner-pictures) go to a temporary folder, or to
 // $ROBUTER_PLANNER_PICTURES (kept) to look at them: one PNG per plan, first and replans.
 TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
@@ -46,7 +52,12 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
       keep != nullptr ? std::filesystem::path(keep) : std::filesystem::temp_directory_path() /
                                              ("robuter-planner-pictures-" + std::to_string(::getpid()));
   if (keep == nullptr) std::filesystem::remove_all(pictures);
-  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), {}, false, pictures.string());
+  hal::SimOptions sim;
+  if (const char* seed = std::getenv("ROBUTER_SONAR_NOISE_SEED")) {
+    sim.sonar_noise = true;
+    sim.seed = std::strtoull(seed, nullptr, 10);
+  }
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), sim, false, pictures.string());
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
   fw.run_ticks(5);
