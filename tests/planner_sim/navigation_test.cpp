@@ -27,13 +27,16 @@ const auto* const kPictureCaches = ::testing::AddGlobalTestEnvironment(new Pictu
 // The map covers the lab with half a metre to spare; odometry is set to the world's frame.
 // ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule (the comparison of docs/SAFETY.md §13).
 // Measurements by hand (docs/PLANNER.md "Seed 003's numbers"): ROBUTER_PLANNER_COUNTS=INITIAL,THRESHOLD
-// sets [planner] initial_count and hit_threshold, ROBUTER_PLANNER_BEAM_RANGE_MM its beam_range_mm.
+// sets [planner] initial_count and hit_threshold, ROBUTER_PLANNER_BEAM_RANGE_MM its beam_range_mm,
+// ROBUTER_COMM_LIMIT_TICKS [emergency] comm_limit_ticks (the test says nothing for the whole run:
+// past 3 min the link watchdog ends it, "stopped").
 Config lab_config() {
   Config cfg;
   if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
   if (const char* counts = std::getenv("ROBUTER_PLANNER_COUNTS"))
     std::sscanf(counts, "%u,%u", &cfg.planner.initial_count, &cfg.planner.hit_threshold);
   if (const char* range = std::getenv("ROBUTER_PLANNER_BEAM_RANGE_MM")) cfg.planner.beam_range_mm = std::atoi(range);
+  if (const char* limit = std::getenv("ROBUTER_COMM_LIMIT_TICKS")) cfg.emergency.comm_limit_ticks = std::atoi(limit);
   cfg.planner.map_origin_x_mm = -500;
   cfg.planner.map_origin_y_mm = -500;
   cfg.planner.map_width_mm = 19'000;
@@ -64,9 +67,9 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
   const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000");
   std::printf("seed000 lab: state %d, %u plans (%u replans), %u scans, %.1f s simulated, %.2f m driven, "
-              "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures\n",
+              "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures, %u trips\n",
               static_cast<int>(r.state), r.plans, r.plans ? r.plans - 1 : 0, r.scans, r.seconds, r.travelled,
-              r.min_clearance, r.final_error, r.run_us_max, r.pictures);
+              r.min_clearance, r.final_error, r.run_us_max, r.pictures, r.trips);
   std::printf("plan times (us): %s\n", r.plan_times.c_str());
   EXPECT_EQ(r.state, PlannerState::reached);
   EXPECT_FALSE(r.bumper);
