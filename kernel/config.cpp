@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -36,6 +37,12 @@ class Binder {
   Binder(const std::string& file, const toml::table& root) : file_(file), root_(root) {}
 
   const std::optional<ConfigError>& error() const { return error_; }
+  const std::string& file() const { return file_; }
+  // The line of `key` in the file, 0 when it is not written.
+  int line_of(const std::string& key) const {
+    const toml::node* n = root_.at_path(key).node();
+    return n ? static_cast<int>(n->source().begin.line) : 0;
+  }
 
   // An integer key within [lo, hi].
   template <typename T>
@@ -288,6 +295,8 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
   b.integer("planner.turn_clearance_mm", p.turn_clearance_mm, 0, 1000);
   b.integer("planner.heading_slices", p.heading_slices, 4, 64);
   b.integer("planner.hit_threshold", p.hit_threshold, 1, 254);
+  b.integer("planner.initial_count", p.initial_count, 0, 253);
+  b.string("planner.map_file", p.map_file);
   b.integer("planner.scan_passes", p.scan_passes, 1, 20);
   b.integer("planner.beam_range_mm", p.beam_range_mm, 200, 10'000);
   b.integer("planner.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
@@ -296,12 +305,22 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
   b.integer("planner.drive_speed_cm_s", p.drive_speed_cm_s, 1, 100);
   b.integer("planner.turn_speed_cm_s", p.turn_speed_cm_s, 1, 100);
   if (b.error()) return;
-  // Limits (docs/PLANNER.md "Limits"): a disc planner up to 1 M cells (~130 B each); a rectangle
-  // planner up to 512 x 512 cells: ~(4 x heading_slices + 1) B of layers + ~60 B per cell (about
-  // 33 MB at 16 slices) and, the tighter bound, its goal's cost field in one activation (the lab's
-  // 83,600 cells take 4-6 ms: 262,144 about 12-18 ms of the planner's 20 ms budget).
+  if (p.initial_count >= p.hit_threshold)
+    return b.fail_key("planner.initial_count", fmt::format("{} must be less than planner.hit_threshold {} (a first miss "
+                                                           "would make a cell an obstacle)", p.initial_count, p.hit_threshold));
+  // Decided: a relative map_file is relative to the configuration file's folder (as a unit
+  // file's paths are to nothing in particular, the configuration travels with its map).
+  if (!p.map_file.empty()) {
+    p.map_file_line = b.line_of("planner.map_file");
+    const std::filesystem::path f(p.map_file);
+    if (f.is_relative()) p.map_file = (std::filesystem::path(b.file()).parent_path() / f).lexically_normal().string();
+    const char* keys[] = {"planner.map_origin_x_mm", "planner.map_origin_y_mm", "planner.map_width_mm",
+                          "planner.map_height_mm", "planner.cell_mm"};
+    for (std::size_t i = 0; i < p.geometry_lines.size(); ++i) p.geometry_lines[i] = b.line_of(keys[i]);
+    return;  // the map's size is checked against the file's header (modules/planner/prior_map.cpp)
+  }
   const long long cells = static_cast<long long>(p.map_width_mm / p.cell_mm) * (p.map_height_mm / p.cell_mm);
-  const long long limit = p.footprint == "disc" ? 1'000'000 : 262'144;
+  const long long limit = planner_cell_limit(p);
   if (cells > limit)
     b.fail_key("planner.map_width_mm", fmt::format("a map of {} cells is too large for the {} planner (at most {})",
                                                    cells, p.footprint, limit));
@@ -466,6 +485,15 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 }
 
 }  // namespace
+
+// Memory per cell (docs/PLANNER.md): about 45 B per full-turn heading slice (2 x heading_slices:
+// the body is not symmetric under a half turn) plus 60 B for the rectangle, 130 B for a disc;
+// keep the planner within about 200 MB.
+// Limits (docs/PLANNER.md "Limits"): a disc planner up to 1 M cells (~130 B each); a rectangle
+// planner up to 512 x 512 cells: ~(4 x heading_slices + 1) B of layers + ~60 B per cell (about
+// 33 MB at 16 slices) and, the tighter bound, its goal's cost field in one activation (the lab's
+// 83,600 cells take 4-6 ms: 262,144 about 12-18 ms of the planner's 20 ms budget).
+long long planner_cell_limit(const PlannerModuleConfig& p) { return p.footprint == "disc" ? 1'000'000 : 262'144; }
 
 robot::RobotModel robot_model(const Config& c) {
   const auto m = [](std::int64_t v) { return static_cast<double>(v) / 1000.0; };

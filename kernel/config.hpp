@@ -154,6 +154,10 @@ struct PlannerModuleConfig {
   std::uint32_t turn_clearance_mm = 250; // more clearance needed to turn in place, mm
   std::uint32_t heading_slices = 16;     // heading slices over a half turn (rectangle)
   std::uint32_t hit_threshold = 2;       // net sonar hits that make a cell an obstacle
+  std::uint32_t initial_count = 0;       // count a never-seen cell starts from when a beam first touches it (seed 003: 5)
+  std::string map_file;                  // a-priori map ("robuter-map 1", odometry frame), resolved against the configuration's folder; empty = none
+  int map_file_line = 0;                 // line of planner.map_file in the configuration (0: not written)
+  std::array<int, 5> geometry_lines{};   // lines of map_origin_x_mm, map_origin_y_mm, map_width_mm, map_height_mm, cell_mm in the configuration (0: not written)
   std::uint32_t scan_passes = 2;         // full ring passes waited for at each stop
   std::uint32_t beam_range_mm = 2500;    // readings marked up to this range, mm
   std::uint32_t beam_half_angle_centideg = static_cast<std::uint32_t>(robot::centideg(robot::kRobuter.ring.half_angle));  // ring sonar cone half-angle, 0.01° (0: axis only)
@@ -162,6 +166,10 @@ struct PlannerModuleConfig {
   std::uint32_t drive_speed_cm_s = 20;   // fastest wheel while driving, cm/s
   std::uint32_t turn_speed_cm_s = 10;    // fastest wheel while turning in place, cm/s
 };
+
+// Why: the largest map (cells) the planner may be sized for, about 200 MB: checked for the
+// configured map and for an a-priori map file alike.
+long long planner_cell_limit(const PlannerModuleConfig& p);
 
 // A serial command link ([links.serial]; docs/HARDWARE.md).
 struct SerialLinkConfig {

@@ -30,6 +30,7 @@
 #include "modules/notify/notify_module.hpp"
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
+#include "modules/planner/prior_map.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/gate/gate_module.hpp"
@@ -147,6 +148,15 @@ std::optional<std::string> Firmware::setup_hardware() {
 }
 
 std::optional<std::string> Firmware::setup() {
+  // The a-priori map first: it decides the planner's geometry, which the link's goal check and
+  // the planner module are built from (docs/PLANNER.md "The module").
+  std::optional<plan::OccupancyMap> prior_map;
+  if (!cfg_.planner.map_file.empty()) {
+    auto loaded = planner::load_prior_map(cfg_.planner, cfg_.source);
+    if (!loaded) return "configuration error: planner.map_file: " + loaded.error().text();
+    planner_map_note_ = std::move(loaded->note);
+    prior_map = std::move(loaded->map);
+  }
   if (opt_.speed == 0.0) clock_ = std::make_unique<VirtualClock>();
   else if (opt_.speed == 1.0) clock_ = std::make_unique<RealClock>();
   else clock_ = std::make_unique<ScaledClock>(opt_.speed);
@@ -232,6 +242,7 @@ std::optional<std::string> Firmware::setup() {
   auto emergency = std::make_unique<EmergencyModule>(bb_, bumpers, cfg_.emergency, cfg_.robot);
   auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
+  if (prior_map) planner->set_prior_map(std::move(*prior_map));
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));
   auto gate = std::make_unique<GateModule>(bb_, cfg_);
   auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());

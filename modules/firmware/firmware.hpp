@@ -85,10 +85,13 @@ class Firmware {
   // The planner's picture writer (--planner-pictures), or null. run() drives it on its own
   // thread; a harness stepping a virtual clock calls its drain() between ticks.
   planner::PictureWriter* planner_pictures() { return picture_writer_.get(); }
+  // What setup() made of [planner] map_file (one line for --check-config), empty without one.
+  const std::string& planner_map_note() const { return planner_map_note_; }
 
  private:
   Config cfg_;
   FirmwareOptions opt_;
+  std::string planner_map_note_;  // [planner] map_file as loaded, for --check-config
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
   // The robot's hardware without --sim: [hardware] backends (docs/CAN.md).

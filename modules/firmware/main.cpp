@@ -124,7 +124,9 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   if (check_only) {
-    fmt::print("robuterd: configuration {} is valid ({} processes)\n", cfg.source, fw.kernel().process_count());
+    const std::string& map = fw.planner_map_note();
+    fmt::print("robuterd: configuration {} is valid ({} processes){}{}\n", cfg.source, fw.kernel().process_count(),
+               map.empty() ? "" : "; ", map);
     return kExitOk;
   }
   for (std::size_t i = 0; i < opt.ptys.size(); ++i) {

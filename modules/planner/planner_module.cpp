@@ -59,14 +59,17 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
 
 // Everything sized here: the map, the C-space layers, the searches' arrays.
 bool PlannerModule::init(Kernel& k) {
-  planner_.set_map(plan::OccupancyMap(s_.map, s_.hit_threshold));
+  const bool prior = prior_.has_value();
+  planner_.set_map(prior ? std::move(*prior_) : plan::OccupancyMap(s_.map, s_.hit_threshold, s_.initial_count));
+  prior_.reset();
   if (pictures_) pictures_->reserve(planner_, kMaxPicturePath);
   goal_in_.copy();  // goals from before the start are not served
   for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
   pan_tick_ = pan_tilt_.peek().read_tick;
-  log::info("planner: map {} x {} cells of {} mm, {} footprint", s_.map.width, s_.map.height,
+  log::info("planner: map {} x {} cells of {} mm, {} footprint, {}", s_.map.width, s_.map.height,
             std::lround(s_.map.resolution * 1000.0),
-            s_.planner.footprint == plan::FootprintKind::Disc ? "disc" : "rectangle");
+            s_.planner.footprint == plan::FootprintKind::Disc ? "disc" : "rectangle",
+            prior ? "from the a-priori map file" : "unknown");
   const plan::Pose2 p = pose_now();
   publish_status(k.tick());
   publish_window(k.tick(), p);

@@ -4,7 +4,9 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <utility>
 
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
@@ -34,6 +36,9 @@ class PlannerModule final : public Process {
   // Pictures (robuterd --planner-pictures): every plan is copied into `box` in the activation
   // that made it, for a writer outside the kernel. Set before init(), which sizes the copy.
   void set_pictures(planner::PictureMailbox* box) { pictures_ = box; }
+  // The a-priori map ([planner] map_file, planner/prior_map.hpp), of the configured geometry:
+  // init() starts from it instead of an unknown map. Set before init().
+  void set_prior_map(plan::OccupancyMap map) { prior_ = std::move(map); }
 
   // Sizes the planner for the configured map (the only allocation) and publishes "idle".
   bool init(Kernel& k) override;
@@ -78,6 +83,7 @@ class PlannerModule final : public Process {
   plan::Pose2 pose_now();
 
   planner::PlannerSettings s_;
+  std::optional<plan::OccupancyMap> prior_;  // the a-priori map until init() hands it to the planner
   plan::Planner planner_;
   planner::PathFollower follower_;
   Reader<Posture> posture_;

@@ -18,6 +18,7 @@ PlannerSettings make_settings(const Config& cfg) {
   s.map.height = static_cast<int>(std::max<std::uint32_t>(1, p.map_height_mm / p.cell_mm));
   s.map.origin = {mm(p.map_origin_x_mm), mm(p.map_origin_y_mm)};
   s.hit_threshold = static_cast<std::uint8_t>(std::clamp<std::uint32_t>(p.hit_threshold, 1, 254));
+  s.initial_count = static_cast<std::uint8_t>(std::min<std::uint32_t>(p.initial_count, s.hit_threshold - 1u));
   s.robot = robot_model(cfg);
   const robot::Body& body = s.robot.body;
 

@@ -15,6 +15,7 @@ namespace robuter::planner {
 struct PlannerSettings {
   plan::MapGeometry map;               // cells, m per cell, origin (m, odometry frame)
   std::uint8_t hit_threshold = 2;      // net hits for an obstacle cell
+  std::uint8_t initial_count = 0;      // count of a never-seen cell at its first beam (seed 003: 5)
   plan::PlannerConfig planner;         // footprint, slices, clearances (m)
   robot::RobotModel robot = robot::kRobuter;  // body, ring mounts, pan-tilt mount (m, rad)
   std::uint32_t scan_passes = 2;       // full ring passes per stop

@@ -8,17 +8,18 @@
 namespace robuter::planner {
 
 namespace {
-// How much a cell looks like the surface that echoed: an obstacle (by its hits) more than an
-// unknown cell, an unknown cell more than one already seen free.
-int evidence(std::uint8_t count) {
-  if (count == plan::OccupancyMap::kUnknown) return 1;
-  return count == 0 ? 0 : 2 + count;
+// How much a cell looks like the surface that echoed: net hits (a count above the map's
+// initial count) more than an unknown cell, an unknown cell more than one with no net hits.
+int evidence(std::uint8_t count, std::uint8_t initial) {
+  if (count == plan::OccupancyMap::kUnknown) return 2 * initial + 1;
+  return 2 * count;
 }
 }  // namespace
 
 // The echo came from the nearest surface somewhere in the cone, at `range`: on the arc. The hit
-// goes to the arc's cell with the most evidence of an obstacle, the one nearest the axis among
-// equals (so with nothing known it is the axis, seed 003's rule). Cells before the echo along
+// goes to the arc's cell (or the cell half a cell beyond it) with the most evidence of an
+// obstacle, the one nearest the axis among equals (so with nothing known it is the axis, seed
+// 003's rule). Cells before the echo along
 // the axis and along the chosen ray lose a hit.
 void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const SensorMount& mount,
                        double range, bool no_echo, double beam_range, double half_angle) {
@@ -32,24 +33,32 @@ void integrate_reading(plan::OccupancyMap& map, const plan::Pose2& robot, const 
     return;
   }
   double best_phi = 0.0;
+  double best_range = range;
   if (half_angle > 0.0) {
     const double step = map.resolution() / range;  // about one cell along the arc
     const int steps = static_cast<int>(std::min(half_angle / step, 200.0));
+    // The surface touches the arc from beyond: a face on a cell boundary met at the arc lies in
+    // the cell half a cell further, which a prior map (or earlier hits) knows as the obstacle.
+    // Each ray's cell on the arc is looked at first, then that one.
+    const double reach[2] = {range, range + 0.5 * map.resolution()};
     int best = -1;
     for (int i = 0; i <= 2 * steps; ++i) {
       const double phi = (i % 2 == 0 ? 1.0 : -1.0) * ((i + 1) / 2) * step;  // 0, -1, +1, -2, +2, ... steps
-      const plan::Cell cell = map.cell_of({origin.x + range * std::cos(axis + phi), origin.y + range * std::sin(axis + phi)});
-      if (!map.contains(cell)) continue;
-      const int e = evidence(map.count(cell));
-      if (e > best) {
-        best = e;
-        best_phi = phi;
+      for (const double r : reach) {
+        const plan::Cell cell = map.cell_of({origin.x + r * std::cos(axis + phi), origin.y + r * std::sin(axis + phi)});
+        if (!map.contains(cell)) continue;
+        const int e = evidence(map.count(cell), map.initial_count());
+        if (e > best) {
+          best = e;
+          best_phi = phi;
+          best_range = r;
+        }
       }
     }
   }
   const double clear = range - 2.0 * map.resolution();  // stop short of the surface's cell
   if (best_phi != 0.0 && clear > 0.0) map.integrate_beam(origin, axis, clear, clear);
-  map.integrate_beam(origin, axis + best_phi, range, beam_range);
+  map.integrate_beam(origin, axis + best_phi, best_range, beam_range);
 }
 
 SensorMount pan_tilt_mount(const robot::PanTiltMount& mount, double direction) {

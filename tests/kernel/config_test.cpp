@@ -125,5 +125,33 @@ TEST(Config, ShippedDefaultFileParsesToTheDefaults) {
   EXPECT_EQ(c.robot.length_mm, d.robot.length_mm);
 }
 
+// [planner] map_file: relative to the configuration's folder; the geometry keys written are
+// remembered (they must agree with the file, modules/planner/prior_map.cpp); no size check here.
+TEST(Config, PlannerMapFileIsRelativeToTheConfigurationsFolder) {
+  Config c;
+  const auto err = parse_config("[planner]\nmap_file = \"maps/lab.map\"\ncell_mm = 50\nmap_width_mm = 900000\n",
+                                "/etc/robuterd/robuterd.toml", c);
+  ASSERT_FALSE(err) << err->message();
+  EXPECT_EQ(c.planner.map_file, "/etc/robuterd/maps/lab.map");
+  EXPECT_EQ(c.planner.map_file_line, 2);
+  EXPECT_EQ(c.planner.geometry_lines[4], 3);  // cell_mm
+  EXPECT_EQ(c.planner.geometry_lines[2], 4);  // map_width_mm
+  EXPECT_EQ(c.planner.geometry_lines[0], 0);  // map_origin_x_mm: not written
+  Config d;
+  ASSERT_FALSE(parse_config("[planner]\nmap_file = \"/srv/lab.map\"\n", "robuterd.toml", d));
+  EXPECT_EQ(d.planner.map_file, "/srv/lab.map");
+}
+
+// Seed 003's initial count must stay below the threshold (a first miss would make an obstacle).
+TEST(Config, PlannerInitialCountBelowTheThreshold) {
+  Config c;
+  EXPECT_FALSE(parse_config("[planner]\ninitial_count = 5\nhit_threshold = 10\n", "r.toml", c));
+  EXPECT_EQ(c.planner.initial_count, 5u);
+  const auto err = parse_config("[planner]\ninitial_count = 2\n", "r.toml", c);
+  ASSERT_TRUE(err);
+  EXPECT_EQ(err->message(), "r.toml:2: key 'planner.initial_count': 2 must be less than planner.hit_threshold 2 (a first "
+                            "miss would make a cell an obstacle)");
+}
+
 }  // namespace
 }  // namespace robuter

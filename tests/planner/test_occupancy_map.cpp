@@ -41,6 +41,20 @@ TEST(OccupancyMap, MissesTakeOneDownToZero) {
   EXPECT_EQ(m.count({15, 5}), 0);  // max range: no hit at the end
 }
 
+TEST(OccupancyMap, SeedThreesInitialCountFiveAndThresholdTen) {
+  OccupancyMap m(MapGeometry{20, 10, 0.1, {0.0, 0.0}}, 10, 5);
+  EXPECT_EQ(m.initial_count(), 5);
+  EXPECT_EQ(m.state({10, 5}), CellState::Unknown);  // never seen: still unknown until a beam
+  for (int i = 0; i < 4; ++i) m.integrate_beam({0.05, 0.55}, 0.0, 1.0, 1.5);
+  EXPECT_EQ(m.count({10, 5}), 9);                     // 5 + 4 hits
+  EXPECT_EQ(m.state({10, 5}), CellState::Free);
+  m.integrate_beam({0.05, 0.55}, 0.0, 1.0, 1.5);
+  EXPECT_EQ(m.state({10, 5}), CellState::Occupied);   // 5 hits from unknown (seed 003: >= 10)
+  EXPECT_EQ(m.count({9, 5}), 0);                      // 5 misses: 5 -> 0
+  m.integrate_beam({0.05, 0.75}, 0.0, 1.0, 1.5);
+  EXPECT_EQ(m.count({5, 7}), 4);                      // one miss from unknown: 4, free
+}
+
 TEST(OccupancyMap, BeamLeavingTheMapIsClipped) {
   OccupancyMap m = small_map();
   m.integrate_beam({1.0, 0.55}, kPi / 2, 50.0, 100.0);

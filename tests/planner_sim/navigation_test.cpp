@@ -26,9 +26,17 @@ const auto* const kPictureCaches = ::testing::AddGlobalTestEnvironment(new Pictu
 
 // The map covers the lab with half a metre to spare; odometry is set to the world's frame.
 // ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule (the comparison of docs/SAFETY.md §13).
+// Measurements by hand (docs/PLANNER.md "Seed 003's numbers"): ROBUTER_PLANNER_COUNTS=INITIAL,THRESHOLD
+// sets [planner] initial_count and hit_threshold, ROBUTER_PLANNER_BEAM_RANGE_MM its beam_range_mm,
+// ROBUTER_COMM_LIMIT_TICKS [emergency] comm_limit_ticks (the test says nothing for the whole run:
+// past 3 min the link watchdog ends it, "stopped").
 Config lab_config() {
   Config cfg;
   if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
+  if (const char* counts = std::getenv("ROBUTER_PLANNER_COUNTS"))
+    std::sscanf(counts, "%u,%u", &cfg.planner.initial_count, &cfg.planner.hit_threshold);
+  if (const char* range = std::getenv("ROBUTER_PLANNER_BEAM_RANGE_MM")) cfg.planner.beam_range_mm = std::atoi(range);
+  if (const char* limit = std::getenv("ROBUTER_COMM_LIMIT_TICKS")) cfg.emergency.comm_limit_ticks = std::atoi(limit);
   cfg.planner.map_origin_x_mm = -500;
   cfg.planner.map_origin_y_mm = -500;
   cfg.planner.map_width_mm = 19'000;
@@ -38,6 +46,7 @@ Config lab_config() {
 
 // (a) From (2.5, 2.0) to (15.0, 5.5) with nothing known: the robot scans, plans, follows what it
 // can see, and replans until it arrives, never touching anything and never tripping the gate.
+// ROBUTER_SONAR_NOISE_SEED=N (by hand) turns the simulator's sonar noise on with seed N.
 // The firmware's pictures (robuterd --planner-pictures) go to a temporary folder, or to
 // $ROBUTER_PLANNER_PICTURES (kept) to look at them: one PNG per plan, first and replans.
 TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
@@ -46,16 +55,21 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
       keep != nullptr ? std::filesystem::path(keep) : std::filesystem::temp_directory_path() /
                                              ("robuter-planner-pictures-" + std::to_string(::getpid()));
   if (keep == nullptr) std::filesystem::remove_all(pictures);
-  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), {}, false, pictures.string());
+  hal::SimOptions sim;
+  if (const char* seed = std::getenv("ROBUTER_SONAR_NOISE_SEED")) {
+    sim.sonar_noise = true;
+    sim.seed = std::strtoull(seed, nullptr, 10);
+  }
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), sim, false, pictures.string());
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
   fw.run_ticks(5);
   ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
   const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000");
   std::printf("seed000 lab: state %d, %u plans (%u replans), %u scans, %.1f s simulated, %.2f m driven, "
-              "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures\n",
+              "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures, %u trips\n",
               static_cast<int>(r.state), r.plans, r.plans ? r.plans - 1 : 0, r.scans, r.seconds, r.travelled,
-              r.min_clearance, r.final_error, r.run_us_max, r.pictures);
+              r.min_clearance, r.final_error, r.run_us_max, r.pictures, r.trips);
   std::printf("plan times (us): %s\n", r.plan_times.c_str());
   EXPECT_EQ(r.state, PlannerState::reached);
   EXPECT_FALSE(r.bumper);

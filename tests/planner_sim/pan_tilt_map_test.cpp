@@ -51,7 +51,7 @@ TEST(PlannerSimPanTilt, ThePanTiltScanMarksTheMap) {
               after.free, before.occupied, before.free, after.wall);
   EXPECT_GT(after.occupied, 10);
   EXPECT_GT(after.free, before.free + 500);
-  EXPECT_GT(after.wall, 5);
+  EXPECT_GE(after.wall, 5);  // 6 before the arc rule looked half a cell beyond the arc (5 since)
 }
 
 }  // namespace

@@ -58,14 +58,16 @@ std::string format_map(const OccupancyMap& map) {
   return out;
 }
 
-Result<OccupancyMap> parse_map(std::string_view text, const std::string& name) {
-  const auto lines = split_lines(text);
+namespace {
+// Why: one header reader for parse_map and parse_map_header; `i` ends on the "data" line's index.
+Result<MapHeader> read_header(const std::vector<std::string_view>& lines, const std::string& name, std::size_t& i) {
   if (lines.empty() || words(lines[0]).size() != 2 || words(lines[0])[0] != "robuter-map")
     return Error{name, 1, "not a robuter map (expected 'robuter-map 1')"};
   if (words(lines[0])[1] != "1") return Error{name, 1, "unsupported robuter-map version '" + std::string(words(lines[0])[1]) + "'"};
-  MapGeometry g{-1, -1, -1.0, {}};
-  long long threshold = OccupancyMap::kDefaultThreshold;
-  std::size_t i = 1;
+  MapHeader h;
+  MapGeometry& g = h.geometry;
+  g = MapGeometry{-1, -1, -1.0, {}};
+  i = 1;
   for (; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
     const auto w = words(lines[i]);
@@ -76,28 +78,49 @@ Result<OccupancyMap> parse_map(std::string_view text, const std::string& name) {
       const auto v = need(1) ? parse_integer(w[1]) : std::nullopt;
       if (!v || *v <= 0 || *v > 100000) return Error{name, line, "bad " + std::string(w[0])};
       (w[0] == "width" ? g.width : g.height) = static_cast<int>(*v);
+      (w[0] == "width" ? h.width_line : h.height_line) = line;
     } else if (w[0] == "resolution") {
       const auto v = need(1) ? parse_real(w[1]) : std::nullopt;
       if (!v || *v <= 0.0) return Error{name, line, "bad resolution"};
       g.resolution = *v;
+      h.resolution_line = line;
     } else if (w[0] == "origin") {
       const auto x = need(2) ? parse_real(w[1]) : std::nullopt;
       const auto y = need(2) ? parse_real(w[2]) : std::nullopt;
       if (!x || !y) return Error{name, line, "bad origin (expected 'origin X Y')"};
       g.origin = {*x, *y};
+      h.origin_line = line;
     } else if (w[0] == "threshold") {
       const auto v = need(1) ? parse_integer(w[1]) : std::nullopt;
       if (!v || *v < 1 || *v > OccupancyMap::kMaxCount) return Error{name, line, "bad threshold"};
-      threshold = *v;
+      h.threshold = static_cast<int>(*v);
+      h.threshold_line = line;
     } else {
       return Error{name, line, "unknown header key '" + std::string(w[0]) + "'"};
     }
   }
   if (i >= lines.size()) return Error{name, static_cast<int>(lines.size()), "no 'data' line"};
+  h.data_line = static_cast<int>(i) + 1;
   if (g.width < 0 || g.height < 0 || g.resolution <= 0.0)
     return Error{name, static_cast<int>(i) + 1, "width, height and resolution must come before 'data'"};
   if (static_cast<long long>(g.width) * g.height > 16'000'000)
     return Error{name, static_cast<int>(i) + 1, "map too large (more than 16 million cells)"};
+  return h;
+}
+}  // namespace
+
+Result<MapHeader> parse_map_header(std::string_view text, const std::string& name) {
+  std::size_t i = 0;
+  return read_header(split_lines(text), name, i);
+}
+
+Result<OccupancyMap> parse_map(std::string_view text, const std::string& name) {
+  const auto lines = split_lines(text);
+  std::size_t i = 0;
+  const auto header = read_header(lines, name, i);
+  if (!header) return header.error();
+  const MapGeometry& g = header->geometry;
+  const int threshold = header->threshold;
   ++i;
   OccupancyMap map(g, static_cast<std::uint8_t>(threshold));
   for (int y = g.height - 1; y >= 0; --y, ++i) {

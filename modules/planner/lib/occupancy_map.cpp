@@ -36,8 +36,8 @@ bool clip_segment_to_map(const MapGeometry& g, Point2& p, Point2& q) {
 }
 
 // Why: every buffer is sized once here so that later updates never allocate.
-OccupancyMap::OccupancyMap(const MapGeometry& geometry, std::uint8_t threshold)
-    : geo_(geometry), threshold_(std::max<std::uint8_t>(threshold, 1)) {
+OccupancyMap::OccupancyMap(const MapGeometry& geometry, std::uint8_t threshold, std::uint8_t initial)
+    : geo_(geometry), threshold_(std::max<std::uint8_t>(threshold, 1)), initial_(std::min(initial, kMaxCount)) {
   geo_.width = std::max(geo_.width, 1);
   geo_.height = std::max(geo_.height, 1);
   const auto n = static_cast<std::size_t>(geo_.width) * static_cast<std::size_t>(geo_.height);
@@ -113,12 +113,11 @@ void OccupancyMap::integrate_beam(Point2 origin, double angle, double range, dou
     const bool last = x == b.x && y == b.y;
     if (!contains(c)) return !last;  // clipped; keep walking until the end
     const std::uint32_t i = index(c);
-    const std::uint8_t n = counts_[i];
+    const std::uint8_t n = counts_[i] == kUnknown ? initial_ : counts_[i];
     if (last && hit) {
-      write(i, n == kUnknown ? std::uint8_t{1}
-                             : static_cast<std::uint8_t>(std::min<int>(n + 1, kMaxCount)));
+      write(i, static_cast<std::uint8_t>(std::min<int>(n + 1, kMaxCount)));
     } else {
-      write(i, n == kUnknown || n == 0 ? std::uint8_t{0} : static_cast<std::uint8_t>(n - 1));
+      write(i, n == 0 ? std::uint8_t{0} : static_cast<std::uint8_t>(n - 1));
     }
     return true;
   });

@@ -22,7 +22,8 @@ struct MapGeometry {
   Point2 origin{};           // m, world position of the lower-left corner of cell (0, 0)
 };
 
-// A grid of hit counts. Never seen = unknown; a hit adds 1, a miss takes 1 down to 0;
+// A grid of hit counts. Never seen = unknown; a beam's first touch starts a cell at `initial`
+// (0 by default; seed 003 starts every cell at 5), then a hit adds 1, a miss takes 1 down to 0;
 // count >= threshold = occupied, otherwise free. Cells whose state changes are logged once
 // until the log is cleared, so layers built on the map can update incrementally.
 class OccupancyMap {
@@ -32,13 +33,14 @@ class OccupancyMap {
   static constexpr std::uint8_t kDefaultThreshold = 10;
 
   explicit OccupancyMap(const MapGeometry& geometry = {},
-                        std::uint8_t threshold = kDefaultThreshold);
+                        std::uint8_t threshold = kDefaultThreshold, std::uint8_t initial = 0);
 
   const MapGeometry& geometry() const { return geo_; }
   int width() const { return geo_.width; }
   int height() const { return geo_.height; }
   double resolution() const { return geo_.resolution; }
   std::uint8_t threshold() const { return threshold_; }
+  std::uint8_t initial_count() const { return initial_; }
   std::size_t cell_count() const { return counts_.size(); }
 
   bool contains(Cell c) const {
@@ -75,7 +77,8 @@ class OccupancyMap {
   void clear();
 
   // One range reading: cells from the origin's cell up to the end of the beam lose 1 (down to
-  // 0, and become seen); if range < max_range the last cell is a hit and gains 1. Angles in rad,
+  // 0, and become seen); if range < max_range the last cell is a hit and gains 1. A never-seen
+  // cell counts from `initial_count()`. Angles in rad,
   // lengths in m; the beam is clipped to the map.
   void integrate_beam(Point2 origin, double angle, double range, double max_range);
 
@@ -88,6 +91,7 @@ class OccupancyMap {
 
   MapGeometry geo_;
   std::uint8_t threshold_;                 // hits for an obstacle
+  std::uint8_t initial_;                   // count a never-seen cell starts from when a beam touches it
   std::vector<std::uint8_t> counts_;       // per cell: hits, or kUnknown
   std::vector<std::uint8_t> logged_;       // per cell: 1 when already in changes_
   std::vector<std::uint32_t> changes_;     // cell indexes, reserved to the cell count
