@@ -212,10 +212,14 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
   link(s, cur);
   std::size_t open = 1;
   if (s == t) best = 0.0;
+  // A key below bucket `cur` (octile h is consistent, so only rounding can do it) is filed in
+  // `cur`, and `below` keeps the lowest such key: the stop test must not pass it.
+  constexpr double kNone = 1e300;
+  double below = kNone;
   const std::uint32_t sn = stride;
   while (open > 0) {
-    while (head[cur & mask] == kNil) ++cur;
-    if (static_cast<double>(cur) * kBucketWidth >= best) break;
+    while (head[cur & mask] == kNil) ++cur, below = kNone;
+    if (std::min(static_cast<double>(cur) * kBucketWidth, below) >= best) break;
     const std::uint32_t u = head[cur & mask];
     unlink(u, cur);
     --open;
@@ -249,12 +253,15 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
       } else if (mv == closed) {
         ++open;  // reopened: its first expansion came a little early
       } else {
-        unlink(v, bucket_of(g[v] + hv));
+        unlink(v, std::max(bucket_of(g[v] + hv), cur));  // where link() filed it
       }
       mark[v] = seen;
       g[v] = ng;
       parent[v] = static_cast<std::uint8_t>(m);
-      link(v, std::max(bucket_of(ng + hv), cur));
+      const double fv = ng + hv;
+      std::uint64_t bv = bucket_of(fv);
+      if (bv < cur) bv = cur, below = std::min(below, fv);
+      link(v, bv);
       if (v == t) best = std::min(best, ng);
     }
   }
