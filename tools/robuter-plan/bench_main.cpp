@@ -151,7 +151,8 @@ struct MapRun {
   double max_err = 0.0;        // cells: max |length - published optimal| over every engine
   int inexact = 0;             // our lengths (all engines) off the published beyond its rounding
   int bgl_wrong = 0;           // BGL lengths off the published beyond its rounding
-  double scattered = 0.0;      // GridSearch::scattered_fraction (Auto's statistic)
+  double scattered = 0.0;      // GridSearch::scattered_fraction (one of Auto's statistics)
+  double runs = 0.0;           // GridSearch::run_fraction (the other)
   int auto_pick = 0;           // engine Auto ran: 1 jump points, 2 buckets
 };
 
@@ -178,7 +179,8 @@ bool bench_movingai(const std::string& dir, const std::string& name, int stride,
   m.name = name;
   m.family = family_of(name);
   m.scattered = ours.scattered_fraction(g);
-  m.auto_pick = m.scattered < GridSearch::kScatteredLimit ? 1 : 2;
+  m.runs = ours.run_fraction(g);
+  m.auto_pick = ours.prefers_jump_points(g) ? 1 : 2;
   std::vector<const Scenario*> picked;
   for (std::size_t i = 0; i < scen->size(); i += static_cast<std::size_t>(stride)) picked.push_back(&(*scen)[i]);
   m.problems = static_cast<int>(picked.size());
@@ -208,8 +210,8 @@ bool bench_movingai(const std::string& dir, const std::string& name, int stride,
   }
   m.bgl_ms = cpu_ms() - c0;
   const int fastest = static_cast<int>(std::min_element(m.ms + 1, m.ms + kEngines) - m.ms);
-  std::printf("%-16s %-9s %4dx%-4d %6d %5.2f %-7s %9.1f %9.1f %9.1f %9.1f %9.1f %7.1fx %-7s %8.1e %d\n", name.c_str(),
-              kFamilyName[static_cast<int>(m.family)], g.width, g.height, m.problems, m.scattered,
+  std::printf("%-16s %-9s %4dx%-4d %6d %5.2f %5.2f %-7s %9.1f %9.1f %9.1f %9.1f %9.1f %7.1fx %-7s %8.1e %d\n", name.c_str(),
+              kFamilyName[static_cast<int>(m.family)], g.width, g.height, m.problems, m.scattered, m.runs,
               m.auto_pick == 1 ? "jump" : "bucket", m.ms[0], m.ms[1], m.ms[2], m.ms[3], m.bgl_ms, m.bgl_ms / m.ms[0],
               fastest == 1 ? "jump" : fastest == 2 ? "bucket" : "heap", m.max_err, m.inexact + m.bgl_wrong);
   return true;
@@ -655,8 +657,8 @@ int main(int argc, char** argv) {
   std::printf("MovingAI, every %d-th scenario, optimal search (best of %d per engine) vs Boost Graph Library"
               " astar_search (same costs, once); ms = thread CPU; inexact = lengths (ours, BGL) off the"
               " published beyond its rounding:\n", stride, reps);
-  std::printf("%-16s %-9s %-9s %6s %5s %-7s %9s %9s %9s %9s %9s %8s %-7s %8s %s\n", "map", "family", "size", "probs",
-              "scat", "Auto", "Auto ms", "jump ms", "bucket ms", "heap ms", "BGL ms", "BGL/Auto", "fastest",
+  std::printf("%-16s %-9s %-9s %6s %5s %5s %-7s %9s %9s %9s %9s %9s %8s %-7s %8s %s\n", "map", "family", "size", "probs",
+              "scat", "runs", "Auto", "Auto ms", "jump ms", "bucket ms", "heap ms", "BGL ms", "BGL/Auto", "fastest",
               "max|err|", "inexact");
   std::vector<MapRun> runs;
   bool loaded = true;
