@@ -154,6 +154,7 @@ struct MapRun {
   double scattered = 0.0;      // GridSearch::scattered_fraction (one of Auto's statistics)
   double runs = 0.0;           // GridSearch::run_fraction (the other)
   int auto_pick = 0;           // engine Auto ran: 1 jump points, 2 buckets
+  int old_pick = 0;            // the same under the old rule (scattered_fraction alone)
 };
 
 // Why: the published lengths carry 6 significant digits on the 512 x 512 maps (1227.49, computed
@@ -181,6 +182,7 @@ bool bench_movingai(const std::string& dir, const std::string& name, int stride,
   m.scattered = ours.scattered_fraction(g);
   m.runs = ours.run_fraction(g);
   m.auto_pick = ours.prefers_jump_points(g) ? 1 : 2;
+  m.old_pick = m.scattered < GridSearch::kScatteredLimit ? 1 : 2;
   std::vector<const Scenario*> picked;
   for (std::size_t i = 0; i < scen->size(); i += static_cast<std::size_t>(stride)) picked.push_back(&(*scen)[i]);
   m.problems = static_cast<int>(picked.size());
@@ -220,11 +222,13 @@ bool bench_movingai(const std::string& dir, const std::string& name, int stride,
 // Why: the per-family summary of the map rows: problems, exactness, Auto vs BGL, engines.
 void print_families(const std::vector<MapRun>& runs) {
   std::printf("\nper family (sums over the family's maps; ms = thread CPU; Auto fastest = maps where Auto's"
-              " pick is the faster of jump points and buckets):\n");
-  std::printf("%-9s %5s %7s %9s %10s %10s %10s %10s %9s %14s\n", "family", "maps", "problems", "max|err|",
-              "Auto ms", "jump ms", "bucket ms", "heap ms", "BGL/Auto", "Auto fastest");
+              " pick is the faster of jump points and buckets; old = the rule before, scattered_fraction alone,"
+              " its time = its pick's column):\n");
+  std::printf("%-9s %5s %7s %9s %10s %10s %10s %10s %9s %14s %10s %14s\n", "family", "maps", "problems", "max|err|",
+              "Auto ms", "jump ms", "bucket ms", "heap ms", "BGL/Auto", "Auto fastest", "old ms", "old fastest");
   for (int f = 0; f < 4; ++f) {
-    int maps = 0, problems = 0, right = 0;
+    int maps = 0, problems = 0, right = 0, old_right = 0;
+    double old_t = 0.0;
     double err = 0.0, t[kEngines] = {}, bgl = 0.0;
     for (const MapRun& m : runs) {
       if (static_cast<int>(m.family) != f) continue;
@@ -234,10 +238,12 @@ void print_families(const std::vector<MapRun>& runs) {
       for (int e = 0; e < kEngines; ++e) t[e] += m.ms[e];
       bgl += m.bgl_ms;
       right += m.ms[m.auto_pick] <= std::min(m.ms[1], m.ms[2]) ? 1 : 0;
+      old_right += m.ms[m.old_pick] <= std::min(m.ms[1], m.ms[2]) ? 1 : 0;
+      old_t += m.ms[m.old_pick];
     }
     if (maps == 0) continue;
-    std::printf("%-9s %5d %7d %9.1e %10.1f %10.1f %10.1f %10.1f %8.1fx %9d of %d\n", kFamilyName[f], maps, problems,
-                err, t[0], t[1], t[2], t[3], bgl / t[0], right, maps);
+    std::printf("%-9s %5d %7d %9.1e %10.1f %10.1f %10.1f %10.1f %8.1fx %9d of %d %10.1f %9d of %d\n", kFamilyName[f],
+                maps, problems, err, t[0], t[1], t[2], t[3], bgl / t[0], right, maps, old_t, old_right, maps);
   }
 }
 
