@@ -296,11 +296,12 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
   b.integer("planner.drive_speed_cm_s", p.drive_speed_cm_s, 1, 100);
   b.integer("planner.turn_speed_cm_s", p.turn_speed_cm_s, 1, 100);
   if (b.error()) return;
-  // Memory per cell (docs/PLANNER.md): about 45 B per full-turn heading slice (2 x heading_slices:
-  // the body is not symmetric under a half turn) plus 60 B for the rectangle, 130 B for a disc;
-  // keep the planner within about 200 MB.
+  // Limits (docs/PLANNER.md "Limits"): a disc planner up to 1 M cells (~130 B each); a rectangle
+  // planner up to 512 x 512 cells: ~(4 x heading_slices + 1) B of layers + ~60 B per cell (about
+  // 33 MB at 16 slices) and, the tighter bound, its goal's cost field in one activation (the lab's
+  // 83,600 cells take 4-6 ms: 262,144 about 12-18 ms of the planner's 20 ms budget).
   const long long cells = static_cast<long long>(p.map_width_mm / p.cell_mm) * (p.map_height_mm / p.cell_mm);
-  const long long limit = p.footprint == "disc" ? 1'000'000 : 200'000'000 / (45LL * 2 * p.heading_slices + 60);
+  const long long limit = p.footprint == "disc" ? 1'000'000 : 262'144;
   if (cells > limit)
     b.fail_key("planner.map_width_mm", fmt::format("a map of {} cells is too large for the {} planner (at most {})",
                                                    cells, p.footprint, limit));

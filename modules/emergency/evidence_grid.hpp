@@ -41,8 +41,10 @@ class EvidenceGrid {
   // x_new = rotation · x_old + translation, and the window re-placed around `robot` (new frame, m);
   // free certificates are forgotten (space is certified again by the next readings). A cell of
   // evidence marks every new cell of its turned square's bounding box: the carried evidence is
-  // never narrower than it was. At most kCarried cells, nearest to the robot first (within 1 m,
-  // then the rest). Work: 2 × side² cells + 9 × kCarried marks.
+  // never narrower than it was. Evidence carried before is carried again from where it was
+  // observed (its exact centre and the turn since), not from the cells it marked, so frame after
+  // frame at rest never widens it. At most kCarried cells, nearest to the robot first (within 1 m,
+  // then the rest). Work: 2 × side² cells + 9 × kCarried box checks and marks.
   void carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d& translation, const Eigen::Vector2d& robot);
   static constexpr std::size_t kCarried = 8192;  // cells of evidence carried through a new frame, count
   // Keeps the window around `robot` (odometry frame, m). Work: at most side² cells when it jumps
@@ -83,16 +85,25 @@ class EvidenceGrid {
   void clear_column(int gx);
   void clear_row(int gy);
 
-  // A cell of evidence on its way into a new frame.
+  // A cell of evidence carried into the current frame: where it was observed, exactly.
   struct Carried {
-    Eigen::Vector2d centre;  // cell centre, old frame, m
+    Eigen::Vector2d centre;  // the observed cell's centre, carried into the current frame, m
+    double turn;             // rotation from the frame it was observed in to the current one, rad
     std::uint64_t tick;      // its evidence tick
   };
-  // Adds the evidence cells of the window within (near) or beyond (!near) `radius` of `robot`
-  // (old frame, m) to carried_, up to kCarried.
-  void collect(const Eigen::Vector2d& robot, double radius, bool near);
+  // The half side of the box holding a carried cell's turned square, m.
+  double box_half(const Carried& c) const;
+  // Whether some cell of a carried cell's box still holds the evidence carry() put there.
+  bool still_there(const Carried& c) const;
+  // Adds to next_ the carried cells still there (carried) or the observed evidence cells
+  // (!carried) within (near) or beyond (!near) `radius` of `robot` (old frame, m), up to kCarried.
+  void collect(const Eigen::Vector2d& robot, double radius, bool near, bool carried);
+  // Clears every cell and flag (reset() also forgets the carried cells and the placement).
+  void clear_cells();
   GridSettings s_;
-  std::vector<Carried> carried_;  // scratch of carry(), kCarried reserved at construction
+  std::vector<Carried> carried_;         // evidence in the grid that carry() put there, kCarried reserved
+  std::vector<Carried> next_;            // scratch of carry(), kCarried reserved at construction
+  std::vector<std::uint8_t> from_carry_;  // per slot: 1 when the cell's evidence came from carry()
   int mask_ = 255;           // side − 1
   std::vector<Cell> cells_;  // side² cells, slot (gx mod side, gy mod side)
   int ox_ = 0;               // global index of the window's first column

@@ -9,8 +9,10 @@
 #include <string>
 #include <system_error>
 
+#include "cli/parse_or_usage.hpp"
 #include "kernel/config.hpp"
 #include "kernel/log.hpp"
+#include "kernel/memory_usage.hpp"
 #include "kernel/realtime.hpp"
 #include "kernel/signals.hpp"
 #include "modules/firmware/firmware.hpp"
@@ -61,11 +63,7 @@ int main(int argc, char** argv) {
   app.add_option("--log-level", log_level, "debug, info, warn, error or off (overrides the configuration)");
   app.add_flag("--check-config", check_only, "validate the configuration and exit");
   app.add_flag("--version", version, "print the version and exit");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitUsage;
-  }
+  if (const auto status = cli::parse_or_usage(app, argc, argv)) return *status;  // kExitOk or kExitUsage
   if (version) {
     fmt::print("robuterd {}\n", ROBUTER_VERSION);
     return kExitOk;
@@ -150,6 +148,9 @@ int main(int argc, char** argv) {
   if (const int sig = signals::stop_signal()) log::info("robuterd: {} received: stopped cleanly", signals::name(sig));
   log::info("robuterd stopped after {} ticks", fw.kernel().tick());
   log::stop();
-  if (stats) fw.kernel().print_stats(stdout);
+  if (stats) {
+    fw.kernel().print_stats(stdout);
+    if (const auto kb = peak_rss_kb()) fmt::print("peak memory (VmHWM) {} kB\n", *kb);
+  }
   return status == 0 ? kExitOk : kExitRuntime;
 }

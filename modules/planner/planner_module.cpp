@@ -268,6 +268,9 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
       picture(tick, r, pose, goal);
       return finish(tick, PlannerState::outside, true);
     default:
+      if (r.status == plan::PlanStatus::SearchLimit)  // reported as unreachable; the log says why
+        log::warn("planner: plan {}: no path: search memory exhausted ({} states expanded)", plans_,
+                  r.expanded);
       path_m_ = prefix_m_ = 0.0;
       prefix_len_ = leg_count_ = 0;
       picture(tick, r, pose, goal);

@@ -89,6 +89,15 @@ TEST(Config, OutOfRangeValueIsNamed) {
             "robot.toml:2: key 'sonar.moving_timeout_ms': 2000 is out of range 0..1000");
 }
 
+// The planner's map limits (docs/CONFIG.md): 512 x 512 cells for the rectangle, 1 M for a disc.
+TEST(Config, APlannerMapTooLargeIsRefusedOnItsWidth) {
+  EXPECT_EQ(error_of("[planner]\nmap_width_mm = 25600\nmap_height_mm = 25600\n"), "");
+  const std::string e = error_of("[planner]\nmap_width_mm = 26000\nmap_height_mm = 26000\n");
+  EXPECT_NE(e.find("key 'planner.map_width_mm'"), std::string::npos) << e;
+  EXPECT_NE(e.find("a map of 270400 cells is too large for the rectangle planner (at most 262144)"), std::string::npos) << e;
+  EXPECT_EQ(error_of("[planner]\nfootprint = \"disc\"\nmap_width_mm = 50000\nmap_height_mm = 50000\n"), "");
+}
+
 TEST(Config, SyntaxErrorGivesTheLine) {
   const auto e = error_of("[kernel]\ntick_us = = 3\n");
   EXPECT_EQ(e.rfind("robot.toml:2: ", 0), 0u) << e;

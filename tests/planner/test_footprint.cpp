@@ -60,6 +60,8 @@ TEST(CSpaceLayer, BuildAndUpdateEqualBruteForce) {
     }
   map.clear_changes();
   const FootprintMask mask = rectangle_mask(RectangleFootprint{}, 0.1, 0.3, 0.5);
+  CSpaceStack stack;
+  stack.reset(map);
   CSpaceLayer layer;
   layer.build(map, mask);
   auto expect_brute = [&](const char* when) {
@@ -87,7 +89,9 @@ TEST(CSpaceLayer, BuildAndUpdateEqualBruteForce) {
       else map.set_count(c, OccupancyMap::kUnknown);
     }
     changes.clear();
-    layer.update(map, map.changes(), &changes);
+    stack.begin_sync(map, map.changes());
+    layer.update(stack, map, map.changes(), &changes);
+    stack.end_sync(map.changes());
     map.clear_changes();
     expect_brute("update");
     for (const ClassChange& ch : changes) EXPECT_NE(layer.grid().cls[ch.index], ch.before);

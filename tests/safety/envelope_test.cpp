@@ -101,6 +101,30 @@ TEST(EvidenceGrid, ANewOdometryFrameCarriesTheEvidenceAndForgetsFreeSpace) {
   EXPECT_GT(evidence, 100);
 }
 
+// An operator who sets the odometry again and again at rest (AC, turned one way then back)
+// must not grow the evidence: each carry may widen it by the turned cells' boxes, but the
+// evidence is where the obstacle is, so repeated frames may not close in on the robot.
+TEST(EvidenceGrid, ManyOdometrySetsAtRestDoNotGrowTheEvidence) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 0.60, false, true);  // a face 0.60 m ahead
+  const Eigen::Matrix2d there = Eigen::Rotation2Dd(0.5236).toRotationMatrix();
+  const Eigen::Matrix2d back = there.transpose();
+  const Vector2d t(0.013, -0.007);
+  for (int i = 0; i < 40; ++i) {  // 40 frames: 20 times turned 30 degrees and back, shifted and back
+    g.carry(there, t, t);
+    g.carry(back, -(back * t), {0.0, 0.0});
+  }
+  EXPECT_EQ(g.state({0.60, 0.0}, 10, kAge), CellState::obstacle) << "the face is still there";
+  int grown = 0;
+  for (double x = -1.0; x <= 1.0; x += 0.01) {
+    for (double y = -1.0; y <= 1.0; y += 0.01) {
+      const double d = std::hypot(x, y);
+      if (g.state({x, y}, 10, kAge) == CellState::obstacle && (d < 0.50 || d > 0.70)) ++grown;
+    }
+  }
+  EXPECT_EQ(grown, 0) << "evidence more than 0.10 m from the face after 80 frames";
+}
+
 TEST(EvidenceGrid, TheBodyIsFreeAndTheWindowForgetsWhatItLeaves) {
   EvidenceGrid g = placed_grid();
   g.add_reading(10, {-0.5, 0.0}, 0.0, 0.5, false, true);  // evidence at x = 0

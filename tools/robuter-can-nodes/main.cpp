@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/parse_or_usage.hpp"
 #include "hal/linux/can/loopback_bus.hpp"
 #include "hal/linux/can/sim_nodes.hpp"
 #include "hal/linux/can/socketcan_transport.hpp"
@@ -43,11 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--accel", accel, "drive acceleration and quick-stop deceleration, increments/s² (default 1e6)");
   app.add_option("--step-ms", step_ms, "the nodes' time step, ms (default 2)")->check(CLI::Range(1u, 100u));
   app.add_option("--seconds", seconds, "stop after this long (default: until SIGINT/SIGTERM)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   if (left < 1 || left > 127 || right < 1 || right > 127 || left == right || sonar_base < 1 || sonar_base > 120) {
     std::fprintf(stderr, "robuter-can-nodes: node ids: drives 1..127 and distinct, sonar base 1..120\n");
     return 2;

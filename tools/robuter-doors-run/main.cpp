@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "cli/parse_or_usage.hpp"
 #include "hal/sim/render.hpp"
 #include "tools/robuter-doors-run/crossing_run.hpp"
 
@@ -64,11 +65,7 @@ int main(int argc, char** argv) {
   app.add_flag("--echoes", echoes, "with --trace: the localised echoes closer than 1.2 m too");
   app.add_flag("--log", log, "print the XD replies of the run");
   app.add_option("--picture", picture, "draw the (last) run to this .png, .svg or .pdf file");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   const std::string world = find_world(world_arg, worlds_dir);
   if (world.empty()) {
     std::fprintf(stderr, "robuter-doors-run: no world '%s' (neither a file nor in %s)\n", world_arg.c_str(), worlds_dir.c_str());

@@ -638,9 +638,99 @@ void bench_firmware_all(const std::string& root) {
     if (child > 0) waitpid(child, &status, 0);
   }
 }
+
+// Why: the C-space layers' own costs on the firmware's default map (12 m x 12 m at 5 cm = 240 x
+// 240 cells; the Robuter's rectangle, body centre 183 mm ahead of the axle, 16 slices over a
+// half turn = 32 body + 32 turn-clearance (25 cm) layers + the inscribed disc = 65 layers):
+// set_map (every layer built), and a sync() of 100 changed cells, which runs inside the planner
+// module's 20 ms activation. Thread CPU ms: best of 5 for set_map, mean and worst of 20
+// placements for a sync (each on a fresh copy of the map).
+void bench_cspace_layers() {
+  const int n = 240;
+  OccupancyMap base(MapGeometry{n, n, 0.05, {}});
+  std::mt19937 rng(7);
+  {
+    std::uniform_int_distribution<int> pos(0, n - 1), side(4, 12);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) base.mark_free({x, y});
+    for (int b = 0; b < 45; ++b) {
+      const int x0 = pos(rng), y0 = pos(rng), sx = side(rng), sy = side(rng);
+      for (int y = y0; y < y0 + sy; ++y)
+        for (int x = x0; x < x0 + sx; ++x)
+          if (base.contains({x, y})) base.mark_occupied({x, y});
+    }
+    base.clear_changes();
+  }
+  PlannerConfig cfg;
+  cfg.footprint = FootprintKind::Rectangle;
+  cfg.rectangle = RectangleFootprint{1.025, 0.700, 0.183, 0.0};
+  cfg.heading_slices = 16;
+  cfg.turn_clearance = 0.25;
+  Planner p(cfg);
+  p.set_map(base);
+  double build = 1e300;
+  for (int rep = 0; rep < 5; ++rep) {
+    const double c0 = cpu_ms();
+    p.set_map(base);
+    build = std::min(build, cpu_ms() - c0);
+  }
+  std::printf("C-space layers, 240x240 cells (45 random boxes), rectangle with 16 slices and 25 cm turn"
+              " clearance (%d body layers):\n", p.slices());
+  std::printf("  set_map (all layers built): %.2f ms CPU (best of 5)\n", build);
+  std::uniform_int_distribution<int> pos(12, n - 13);
+  // kind 0: a 10 x 10 blob newly occupied in free space; 1: 100 scattered free cells newly
+  // occupied; 2: a 10 x 10 blob of a box freed; 3: 100 scattered isolated obstacle cells freed
+  // (each alone under the masks: every blocked cell around it is re-checked to the end).
+  const char* names[4] = {"100 cells newly occupied (10x10 blob)", "100 cells newly occupied (scattered)",
+                          "100 cells freed (10x10 of a box)", "100 cells freed (scattered, isolated)"};
+  for (int kind = 0; kind < 4; ++kind) {
+    double sum = 0.0, worst = 0.0;
+    const int placements = 20;
+    for (int pl = 0; pl < placements; ++pl) {
+      p.set_map(base);
+      std::vector<Cell> cells;
+      if (kind == 0 || kind == 2) {
+        Cell c{};
+        for (int tries = 0; tries < 100000; ++tries) {
+          c = Cell{pos(rng), pos(rng)};
+          int occ = 0;
+          for (int dy = 0; dy < 10; ++dy)
+            for (int dx = 0; dx < 10; ++dx) occ += p.map().state({c.x + dx, c.y + dy}) == CellState::Occupied;
+          if (kind == 0 ? occ == 0 : occ == 100) break;
+        }
+        for (int dy = 0; dy < 10; ++dy)
+          for (int dx = 0; dx < 10; ++dx) cells.push_back({c.x + dx, c.y + dy});
+      } else {
+        while (cells.size() < 100) {
+          const Cell c{pos(rng), pos(rng)};
+          if (p.map().state(c) == CellState::Free) cells.push_back(c);
+        }
+      }
+      if (kind == 3) {  // the isolated obstacles first, folded in untimed
+        for (const Cell c : cells) p.map().mark_occupied(c);
+        p.sync();
+      }
+      for (const Cell c : cells) {
+        if (kind < 2) p.map().mark_occupied(c);
+        else p.map().mark_free(c);
+      }
+      const double c0 = cpu_ms();
+      p.sync();
+      const double t = cpu_ms() - c0;
+      sum += t;
+      worst = std::max(worst, t);
+    }
+    std::printf("  sync of %-40s mean %7.3f ms CPU, worst %7.3f ms (%d placements)\n", names[kind],
+                sum / placements, worst, placements);
+  }
+}
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--layers") {  // the C-space layers' figures alone
+    bench_cspace_layers();
+    return 0;
+  }
   const std::string dir = argc > 1 ? argv[1] : ROBUTER_MOVINGAI_DIR;
   const std::string root = argc > 2 ? argv[2] : ROBUTER_SOURCE_DIR;
   // ROBUTER_BENCH_STRIDE=n runs every n-th scenario (default 1: all), ROBUTER_BENCH_REPS the
@@ -683,6 +773,8 @@ int main(int argc, char** argv) {
   bench_incremental();
   std::printf("\n");
   bench_replan_cells();
+  std::printf("\n");
+  bench_cspace_layers();
   std::printf("\nplanner bench: MovingAI lengths %s; 1000x1000 under 20 ms: %s\n",
               exact ? "all exact" : "WRONG", big ? "yes" : "NO");
   return lengths_ok ? 0 : 1;  // timing targets are reported, correctness decides the status

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/parse_or_usage.hpp"
 #include "modules/planner/lib/cspace.hpp"
 #include "modules/planner/lib/grid_search.hpp"
 #include "modules/planner/lib/map_file.hpp"
@@ -180,7 +181,8 @@ int main(int argc, char** argv) {
   app.add_option("--rotation-cost", o.rotation_cost, "m of path per rad turned in place")->check(CLI::NonNegativeNumber);
   app.add_flag("--text", o.text, "print the map around the start in seed 003's characters");
   app.add_flag("--waypoints", o.waypoints, "print the path: x y (m) heading (degrees)");
-  CLI11_PARSE(app, argc, argv);
+  // Usage errors keep CLI11's own codes (105..114): 2 is "no path" here, 1 a broken input file.
+  if (const auto status = robuter::cli::parse_or_usage(app, argc, argv, robuter::cli::UsageStatus::cli11)) return *status;
   if (!o.movingai.empty()) return run_movingai(o);
   if (o.params.empty() && o.world.empty()) {
     std::fprintf(stderr, "robuter-plan: give -p PARAMS [-a ENVIRONMENT | -s SAVED], -w WORLD, or --movingai MAP SCEN\n");

@@ -2,6 +2,7 @@
 // robuter-sim: command-line tools around the simulated Robuter (for now: `render`, pictures).
 #include <CLI/CLI.hpp>
 
+#include "cli/parse_or_usage.hpp"
 #include "hal/sim/render.hpp"
 #include "tools/robuter-sim/render_command.hpp"
 
@@ -20,11 +21,7 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", req.output, "picture to write: .png, .svg or .pdf")->required();
   render->add_option("--scale", req.scale, "pixels per metre (default: the scale that makes the picture 1000 pixels wide)")->check(CLI::Range(5.0, 1000.0));
   render->add_option("--title", req.title, "title (default: world, pose, date and what the sonars report)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   if (pt->count() > 0) req.pan_tilt_deg = pan_tilt;
   const int status = robuter::simtool::run_render(req);
   robuter::sim::release_render_caches();  // LeakSanitizer: cairo's and fontconfig's caches

@@ -21,6 +21,7 @@
 #include <cstring>
 #include <vector>
 
+#include "cli/parse_or_usage.hpp"
 #include "tools/robuterctl/client.hpp"
 #include "tools/robuterctl/commands.hpp"
 #include "tools/robuterctl/decode.hpp"
@@ -396,12 +397,7 @@ int main(int argc, char** argv) {
   app.add_option("--history", history, "history file (default $HOME/.robuterctl_history)");
   app.add_option("--bench", bench_n, "measure the round-trip latency over N requests and exit");
   app.add_option("--bench-line", bench_line, "the request the bench sends");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;  // usage errors: 2
-  }
+  if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;  // usage errors: 2
   if (baud && !baud_supported(baud)) {
     fmt::print(stderr, "robuterctl: --baud {}: not a rate a serial device can be set to (1200, 2400, 4800, 9600, 19200, "
                        "38400, 57600, 115200, 230400, 460800, 921600)\n", baud);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace robuter::plan {
@@ -20,11 +21,14 @@ class BucketRing {
  public:
   static constexpr std::uint32_t kNil = 0xFFFFFFFFu;
 
-  // Why: size the per-node links once for `nodes` nodes.
+  // Why: size the per-node links once for `nodes` nodes. The links are left uninitialised
+  // (a node's are written when it is linked, before any read), so the memory is only
+  // resident for the nodes a search actually pushes.
   void reserve(std::size_t nodes) {
-    if (next_.size() < nodes) {
-      next_.resize(nodes);
-      prev_.resize(nodes);
+    if (capacity_ < nodes) {
+      next_.reset(new std::uint32_t[nodes]);
+      prev_.reset(new std::uint32_t[nodes]);
+      capacity_ = nodes;
     }
     head_.reserve(1u << 12);
   }
@@ -102,8 +106,9 @@ class BucketRing {
     if (n != kNil) prev_[n] = p;
   }
 
-  std::vector<std::uint32_t> next_;  // per node: next in its bucket, or kNil
-  std::vector<std::uint32_t> prev_;  // per node: previous in its bucket, or kNil (head)
+  std::unique_ptr<std::uint32_t[]> next_;  // per node: next in its bucket, or kNil
+  std::unique_ptr<std::uint32_t[]> prev_;  // per node: previous in its bucket, or kNil (head)
+  std::size_t capacity_ = 0;               // nodes next_ and prev_ hold
   std::vector<std::uint32_t> head_;  // per bucket: first node, or kNil
   std::uint64_t mask_ = 7;           // ring size - 1
   std::uint64_t cur_ = 0;            // absolute index of the lowest possibly non-empty bucket

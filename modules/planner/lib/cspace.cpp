@@ -23,20 +23,16 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid) {
 
 void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
   mask_ = std::move(mask);
+  index_mask();
   const int w = map.width();
   const int h = map.height();
-  const std::size_t n = map.cell_count();
-  cover_.assign(n, 0);
-  counted_.assign(n, 0);
-  marked_.assign(n, 0);
   grid_.resize(w, h);
-  // prefix[y * (w + 1) + x] = occupied cells in row y with column < x.
+  // A temporary table (set_map allocates): prefix[y * (w + 1) + x] = occupied cells in row y with column < x.
   std::vector<std::uint32_t> prefix(static_cast<std::size_t>(w + 1) * static_cast<std::size_t>(h), 0);
   for (int y = 0; y < h; ++y) {
     std::uint32_t* row = prefix.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(w + 1);
     for (int x = 0; x < w; ++x) {
       const bool occ = map.state({x, y}) == CellState::Occupied;
-      counted_[map.index({x, y})] = occ ? 1 : 0;
       row[x + 1] = row[x] + (occ ? 1u : 0u);
     }
   }
@@ -62,58 +58,123 @@ void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
         acc[static_cast<std::size_t>(x)] += row[x + r.hi + 1] - row[x + r.lo];
       for (int x = std::max(x_out + 1, x_in); x < w; ++x) clamped(x);
     }
-    for (int x = 0; x < w; ++x) {
-      const std::uint32_t i = map.index({x, y});
-      cover_[i] = static_cast<std::uint16_t>(std::min<std::uint32_t>(acc[static_cast<std::size_t>(x)], 65535));
-      grid_.set({x, y}, class_of(cover_[i], map.state_at(i)));
-    }
+    for (int x = 0; x < w; ++x)
+      grid_.set({x, y}, class_of(acc[static_cast<std::size_t>(x)] > 0 ? 1 : 0, map.state_at(map.index({x, y}))));
   }
 }
 
-// Why: recompute one cell's class and report it if it changed.
-void CSpaceLayer::reclass(const OccupancyMap& map, std::uint32_t i, std::vector<ClassChange>* out) {
-  const Cell c = map.cell_of_index(i);
-  const std::uint32_t g = grid_.index(c);
-  const std::uint8_t now = class_of(cover_[i], map.state_at(i));
+// Why: the bounding box of the mask and of each band of kBandRuns runs, for meets().
+void CSpaceLayer::index_mask() {
+  auto box_of = [&](std::size_t i0, std::size_t i1) {
+    Band b{i0, i1, mask_.runs[i0].lo, mask_.runs[i0].dy, mask_.runs[i0].hi, mask_.runs[i0].dy, false};
+    for (std::size_t i = i0; i < i1; ++i) {
+      const MaskRun& r = mask_.runs[i];
+      b.x0 = std::min(b.x0, r.lo);
+      b.x1 = std::max(b.x1, r.hi);
+      b.y0 = std::min(b.y0, r.dy);
+      b.y1 = std::max(b.y1, r.dy);
+    }
+    return b;
+  };
+  // Each box's count is exact below 65,536 cells; a larger box is not used (its runs are).
+  auto exact = [](const Band& b) { return static_cast<std::int64_t>(b.x1 - b.x0 + 1) * (b.y1 - b.y0 + 1) < 65536; };
+  bands_.clear();
+  box_ = Band{};
+  box_exact_ = false;
+  if (mask_.runs.empty()) return;
+  box_ = box_of(0, mask_.runs.size());
+  box_exact_ = exact(box_);
+  for (std::size_t i = 0; i < mask_.runs.size(); i += kBandRuns) {
+    Band b = box_of(i, std::min(i + kBandRuns, mask_.runs.size()));
+    b.exact = exact(b);
+    bands_.push_back(b);
+  }
+}
+
+// Why: whether the footprint at (x, y) meets an occupied cell: the mask's bounding box settles
+// the cells in open space at once, each band's box skips its runs when empty, and the first
+// run holding an obstacle ends the test.
+bool CSpaceLayer::meets(const CSpaceStack& stack, int x, int y) const {
+  if (stack.occupied(x, y)) return true;
+  if (box_exact_ && stack.count(x + box_.x0, y + box_.y0, x + box_.x1, y + box_.y1) == 0) return false;
+  for (const Band& b : bands_) {
+    if (b.exact && stack.count(x + b.x0, y + b.y0, x + b.x1, y + b.y1) == 0) continue;
+    for (std::size_t i = b.first; i < b.last; ++i) {
+      const MaskRun& r = mask_.runs[i];
+      if (stack.any_in_row(y + r.dy, x + r.lo, x + r.hi)) return true;
+    }
+  }
+  return false;
+}
+
+// Why: write one cell's class and report it (once per update) if it changed.
+void CSpaceLayer::set(CSpaceStack& stack, std::uint32_t i, std::uint32_t g, std::uint8_t now,
+                      std::vector<ClassChange>* out) {
   const std::uint8_t before = grid_.cls[g];
   if (now == before) return;
   grid_.cls[g] = now;
-  if (out && !marked_[i]) {
-    marked_[i] = 1;
-    out->push_back({g, before});
-  }
+  if (out && stack.mark_reported(i)) out->push_back({g, before});
 }
 
-void CSpaceLayer::update(const OccupancyMap& map, std::span<const std::uint32_t> cells,
+void CSpaceLayer::update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                          std::vector<ClassChange>* out) {
   const std::size_t first = out ? out->size() : 0;
   const int w = map.width();
   const int h = map.height();
-  for (std::uint32_t o : cells) {
-    const bool occ = map.state_at(o) == CellState::Occupied;
-    if (occ != (counted_[o] != 0)) {
-      counted_[o] = occ ? 1 : 0;
+  // Blocks first, then the re-tests against the final occupancy, then the relabels: each step
+  // writes what the final occupancy and states say, so the order only decides the work.
+  for (const CellChange pass : {kRaised, kLowered, kRelabelled}) {
+    for (std::uint32_t o : cells) {
+      if (stack.kind(o) != pass) continue;
       const Cell oc = map.cell_of_index(o);
+      if (pass == kRelabelled) {
+        const std::uint32_t g = grid_.index(oc);
+        if (grid_.cls[g] != kBlocked) set(stack, o, g, class_of(0, map.state_at(o)), out);
+        continue;
+      }
+      // The cells p whose footprint covers o: p = o - (dx, dy) for each mask offset; and o
+      // itself (blocked by its own obstacle whether or not the mask holds (0, 0)).
+      auto visit = [&](int x, int y) {
+        const std::uint32_t i = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w) + static_cast<std::uint32_t>(x);
+        const std::uint32_t g = grid_.index({x, y});
+        if (pass == kRaised) {
+          if (grid_.cls[g] != kBlocked) set(stack, i, g, kBlocked, out);
+        } else if (grid_.cls[g] == kBlocked && stack.mark_checked(i)) {
+          // Re-tested once per update: a cell still blocked is not tested again for the next
+          // freed cell under its footprint.
+          if (!meets(stack, x, y)) set(stack, i, g, class_of(0, map.state_at(i)), out);
+        }
+      };
       for (const MaskRun& r : mask_.runs) {
         const int y = oc.y - r.dy;
         if (y < 0 || y >= h) continue;
         const int lo = std::max(oc.x - r.hi, 0);
         const int hi = std::min(oc.x - r.lo, w - 1);
-        for (int x = lo; x <= hi; ++x) {
-          const std::uint32_t p = map.index({x, y});
-          cover_[p] = static_cast<std::uint16_t>(occ ? cover_[p] + 1 : cover_[p] - 1);
-          reclass(map, p, out);
-        }
+        for (int x = lo; x <= hi; ++x) visit(x, y);
       }
+      visit(oc.x, oc.y);
     }
-    reclass(map, o, out);  // free <-> unknown changes the class without touching cover
+  }
+  // Clear the "checked" marks: the same cells again (a write per cell, no test).
+  for (std::uint32_t o : cells) {
+    if (stack.kind(o) != kLowered) continue;
+    const Cell oc = map.cell_of_index(o);
+    for (const MaskRun& r : mask_.runs) {
+      const int y = oc.y - r.dy;
+      if (y < 0 || y >= h) continue;
+      const int lo = std::max(oc.x - r.hi, 0);
+      const int hi = std::min(oc.x - r.lo, w - 1);
+      for (int x = lo; x <= hi; ++x)
+        stack.clear_checked(static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w) + static_cast<std::uint32_t>(x));
+    }
+    stack.clear_checked(o);
   }
   if (out) {
     // Drop cells that flipped back, and clear the report marks.
     std::size_t keep = first;
     for (std::size_t k = first; k < out->size(); ++k) {
       const ClassChange ch = (*out)[k];
-      marked_[map.index(grid_.cell(ch.index))] = 0;
+      stack.clear_reported(map.index(grid_.cell(ch.index)));
       if (grid_.cls[ch.index] != ch.before) (*out)[keep++] = ch;
     }
     out->resize(keep);

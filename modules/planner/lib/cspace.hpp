@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "modules/planner/lib/cspace_stack.hpp"
 #include "modules/planner/lib/footprint.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
@@ -21,18 +22,25 @@ struct ClassChange {
 // Why: a point robot's grid straight from the map (MovingAI, or a pre-expanded map).
 void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid);
 
-// One C-space slice: for every cell, how many occupied cells the footprint placed there would
-// meet; the cell is blocked when that count is non-zero, else free or unknown as the map says.
-// A full build uses per-row prefix sums (O(cells x mask rows)); an update stamps the mask
-// around each changed map cell, so a few new obstacles cost a few mask areas.
+// One C-space layer: the map's obstacles dilated by a footprint mask. A cell is blocked when the
+// footprint placed there meets an occupied cell, else free or unknown as the map says. The layer
+// keeps only its classes (one byte per cell); the occupancy it tests against, and the per-cell
+// marks its update needs, are the CSpaceStack shared by every layer of a planner.
+// A full build sums each mask run's occupied cells with per-row prefix sums (O(cells x mask
+// rows)). An update after a sync (CSpaceStack::begin_sync) keeps no counts: a newly occupied
+// map cell blocks every cell whose footprint covers it; a freed one re-tests only the blocked
+// cells whose footprint covered it, each once per update, against the table (the mask's bounding
+// box, then bands of runs, stopping at the first occupied cell); a free <-> unknown change re-classes that cell
+// unless it is blocked.
 class CSpaceLayer {
  public:
   // Why: size for the map and compute everything once.
   void build(const OccupancyMap& map, FootprintMask mask);
 
-  // Why: follow the map after beams: `cells` are map indexes from OccupancyMap::changes().
-  // Cells whose class changed are appended to `out` (each once per call) when it is not null.
-  void update(const OccupancyMap& map, std::span<const std::uint32_t> cells,
+  // Why: follow the map after beams: `cells` are the map indexes from OccupancyMap::changes()
+  // that `stack` has folded (begin_sync, before end_sync). Cells whose class changed are
+  // appended to `out` (each once per call, with its class before the call) when it is not null.
+  void update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
               std::vector<ClassChange>* out);
 
   const PassGrid& grid() const { return grid_; }
@@ -41,13 +49,24 @@ class CSpaceLayer {
   bool blocked(Cell c) const { return grid_.at(c) == kBlocked; }
 
  private:
-  void reclass(const OccupancyMap& map, std::uint32_t map_index, std::vector<ClassChange>* out);
+  // A box of mask offsets (cells) over runs [first, last).
+  struct Band {
+    std::size_t first = 0, last = 0;  // runs
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // cells, offsets from the robot's cell (inclusive)
+    bool exact = false;                // fewer than 65,536 cells: the table's count is exact
+  };
+  static constexpr std::size_t kBandRuns = 4;  // runs per band
+
+  void index_mask();
+  bool meets(const CSpaceStack& stack, int x, int y) const;
+  void set(CSpaceStack& stack, std::uint32_t map_index, std::uint32_t g, std::uint8_t now,
+           std::vector<ClassChange>* out);
 
   FootprintMask mask_;
-  std::vector<std::uint16_t> cover_;   // per map cell: occupied cells met by the footprint there
-  std::vector<std::uint8_t> counted_;  // per map cell: 1 when counted as occupied in cover_
-  std::vector<std::uint8_t> marked_;   // per map cell: already reported in this update
-  PassGrid grid_;                      // the searchable result
+  Band box_;                  // the whole mask's bounding box
+  bool box_exact_ = false;    // box_ holds < 65,536 cells (the table's count is exact)
+  std::vector<Band> bands_;   // kBandRuns runs each, in order
+  PassGrid grid_;                                          // the searchable result
 };
 
 }  // namespace robuter::plan

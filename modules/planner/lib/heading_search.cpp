@@ -23,20 +23,58 @@ std::uint8_t allowed_moves(int slice, int slices, MotionModel motion) {
   return bits;
 }
 
-void HeadingSearch::reserve(int width, int height, int slices) {
-  const auto stored = static_cast<std::size_t>(width + 2) * static_cast<std::size_t>(height + 2);
-  const std::size_t states = stored * static_cast<std::size_t>(std::max(slices, 1));
-  if (nodes_.size() < states) {
-    nodes_.assign(states, Node{0.0, 0, kNoMove, 0});
+namespace {
+
+// meta_ bits of a pool state.
+constexpr std::uint8_t kParentMask = 0x0F;  // how the state was reached (below)
+constexpr std::uint8_t kSeen = 0x10;        // reached in this search (g_ is valid)
+constexpr std::uint8_t kClosed = 0x20;      // expanded
+// Parent codes (0..7: the grid move that led here).
+constexpr std::uint8_t kTurnedUp = 8;     // turned up from the move slot below
+constexpr std::uint8_t kTurnedDown = 9;   // turned down from the move slot above
+constexpr std::uint8_t kSeedUp = 10;      // turned up from a pass-through start slice
+constexpr std::uint8_t kSeedDown = 11;    // turned down from a pass-through start slice
+constexpr std::uint8_t kStartState = 15;  // the start itself
+
+// Why: pages hold a power of two of move slots, so a state's slot is a shift away.
+int log2_ceil(std::size_t n) {
+  int b = 0;
+  while ((std::size_t{1} << b) < n) ++b;
+  return b;
+}
+
+}  // namespace
+
+void HeadingSearch::reserve(int width, int height, int slices, std::size_t state_budget) {
+  const int k = std::max(slices, 1);
+  const int sw = width + 2;
+  const int sh = height + 2;
+  tiles_x_ = (sw + (1 << kTileShift) - 1) >> kTileShift;
+  const int tiles_y = (sh + (1 << kTileShift) - 1) >> kTileShift;
+  const auto tiles = static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y);
+  if (tiles_.size() < tiles) {
+    tiles_.assign(tiles, TileEntry{});
     gen_ = 0;
   }
-  open_.reserve(states);
-  ring_.reserve(states);
-  path_.reserve(2 * stored + static_cast<std::size_t>(std::max(slices, 1)));
-  const auto k = static_cast<std::size_t>(std::max(slices, 1));
-  if (cls_of_.size() < k) cls_of_.resize(k, nullptr);
-  if (turn_of_.size() < k) turn_of_.resize(k, nullptr);
-  if (allowed_.size() < k) allowed_.resize(k, 0);
+  // At least one page of the largest kind (every slice a move slice).
+  const std::size_t one_page = std::size_t{1} << (2 * kTileShift + log2_ceil(static_cast<std::size_t>(k)));
+  const std::size_t budget = std::max(state_budget, one_page);
+  if (budget_ < budget) {
+    g_.reset(new double[budget]);  // uninitialised: resident only where a search writes
+    meta_.reset(new std::uint8_t[budget]);
+  }
+  budget_ = budget;
+  if (origin_.size() < budget / kTileCells) origin_.resize(budget / kTileCells);
+  open_.reserve(budget);
+  ring_.reserve(budget);
+  const auto stored = static_cast<std::size_t>(sw) * static_cast<std::size_t>(sh);
+  path_.reserve(2 * stored + static_cast<std::size_t>(k));
+  const auto kk = static_cast<std::size_t>(k);
+  if (cls_of_.size() < kk) cls_of_.resize(kk, nullptr);
+  if (turn_of_.size() < kk) turn_of_.resize(kk, nullptr);
+  if (allowed_.size() < kk) allowed_.resize(kk, 0);
+  if (move_slice_.size() < kk) move_slice_.resize(kk, 0);
+  if (slot_of_.size() < kk) slot_of_.resize(kk, -1);
 }
 
 PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
@@ -45,6 +83,7 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
                                std::span<const PassGrid* const> turn_slices) {
   PlanResult r;
   path_.clear();
+  used_ = 0;
   const int k_count = static_cast<int>(slices.size());
   if (k_count == 0) return r;
   const PassGrid& g0 = *slices[0];
@@ -58,66 +97,117 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   for (const PassGrid* g : slices) goal_free = goal_free || g->at(goal) != kBlocked;
   if (!goal_free) return r.status = PlanStatus::GoalBlocked, r;
 
-  reserve(g0.width, g0.height, k_count);
+  reserve(g0.width, g0.height, k_count, budget_ == 0 ? kDefaultStateBudget : budget_);
   if (++gen_ == 0) {
-    for (Node& n : nodes_) n.stamp = 0;
+    for (TileEntry& e : tiles_) e.stamp = 0;
     gen_ = 1;
   }
-  const auto stored = static_cast<std::uint32_t>(g0.stored());
   const auto stride = static_cast<std::uint32_t>(g0.stride);
   const MoveTable mt(g0.stride);
   const auto cost = costs.table();
   std::uint8_t* allowed = allowed_.data();
   const std::uint8_t** cls_of = cls_of_.data();
   const std::uint8_t** turn_of = turn_of_.data();
+  int* move_slice = move_slice_.data();
+  int* slot_of = slot_of_.data();
   const bool own_turns = turn_slices.size() == slices.size();
+  int m_count = 0;  // move slots
   for (int k = 0; k < k_count; ++k) {
     allowed[k] = allowed_moves(k, k_count, options.motion);
     cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
     turn_of[k] = own_turns ? turn_slices[static_cast<std::size_t>(k)]->cls.data() : cls_of[k];
+    slot_of[k] = -1;
+    if (allowed[k] != 0) {
+      slot_of[k] = m_count;
+      move_slice[m_count++] = k;
+    }
   }
+  const int shift = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
+  page_shift_ = shift;
+  pages_ = budget_ >> shift;
+  const std::uint32_t local_mask = (std::uint32_t{1} << shift) - 1;
   const int tx = goal.x + 1;
   const int ty = goal.y + 1;
   const std::uint32_t t = g0.index(goal);
-  auto h_of = [&](std::uint32_t cell) -> double {
+  auto h_of = [&](int x, int y, std::uint32_t cell) -> double {
     if (heuristic) return heuristic->cost_at(cell);
-    return octile(static_cast<int>(cell % stride) - tx, static_cast<int>(cell / stride) - ty);
+    return octile(x - tx, y - ty);
   };
   const double turn = std::max(options.rotation_step_cost, 0.0);
-  Node* nodes = nodes_.data();
+  double* g = g_.get();
+  std::uint8_t* meta = meta_.get();
+  TileEntry* tiles = tiles_.data();
+  PageOrigin* origin = origin_.data();
+  const int tiles_x = tiles_x_;
+  constexpr int tmask = (1 << kTileShift) - 1;
+  auto tile_of = [&](int x, int y) -> TileEntry& {
+    return tiles[(y >> kTileShift) * tiles_x + (x >> kTileShift)];
+  };
+  auto id_in = [&](std::uint32_t page, int x, int y, int slot) -> std::uint32_t {
+    return (page << shift) | (static_cast<std::uint32_t>(slot) << (2 * kTileShift)) |
+           (static_cast<std::uint32_t>(y & tmask) << kTileShift) | static_cast<std::uint32_t>(x & tmask);
+  };
 
   // Open list: the bucket ring when edge costs are bounded enough, else the heap (see
   // BucketRing: with the ring, closed states may be reopened and the loop ends when the lowest
-  // bucket reaches the best goal cost; with the heap, when the popped f reaches it).
-  const double max_edge = std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn);
-  const double h0 = h_of(g0.index(sc));
+  // bucket reaches the best goal cost; with the heap, when the popped f reaches it). A turn
+  // edge spans up to k_count - 1 slice steps.
+  const double max_edge =
+      std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn * std::max(k_count - 1, 1));
+  const int sx = sc.x + 1;
+  const int sy = sc.y + 1;
+  const std::uint32_t start_index = g0.index(sc);
+  const double h0 = h_of(sx, sy, start_index);
   if (h0 == CostField::kInfinity) return r;  // the relaxation already says unreachable
+  if (start_index == t) {  // already there, at the start heading
+    path_.push_back(start);
+    r.status = PlanStatus::Found;
+    return r;
+  }
+  if (m_count == 0) return r;  // no slice allows a grid move
   const bool use_ring = !options.heap && ring_.reset(kBucketWidth, max_edge, h0);
   open_.clear();
   double best = CostField::kInfinity;
   std::uint32_t reached = 0;
+  bool limit = false;
 
-  auto relax = [&](std::uint32_t cell, int k, double ng, std::uint8_t how) {
-    const std::uint32_t s = static_cast<std::uint32_t>(k) * stored + cell;
-    Node& n = nodes[s];
-    if (n.stamp != gen_) {
-      const double h = h_of(cell);
+  auto relax = [&](int x, int y, int slot, double ng, std::uint8_t how) {
+    const std::uint32_t cell = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
+    TileEntry& te = tile_of(x, y);
+    double h = -1.0;
+    if (te.stamp != gen_) {
+      h = h_of(x, y, cell);
       if (h == CostField::kInfinity) return;  // the relaxation cannot reach the goal from here
-      n = Node{ng, gen_, how, 0};
+      if (used_ == pages_) {
+        limit = true;  // the pool is spent: the search cannot finish exactly
+        return;
+      }
+      te.stamp = gen_;
+      te.page = static_cast<std::uint32_t>(used_++);
+      origin[te.page] = PageOrigin{x & ~tmask, y & ~tmask};
+      std::fill_n(meta + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
+                  std::uint8_t{0});
+    }
+    const std::uint32_t s = id_in(te.page, x, y, slot);
+    std::uint8_t& mt_s = meta[s];
+    if (!(mt_s & kSeen)) {
+      if (h < 0.0) h = h_of(x, y, cell);
+      if (h == CostField::kInfinity) return;
+      g[s] = ng;
+      mt_s = static_cast<std::uint8_t>(kSeen | how);
       if (use_ring) ring_.push(s, ng + h);
       else open_.push(s, ng + h, static_cast<float>(h));
-    } else if (ng < n.g - 1e-9 && (use_ring || !n.closed)) {
-      const double h = h_of(cell);
-      if (n.closed) {
-        n.closed = 0;  // reopened (ring only): its first expansion came a little early
-        ring_.push(s, ng + h);
+    } else if (ng < g[s] - 1e-9 && (use_ring || !(mt_s & kClosed))) {
+      h = h_of(x, y, cell);
+      if (mt_s & kClosed) {
+        ring_.push(s, ng + h);  // reopened (ring only): its first expansion came a little early
       } else if (use_ring) {
-        ring_.lower_key(s, n.g + h, ng + h);
+        ring_.lower_key(s, g[s] + h, ng + h);
       } else {
         open_.decrease(s, ng + h, static_cast<float>(h));
       }
-      n.g = ng;
-      n.parent = how;
+      g[s] = ng;
+      mt_s = static_cast<std::uint8_t>(kSeen | how);
     } else {
       return;
     }
@@ -127,9 +217,40 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
     }
   };
 
-  const std::uint32_t start_index = g0.index(sc);
-  relax(start_index, start.slice, 0.0, kNoMove);
-  for (;;) {
+  // Why: can the robot turn in place at `cell` from slice `from` by `steps` slice steps in
+  // direction `dir` (+1 up, -1 down)? Each step j -> j' needs room (`room`) at j and j' and the
+  // body itself free at j' (the full graph's rule, step by step).
+  auto arc_free = [&](const std::uint8_t* const* room, std::uint32_t cell, int from, int steps,
+                      int dir) {
+    if (room[from][cell] == kBlocked) return false;
+    int j = from;
+    for (int q = 0; q < steps; ++q) {
+      j = (j + dir + k_count) % k_count;
+      if (room[j][cell] == kBlocked || cls_of[j][cell] == kBlocked) return false;
+    }
+    return true;
+  };
+
+  const int s0 = start.slice;
+  if (slot_of[s0] >= 0) {
+    relax(sx, sy, slot_of[s0], 0.0, kStartState);
+  } else {
+    // A pass-through start slice: seed the nearest move slices either way (at the start cell
+    // the body's own room is enough to turn).
+    int up = s0;
+    int n_up = 0;
+    do up = (up + 1) % k_count, ++n_up;
+    while (slot_of[up] < 0);
+    int down = s0;
+    int n_down = 0;
+    do down = (down + k_count - 1) % k_count, ++n_down;
+    while (slot_of[down] < 0);
+    if (arc_free(cls_of, start_index, s0, n_up, +1))
+      relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
+    if (arc_free(cls_of, start_index, s0, n_down, -1))
+      relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
+  }
+  while (!limit) {
     std::uint32_t s;
     if (use_ring) {
       if (ring_.empty() || ring_.lower() >= best) break;
@@ -138,12 +259,16 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       if (open_.empty() || open_.top().key >= best) break;
       s = open_.pop().node;
     }
-    Node& ns = nodes[s];
-    ns.closed = 1;
-    const std::uint32_t u = s % stored;
-    const int k = static_cast<int>(s / stored);
-    const double gu = ns.g;
-    if (u == t || gu + h_of(u) >= best) continue;
+    meta[s] = static_cast<std::uint8_t>(meta[s] | kClosed);
+    const std::uint32_t local = s & local_mask;
+    const PageOrigin& o = origin[s >> shift];
+    const int slot = static_cast<int>(local >> (2 * kTileShift));
+    const int x = o.x + static_cast<int>(local & static_cast<std::uint32_t>(tmask));
+    const int y = o.y + static_cast<int>((local >> kTileShift) & static_cast<std::uint32_t>(tmask));
+    const std::uint32_t u = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
+    const int k = move_slice[slot];
+    const double gu = g[s];
+    if (u == t || gu + h_of(x, y, u) >= best) continue;
     ++r.expanded;
     const std::uint8_t* cls = cls_of[k];
     const std::uint8_t cu = cls[u];
@@ -156,43 +281,65 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
                      cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
         continue;
-      relax(v, k, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
+      relax(x + kMoveDx[m], y + kMoveDy[m], slot, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
     }
-    if (k_count > 1) {
-      const int up = (k + 1) % k_count;
-      const int down = (k + k_count - 1) % k_count;
+    if (m_count > 1) {
       // The current slice is free at u (tight); turning may ask for more room, except where
       // the robot already stands: there the body's own room is enough (it may have stopped
       // close to something, and must be able to turn away).
       const std::uint8_t* const* room = own_turns && u != start_index ? turn_of : cls_of;
-      const bool here = room[k][u] != kBlocked;
-      if (here && room[up][u] != kBlocked && cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8);
-      if (here && down != up && room[down][u] != kBlocked && cls_of[down][u] != kBlocked)
-        relax(u, down, gu + turn, 9);
+      const int up = (slot + 1) % m_count;
+      const int down = (slot + m_count - 1) % m_count;
+      const int n_up = (move_slice[up] - k + k_count) % k_count;
+      const int n_down = (k - move_slice[down] + k_count) % k_count;
+      if (arc_free(room, u, k, n_up, +1)) relax(x, y, up, gu + n_up * turn, kTurnedUp);
+      if (arc_free(room, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
     }
   }
+  if (limit) return r.status = PlanStatus::SearchLimit, r;
   const bool found = best != CostField::kInfinity;
   if (!found) return r;  // Unreachable
 
-  // Walk back from the goal state.
+  // Walk back from the goal state, listing every slice a turn passes.
   int orth = 0;
   int diag = 0;
   std::uint32_t s = reached;
-  r.cost = nodes[s].g;
+  r.cost = g[s];
   for (;;) {
-    const std::uint32_t u = s % stored;
-    const int k = static_cast<int>(s / stored);
-    const Cell c = g0.cell(u);
-    path_.push_back({c.x, c.y, k});
-    const int p = nodes[s].parent;
-    if (p == kNoMove) break;
+    const std::uint32_t local = s & local_mask;
+    const PageOrigin& o = origin[s >> shift];
+    const int slot = static_cast<int>(local >> (2 * kTileShift));
+    int x = o.x + static_cast<int>(local & static_cast<std::uint32_t>(tmask));
+    int y = o.y + static_cast<int>((local >> kTileShift) & static_cast<std::uint32_t>(tmask));
+    const int k = move_slice[slot];
+    path_.push_back({x - 1, y - 1, k});
+    const int p = meta[s] & kParentMask;
+    if (p == kStartState) break;
+    int from_slot = slot;
+    int dir = 0;  // slice step walking back: -1 (we turned up), +1 (we turned down)
+    int stop = -1;
     if (p < 8) {
       (p < 4 ? orth : diag) += 1;
-      s = static_cast<std::uint32_t>(k) * stored + (u - static_cast<std::uint32_t>(mt.step[p]));
+      x -= kMoveDx[p];
+      y -= kMoveDy[p];
+    } else if (p == kTurnedUp || p == kSeedUp) {
+      dir = -1;
+      from_slot = (slot + m_count - 1) % m_count;
+      stop = p == kSeedUp ? s0 : move_slice[from_slot];
     } else {
-      const int from = p == 8 ? (k + k_count - 1) % k_count : (k + 1) % k_count;
-      s = static_cast<std::uint32_t>(from) * stored + u;
+      dir = +1;
+      from_slot = (slot + 1) % m_count;
+      stop = p == kSeedDown ? s0 : move_slice[from_slot];
     }
+    if (dir != 0) {
+      for (int j = (k + dir + k_count) % k_count; j != stop; j = (j + dir + k_count) % k_count)
+        path_.push_back({x - 1, y - 1, j});
+      if (p == kSeedUp || p == kSeedDown) {
+        path_.push_back({x - 1, y - 1, s0});
+        break;
+      }
+    }
+    s = id_in(tile_of(x, y).page, x, y, from_slot);
   }
   std::reverse(path_.begin(), path_.end());
   r.status = PlanStatus::Found;

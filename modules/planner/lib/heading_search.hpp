@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -30,20 +32,38 @@ struct HeadingOptions {
   bool heap = false;                          // force the heap open list (tests compare)
 };
 
-// A* over states (cell, slice). Moves: the allowed grid moves within a slice (both cells, and
-// for a diagonal both side cells, free in that slice: slices are swept over their heading
-// interval, so the footprint's translation along the heading is covered); rotation in place to
-// an adjacent slice when the cell is free in both (their union covers the turn). The goal is a
-// cell at any heading. Heuristic: the cost field of a relaxation (the map dilated by the
-// footprint's inscribed disc: free for the rectangle at some heading implies free for the disc),
-// which is admissible and consistent; without one, octile distance. Open list: a BucketRing
-// (exact, with reopening), or a 4-ary heap when unknown cells are far dearer.
+// A* over states (cell, move slice). Moves: the allowed grid moves within a slice (both cells,
+// and for a diagonal both side cells, free in that slice: slices are swept over their heading
+// interval, so the footprint's translation along the heading is covered); rotation in place
+// between slices when the cell is free in both (their union covers the turn). The goal is a cell
+// at any heading. Heuristic: the cost field of a relaxation (the map dilated by the footprint's
+// inscribed disc: free for the rectangle at some heading implies free for the disc), which is
+// admissible and consistent; without one, octile distance. Open list: a BucketRing (exact, with
+// reopening), or a 4-ary heap when unknown cells are far dearer.
+//
+// Lean states: a slice that allows no grid move (MotionModel::Aligned: 24 of 32 by default)
+// only passes turns, so states exist only in the move slices; a turn edge joins a move slice to
+// the next one up or down at the same cell, allowed exactly when every one-slice step between
+// them is, and costs the steps' sum. This is the full (cell x slice) graph with its pass-through
+// states contracted: costs are identical (tests/planner/test_lean_search.cpp checks against the
+// full graph), and path() still lists every slice passed. States live in pages, one per tile of
+// 8 x 8 cells (all move slices), taken from a pool sized once by reserve(): memory follows the
+// cells a search touches, not the map's area. A search that needs more pages than the pool
+// holds ends with PlanStatus::SearchLimit.
 class HeadingSearch {
  public:
   static constexpr double kBucketWidth = 0.5;  // cells of f per open-list bucket
+  static constexpr int kTileShift = 3;         // tiles of 8 x 8 cells
+  static constexpr int kTileCells = 1 << (2 * kTileShift);  // cells per tile
+  // States the pool holds by default: 262,144 (17 bytes each with the bucket ring, 37 with the
+  // heap; resident only where a search writes). The seed 000 lab run's largest search took
+  // 108 k (211 pages of 512); see docs/PLANNER.md.
+  static constexpr std::size_t kDefaultStateBudget = std::size_t{1} << 18;
 
-  // Why: size every buffer for slices of width x height (the only allocation).
-  void reserve(int width, int height, int slices);
+  // Why: size every buffer for slices of width x height (the only allocation); `state_budget`
+  // caps the states one search may hold (whole pages; at least one page).
+  void reserve(int width, int height, int slices,
+               std::size_t state_budget = kDefaultStateBudget);
 
   // Why: the entry point; `slices` are K grids of one size; the path is then in path().
   // `turn_slices` (empty, or K grids of the same size): where turning in place needs more room
@@ -55,24 +75,42 @@ class HeadingSearch {
                   const CostField* heuristic = nullptr,
                   std::span<const PassGrid* const> turn_slices = {});
 
+  // Start first; consecutive entries differ by one grid move or one slice step.
   const std::vector<CellPose>& path() const { return path_; }
+  // Why: measurements and tests: pages (tiles) the last search took, and states per page.
+  std::size_t pages_used() const { return used_; }
+  std::size_t page_states() const { return std::size_t{1} << page_shift_; }
+  std::size_t state_budget() const { return budget_; }
 
  private:
-  // Per state search data.
-  struct Node {
-    double g;             // cells: best cost from the start
-    std::uint32_t stamp;  // generation that wrote it
-    std::uint8_t parent;  // 0..7 grid move, 8 turned +1 slice, 9 turned -1 slice, kNoMove start
-    std::uint8_t closed;  // 1 once expanded
+  // A tile's page in the current search.
+  struct TileEntry {
+    std::uint32_t stamp = 0;  // generation that gave the tile its page (else: none)
+    std::uint32_t page = 0;   // pool page index
+  };
+  // The stored cell at a page's tile corner.
+  struct PageOrigin {
+    std::int32_t x;  // stored cells (grid x + 1)
+    std::int32_t y;  // stored cells (grid y + 1)
   };
 
-  std::vector<Node> nodes_;    // slice-major: slice * stored + cell index
+  std::unique_ptr<double[]> g_;          // per pool state: cells, best cost from the start
+  std::unique_ptr<std::uint8_t[]> meta_; // per pool state: parent (low 4 bits) | kSeen | kClosed
+  std::size_t budget_ = 0;               // states in g_ and meta_
+  std::vector<TileEntry> tiles_;         // per tile of the stored grid
+  std::vector<PageOrigin> origin_;       // per page (budget_ / kTileCells at most)
+  int tiles_x_ = 0;                      // tiles per stored row
+  int page_shift_ = 0;                   // log2 of states per page (this search)
+  std::size_t pages_ = 0;                // pages the pool holds (this search)
+  std::size_t used_ = 0;                 // pages taken (this search)
   IndexedHeap open_;           // open list for very uneven costs
   std::vector<CellPose> path_; // last path, start first
   std::uint32_t gen_ = 0;      // generation stamp
   std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
   std::vector<const std::uint8_t*> turn_of_; // per slice: classes checked for turns (this search)
   std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
+  std::vector<int> move_slice_;              // per move slot: its slice (this search)
+  std::vector<int> slot_of_;                 // per slice: its move slot, or -1 (this search)
   BucketRing ring_;            // open list when edge costs allow (else open_)
 };
 

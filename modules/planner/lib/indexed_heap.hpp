@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace robuter::plan {
@@ -20,9 +21,14 @@ class IndexedHeap {
   };
 
   // Why: one allocation for the largest node count this heap will see.
+  // Positions are left uninitialised (written when a node enters the heap, before any read),
+  // so they are only resident for the nodes a search pushes.
   void reserve(std::size_t nodes) {
     heap_.reserve(nodes);
-    if (pos_.size() < nodes) pos_.resize(nodes);
+    if (pos_capacity_ < nodes) {
+      pos_.reset(new std::uint32_t[nodes]);
+      pos_capacity_ = nodes;
+    }
   }
   bool empty() const { return heap_.empty(); }
   std::size_t size() const { return heap_.size(); }
@@ -96,7 +102,8 @@ class IndexedHeap {
   }
 
   std::vector<Entry> heap_;          // the 4-ary heap
-  std::vector<std::uint32_t> pos_;   // per node: its slot in heap_ while it is in the heap
+  std::unique_ptr<std::uint32_t[]> pos_;  // per node: its slot in heap_ while it is in the heap
+  std::size_t pos_capacity_ = 0;          // nodes pos_ holds
 };
 
 }  // namespace robuter::plan

@@ -15,6 +15,7 @@ enum class PlanStatus : std::uint8_t {
   GoalOutside,   // goal is not on the map
   StartBlocked,  // start is an (expanded) obstacle
   GoalBlocked,   // goal is an (expanded) obstacle
+  SearchLimit,   // the search needed more states than its memory budget holds (no path)
 };
 
 // Why: tools and logs print statuses by name.
@@ -26,6 +27,7 @@ constexpr std::string_view to_string(PlanStatus s) {
     case PlanStatus::GoalOutside: return "goal outside the map";
     case PlanStatus::StartBlocked: return "start blocked";
     case PlanStatus::GoalBlocked: return "goal blocked";
+    case PlanStatus::SearchLimit: return "search memory exhausted";
   }
   return "?";
 }

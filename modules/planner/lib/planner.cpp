@@ -29,6 +29,7 @@ void Planner::set_map(const OccupancyMap& map) {
       turn_masks_ = rectangle_slices(grown, res, full_turn_slices());
     }
   }
+  cspace_.reset(map_);
   layers_.resize(masks_.size());
   for (std::size_t k = 0; k < masks_.size(); ++k) layers_[k].build(map_, masks_[k]);
   if (cfg_.footprint == FootprintKind::Rectangle) relaxation_.build(map_, relaxation_mask_);
@@ -43,9 +44,13 @@ void Planner::set_map(const OccupancyMap& map) {
   field_changes_.reserve(map_.cell_count());
   field_.reserve(w, h);
   field_ready_ = false;
-  grid_search_.reserve(w, h);
-  if (cfg_.footprint == FootprintKind::Rectangle) heading_search_.reserve(w, h, full_turn_slices());
-  cells_.reserve(map_.cell_count() + 1);
+  // Each footprint reserves only the search it uses (the rectangle never runs the 2D one).
+  if (cfg_.footprint == FootprintKind::Rectangle) {
+    heading_search_.reserve(w, h, full_turn_slices());
+  } else {
+    grid_search_.reserve(w, h);
+    cells_.reserve(map_.cell_count() + 1);
+  }
   waypoints_.reserve(2 * map_.cell_count() + layers_.size());
 }
 
@@ -54,10 +59,12 @@ void Planner::sync() {
   if (changed.empty()) return;
   const bool rect = cfg_.footprint == FootprintKind::Rectangle;
   field_changes_.clear();
+  cspace_.begin_sync(map_, changed);
   for (std::size_t k = 0; k < layers_.size(); ++k)
-    layers_[k].update(map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
-  for (CSpaceLayer& l : turn_layers_) l.update(map_, changed, nullptr);
-  if (rect) relaxation_.update(map_, changed, &field_changes_);
+    layers_[k].update(cspace_, map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
+  for (CSpaceLayer& l : turn_layers_) l.update(cspace_, map_, changed, nullptr);
+  if (rect) relaxation_.update(cspace_, map_, changed, &field_changes_);
+  cspace_.end_sync(changed);
   if (field_ready_) field_.update(field_changes_);
   map_.clear_changes();
 }

@@ -96,6 +96,7 @@ class Planner {
   std::vector<FootprintMask> masks_;    // per layer, for masks_resolution_
   FootprintMask relaxation_mask_;       // inscribed disc (Rectangle)
   double masks_resolution_ = 0.0;       // m per cell the masks were made for
+  CSpaceStack cspace_;                  // the occupancy and marks every layer shares
   std::vector<CSpaceLayer> layers_;     // Disc: 1 layer; Rectangle: one per heading slice
   CSpaceLayer relaxation_;              // Rectangle: inscribed-disc layer (heuristic field)
   std::vector<const PassGrid*> slice_grids_;  // pointers to layers_' grids

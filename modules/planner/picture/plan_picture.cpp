@@ -29,6 +29,8 @@ std::string plan_outcome(const PlanSnapshot& s) {
     case PlanStatus::GoalBlocked:
       std::snprintf(t, sizeof t, "no path: goal blocked - the goal lies in an obstacle grown by the %s footprint", body);
       return t;
+    case PlanStatus::SearchLimit:
+      return "no path: search memory exhausted - the search needed more states than its budget holds";
   }
   return "no path";
 }

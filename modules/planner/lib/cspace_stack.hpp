@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What every C-space layer shares: the occupancy it was built from, as a summed-area table.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "modules/planner/lib/occupancy_map.hpp"
+
+namespace robuter::plan {
+
+// How a logged map cell changed for the layers in one sync (CSpaceStack::kind()).
+enum CellChange : std::uint8_t {
+  kNoChange = 0,    // not logged, or logged with nothing the layers see changed
+  kRaised = 1,      // became occupied
+  kLowered = 2,     // was occupied, no longer is
+  kRelabelled = 3,  // free <-> unknown, occupancy unchanged
+};
+
+// The part of the C-space that is the same for every layer, kept once: which map cells are
+// occupied (a summed-area table of 16-bit counts taken modulo 2^16, exact for any rectangle of
+// fewer than 65,536 cells), and one byte per cell of marks for the layers' updates (the change
+// kind of the current sync, and a layer's "already reported" and "already re-tested"). The layers hold only their
+// classes; a layer asks here whether any occupied cell lies under its mask at a cell.
+class CSpaceStack {
+ public:
+  // Why: size for the map and take its occupancy (set_map; allocates).
+  void reset(const OccupancyMap& map);
+
+  // Why: fold the map's logged changes before the layers update: each cell's kind is set, and
+  // the table is rebuilt when the occupancy changed. end_sync() must follow the layers.
+  void begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells);
+  // Why: clear the kinds set by begin_sync.
+  void end_sync(std::span<const std::uint32_t> cells);
+
+  int width() const { return w_; }
+  int height() const { return h_; }
+  // Why: the kind of a map cell's change in the current sync.
+  CellChange kind(std::uint32_t map_index) const {
+    return static_cast<CellChange>(marks_[map_index] & kKindBits);
+  }
+  // Why: occupied cells in columns [x0, x1] of rows [y0, y1], clipped to the map (wraps past
+  // 65,535 cells: callers ask about rectangles smaller than that, or only compare with 0).
+  std::uint16_t count(int x0, int y0, int x1, int y1) const {
+    x0 = x0 < 0 ? 0 : x0;
+    y0 = y0 < 0 ? 0 : y0;
+    x1 = x1 >= w_ ? w_ - 1 : x1;
+    y1 = y1 >= h_ ? h_ - 1 : y1;
+    if (x0 > x1 || y0 > y1) return 0;
+    const std::uint16_t* a = sat_.data() + static_cast<std::size_t>(y0) * stride_;
+    const std::uint16_t* b = sat_.data() + static_cast<std::size_t>(y1 + 1) * stride_;
+    return static_cast<std::uint16_t>(b[x1 + 1] - b[x0] - a[x1 + 1] + a[x0]);
+  }
+  // Why: one row's run, the layers' inner test.
+  bool any_in_row(int y, int x0, int x1) const { return count(x0, y, x1, y) != 0; }
+  bool occupied(int x, int y) const { return any_in_row(y, x, x); }
+
+  // Why: a layer's update marks a cell reported once (bit kReported of the per-cell byte).
+  bool mark_reported(std::uint32_t map_index) {
+    if (marks_[map_index] & kReported) return false;
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] | kReported);
+    return true;
+  }
+  void clear_reported(std::uint32_t map_index) {
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] & ~kReported);
+  }
+
+  // Why: a layer's update re-tests a cell once (bit kChecked of the per-cell byte).
+  bool mark_checked(std::uint32_t map_index) {
+    if (marks_[map_index] & kChecked) return false;
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] | kChecked);
+    return true;
+  }
+  void clear_checked(std::uint32_t map_index) {
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] & ~kChecked);
+  }
+
+ private:
+  static constexpr std::uint8_t kKindBits = 3;
+  static constexpr std::uint8_t kReported = 4;
+  static constexpr std::uint8_t kChecked = 8;
+  void rebuild(const OccupancyMap& map);
+
+  int w_ = 0;                        // cells
+  int h_ = 0;                        // cells
+  std::size_t stride_ = 1;           // table entries per row (w_ + 1)
+  std::vector<std::uint16_t> sat_;   // (h_ + 1) x (w_ + 1): occupied cells in [0, x) x [0, y), mod 2^16
+  std::vector<std::uint8_t> marks_;  // per map cell: CellChange | kReported | kChecked
+};
+
+}  // namespace robuter::plan
