@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <utility>
 
 #include "modules/planner/lib/cspace.hpp"
 #include "modules/planner/lib/grid_search.hpp"
@@ -113,6 +115,57 @@ TEST(MovingAi, BfsPathsAreValidAndNeverShorter) {
 TEST(MovingAi, OptimalLengthsOnEveryScenario) {
   EXPECT_EQ(check_maps(1, SearchMode::Optimal), 2690);
   EXPECT_EQ(check_maps(1, SearchMode::Optimal, GridSearch::Engine::Buckets), 2690);
+}
+
+// The maze, random and room families (512 x 512, hog2's maps/mazes, random, rooms): a sample of
+// each map's scenarios, every engine. Published lengths there have 6 significant digits (hog2
+// rounds sqrt 2), so a length is exact within half a unit of the 6th digit.
+TEST(MovingAi, SampleOfTheMazeRandomAndRoomFamiliesEveryEngine) {
+  const char* const maps[] = {"maze512-1-0", "random512-10-0", "random512-40-0", "8room_000"};
+  const GridSearch::Engine engines[] = {GridSearch::Engine::Auto, GridSearch::Engine::JumpPoints,
+                                        GridSearch::Engine::Buckets, GridSearch::Engine::Heap};
+  int checked = 0;
+  for (const char* name : maps) {
+    const std::string dir = ROBUTER_MOVINGAI_DIR;
+    const auto map = load_movingai_map(dir + "/" + name + ".map");
+    const auto scen = load_movingai_scen(dir + "/" + name + ".map.scen");
+    ASSERT_TRUE(map.ok() && scen.ok()) << name;
+    PassGrid grid;
+    pass_grid_from_map(*map, grid);
+    GridSearch search(grid.width, grid.height);
+    // Three scenarios spread over the file (it is sorted by length bucket), the longest last.
+    const std::size_t n = scen->size();
+    for (const std::size_t i : {n / 8, n / 2, n - 1}) {
+      const Scenario& s = (*scen)[i];
+      const double tolerance = std::max(1e-3, 0.5 * std::pow(10.0, std::floor(std::log10(s.optimal)) - 5.0) + 1e-6);
+      for (const GridSearch::Engine engine : engines) {
+        search.set_engine(engine);
+        const PlanResult r = search.find(grid, s.start, s.goal, SearchMode::Optimal);
+        ASSERT_TRUE(r.found()) << name << " #" << i;
+        EXPECT_NEAR(r.length, s.optimal, tolerance) << name << " #" << i << " engine " << static_cast<int>(engine);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 4 * 3 * 4);
+}
+
+// Auto's rule (measured by robuter-plan-bench, docs/PLANNER.md "Bench"): jump points on the
+// game, city, maze and room maps; the bucket A* on the random grids.
+TEST(MovingAi, AutoPicksTheFasterEnginePerFamily) {
+  const std::pair<const char*, bool> cases[] = {
+      {"arena", true},        {"den101d", true},         {"den312d", true},          {"lak303d", true},
+      {"Berlin_0_256", true}, {"maze512-1-0", true},     {"8room_000", true},        {"random512-10-0", false},
+      {"random512-40-0", false}};
+  for (const auto& [name, jump] : cases) {
+    const auto map = load_movingai_map(std::string(ROBUTER_MOVINGAI_DIR) + "/" + name + ".map");
+    ASSERT_TRUE(map.ok()) << name;
+    PassGrid grid;
+    pass_grid_from_map(*map, grid);
+    GridSearch search(grid.width, grid.height);
+    EXPECT_EQ(search.prefers_jump_points(grid), jump)
+        << name << ": scattered " << search.scattered_fraction(grid) << ", runs " << search.run_fraction(grid);
+  }
 }
 
 TEST(MovingAi, GoalOutsideTheMap) {

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Planner bench: optimal search vs BGL astar_search on MovingAI maps, 1000x1000 full plans, replans.
+# Planner bench: the firmware's planner (PASS/FAIL per target), MovingAI per family (every map and
+# scenario, each engine vs BGL astar_search), 1000x1000 full plans, replans. ROBUTER_BENCH_STRIDE=n
+# runs every n-th scenario, ROBUTER_BENCH_REPS the repetitions per engine (default 3).
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -15,4 +17,4 @@ if [[ -x "$bin/planner_tests" ]]; then
   ROBUTER_FOOTPRINT_POSES=100000 "$bin/planner_tests" --gtest_filter='FullTurnFootprint.NeverFree*' |
     grep -E 'poses:|OK|FAILED'
 fi
-exec "$bin/robuter-plan-bench" "$data"
+exec "$bin/robuter-plan-bench" "$data" "$root"

@@ -13,8 +13,10 @@ namespace robuter::plan {
 // f values then lie within 2 * max_edge of the lowest, so a ring of buckets of width `width`
 // covers them. Buckets are doubly linked lists through per-node arrays (no allocation after
 // reserve()); within a bucket the order is last-in first-out, so the order is exact only to
-// `width`: searches using it reopen a closed node whose cost still improves and stop when the
-// lowest bucket's start reaches the best goal cost (see GridSearch for the same scheme inlined).
+// `width`: searches using it reopen a closed node whose cost still improves and stop when
+// lower() reaches the best goal cost (see GridSearch for the same scheme inlined). A key below
+// the current bucket (an inconsistent heuristic can lower f along an edge) is filed in the
+// current bucket, and lower() then returns that key: it bounds every queued key from below.
 class BucketRing {
  public:
   static constexpr std::uint32_t kNil = 0xFFFFFFFFu;
@@ -43,27 +45,32 @@ class BucketRing {
     width_ = width;
     head_.assign(ring, kNil);
     cur_ = bucket(first_f);
+    below_ = kNone;
     size_ = 0;
     return true;
   }
 
   bool empty() const { return size_ == 0; }
-  // Lowest f the next pop can have (start of the current bucket).
-  double lower() const { return static_cast<double>(cur_) * width_; }
+  // Lowest f the next pop can have: the start of the current bucket, or the lowest key filed
+  // below it since the ring reached it.
+  double lower() const { return std::min(static_cast<double>(cur_) * width_, below_); }
 
   // Why: insert a node that is not in the ring.
   void push(std::uint32_t v, double f) {
-    link(v, std::max(bucket(f), cur_));
+    link(v, file(f));
     ++size_;
   }
   // Why: a node in the ring got a lower f (old_f must be the f it was pushed with).
   void lower_key(std::uint32_t v, double old_f, double new_f) {
     unlink(v, std::max(bucket(old_f), cur_));
-    link(v, std::max(bucket(new_f), cur_));
+    link(v, file(new_f));
   }
   // Why: take a node from the lowest non-empty bucket (the ring must not be empty).
   std::uint32_t pop() {
-    while (head_[slot(cur_)] == kNil) ++cur_;
+    while (head_[slot(cur_)] == kNil) {
+      ++cur_;
+      below_ = kNone;  // the keys filed below the old bucket left with it
+    }
     const std::uint32_t v = head_[slot(cur_)];
     unlink(v, cur_);
     --size_;
@@ -71,7 +78,17 @@ class BucketRing {
   }
 
  private:
+  static constexpr double kNone = 1e300;  // below_ when no key was filed below the bucket
+
   std::uint64_t bucket(double f) const { return static_cast<std::uint64_t>(f * inv_width_); }
+  // Why: the bucket a key goes to: its own, or the current one if it lies below (remembered
+  // for lower()). A node stays in the current bucket until popped, so unlink() finds it there.
+  std::uint64_t file(double f) {
+    const std::uint64_t b = bucket(f);
+    if (b >= cur_) return b;
+    below_ = std::min(below_, f);
+    return cur_;
+  }
   // Why: a bucket's place in the ring. Below 4096 (reset()), so exact where size_t has 32 bits (armhf);
   // the absolute bucket index itself stays 64-bit.
   std::size_t slot(std::uint64_t b) const { return static_cast<std::size_t>(b & mask_); }
@@ -95,6 +112,7 @@ class BucketRing {
   std::vector<std::uint32_t> head_;  // per bucket: first node, or kNil
   std::uint64_t mask_ = 7;           // ring size - 1
   std::uint64_t cur_ = 0;            // absolute index of the lowest possibly non-empty bucket
+  double below_ = kNone;             // f units: lowest key filed below bucket cur_ (kNone: none)
   double width_ = 1.0;               // f units per bucket
   double inv_width_ = 1.0;           // 1 / width_
   std::size_t size_ = 0;             // nodes in the ring

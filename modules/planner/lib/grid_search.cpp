@@ -60,7 +60,7 @@ PlanResult GridSearch::find(const PassGrid& grid, Cell start, Cell goal, SearchM
     case Engine::Heap:
       return astar(grid, s, t, costs);
     case Engine::Auto:
-      if (uniform && scattered_fraction(grid) < kScatteredLimit) return astar_jps(grid, s, t, costs);
+      if (uniform && prefers_jump_points(grid)) return astar_jps(grid, s, t, costs);
       break;
   }
   if (ring_ok) return astar_buckets(grid, s, t, costs);
@@ -98,6 +98,24 @@ double GridSearch::scattered_fraction(const PassGrid& grid) {
   }
   // No obstacle in the sample: nothing to jump over; the bucket A* crosses open space faster.
   return blocked == 0 ? 1.0 : static_cast<double>(scattered) / blocked;
+}
+
+double GridSearch::run_fraction(const PassGrid& grid) {
+  sample_cells(grid);
+  const std::uint8_t* cls = grid.cls.data();
+  const auto sn = static_cast<std::uint32_t>(grid.stride);
+  int open = 0;
+  int runs = 0;
+  for (const std::uint32_t i : samples_) {
+    if (cls[i] == kBlocked) continue;
+    ++open;
+    const bool e = cls[i + 1] == kBlocked, w = cls[i - 1] == kBlocked;
+    const bool n = cls[i + sn] == kBlocked, s = cls[i - sn] == kBlocked;
+    const bool all_free = !e && !w && !n && !s && cls[i + sn + 1] != kBlocked && cls[i + sn - 1] != kBlocked &&
+                          cls[i - sn + 1] != kBlocked && cls[i - sn - 1] != kBlocked;
+    runs += all_free || (e && w) || (n && s) ? 1 : 0;
+  }
+  return open == 0 ? 0.0 : static_cast<double>(runs) / open;
 }
 
 // Why: the fallback for very uneven costs. Octile h is consistent, so a node is final when
@@ -212,10 +230,14 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
   link(s, cur);
   std::size_t open = 1;
   if (s == t) best = 0.0;
+  // A key below bucket `cur` (octile h is consistent, so only rounding can do it) is filed in
+  // `cur`, and `below` keeps the lowest such key: the stop test must not pass it.
+  constexpr double kNone = 1e300;
+  double below = kNone;
   const std::uint32_t sn = stride;
   while (open > 0) {
-    while (head[cur & mask] == kNil) ++cur;
-    if (static_cast<double>(cur) * kBucketWidth >= best) break;
+    while (head[cur & mask] == kNil) ++cur, below = kNone;
+    if (std::min(static_cast<double>(cur) * kBucketWidth, below) >= best) break;
     const std::uint32_t u = head[cur & mask];
     unlink(u, cur);
     --open;
@@ -249,12 +271,15 @@ PlanResult GridSearch::astar_buckets(const PassGrid& grid, std::uint32_t s, std:
       } else if (mv == closed) {
         ++open;  // reopened: its first expansion came a little early
       } else {
-        unlink(v, bucket_of(g[v] + hv));
+        unlink(v, std::max(bucket_of(g[v] + hv), cur));  // where link() filed it
       }
       mark[v] = seen;
       g[v] = ng;
       parent[v] = static_cast<std::uint8_t>(m);
-      link(v, std::max(bucket_of(ng + hv), cur));
+      const double fv = ng + hv;
+      std::uint64_t bv = bucket_of(fv);
+      if (bv < cur) bv = cur, below = std::min(below, fv);
+      link(v, bv);
       if (v == t) best = std::min(best, ng);
     }
   }
