@@ -32,15 +32,26 @@ struct ClassStore {
   }
 };
 
-// One slice of a SliceBits: only "blocked or not" is kept, nothing is reported.
+// One slice of a SliceBits: only "blocked or not" is kept, nothing is reported. Holds its word
+// and bit and a raw pointer so that the update's inner loop stays as small as a class layer's.
 struct BitStore {
   static constexpr bool kClasses = false;  // free <-> unknown changes nothing here
-  SliceBits& bits;                         // the stack of bit layers
-  int slice;                               // this layer's bit
+  std::uint32_t* data;                     // SliceBits::bits
+  std::size_t words;                       // words per stored cell
+  std::size_t word;                        // this slice's word within a cell's
+  std::uint32_t bit;                       // this slice's bit within that word
+  int stride;                              // stored cells per row
 
-  std::uint32_t index(Cell c) const { return bits.index(c); }
-  bool blocked(std::uint32_t g) const { return bits.blocked_at(g, slice); }
-  void put(std::uint32_t g, std::uint8_t now) { bits.set_blocked(g, slice, now == kBlocked); }
+  BitStore(SliceBits& bits, int slice)
+      : data(bits.bits.data()), words(static_cast<std::size_t>(bits.words)),
+        word(static_cast<std::size_t>(slice >> 5)), bit(std::uint32_t{1} << (slice & 31)),
+        stride(bits.stride) {}
+  std::uint32_t index(Cell c) const { return static_cast<std::uint32_t>((c.y + 1) * stride + (c.x + 1)); }
+  bool blocked(std::uint32_t g) const { return (data[g * words + word] & bit) != 0; }
+  void put(std::uint32_t g, std::uint8_t now) {
+    std::uint32_t& w = data[g * words + word];
+    w = (w & ~bit) | (now == kBlocked ? bit : 0u);
+  }
   // Why: as ClassStore::set, without classes or reports.
   void set(CSpaceStack&, std::uint32_t, std::uint32_t g, std::uint8_t now, std::vector<ClassChange>*) {
     put(g, now);
