@@ -490,9 +490,10 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 // the body is not symmetric under a half turn) plus 60 B for the rectangle, 130 B for a disc;
 // keep the planner within about 200 MB.
 // Limits (docs/PLANNER.md "Limits"): a disc planner up to 1 M cells (~130 B each); a rectangle
-// planner up to 512 x 512 cells: ~(4 x heading_slices + 1) B of layers + ~60 B per cell (about
-// 33 MB at 16 slices) and, the tighter bound, its goal's cost field in one activation (the lab's
-// 83,600 cells take 4-6 ms: 262,144 about 12-18 ms of the planner's 20 ms budget).
+// planner up to 512 x 512 cells: ~(2 x heading_slices + 4) B of layers and 4 B of turn bits
+// per 16 slices + ~60 B per cell (about 26 MB at 16 slices) and, the tighter bound, its goal's
+// cost field in one activation (the lab's 83,600 cells take 4-6 ms: 262,144 about 12-18 ms of
+// the planner's 20 ms budget).
 long long planner_cell_limit(const PlannerModuleConfig& p) { return p.footprint == "disc" ? 1'000'000 : 262'144; }
 
 robot::RobotModel robot_model(const Config& c) {

@@ -228,7 +228,7 @@ bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
     const double lo = std::min(pose.heading, target), hi = std::max(pose.heading, target);
     for (double h = lo; h < hi + step; h += step) {
       const int slice = plan::slice_of_heading(std::min(h, hi), k);
-      if (planner_.turnable(slice).at(c) == plan::kBlocked) {
+      if (!planner_.can_turn(c, slice)) {
         log::info("planner: no room to turn to the goal's heading");
         return false;
       }

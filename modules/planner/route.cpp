@@ -94,7 +94,7 @@ bool prefix_blocked(const plan::Planner& planner, std::span<const plan::Waypoint
     if (i > from) {
       const plan::CellPose& v = prefix[i - 1].cell;
       if (v.x == w.x && v.y == w.y && v.slice != w.slice &&
-          (planner.turnable(v.slice).at(c) == plan::kBlocked || planner.turnable(w.slice).at(c) == plan::kBlocked))
+          (!planner.can_turn(c, v.slice) || !planner.can_turn(c, w.slice)))
         return true;
     }
   }

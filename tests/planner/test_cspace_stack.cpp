@@ -98,7 +98,9 @@ void random_batch(OccupancyMap& map, std::mt19937& rng, int changes, int target)
 
 // Why: every layer, after many batches of incremental updates, must equal a fresh full build of
 // the same map, and each update's report must list exactly the cells whose class changed, each
-// once, with the class it had before.
+// once, with the class it had before. The 32 turn masks are also kept as bit layers (as the
+// planner keeps them): after each batch their bits equal a fresh bit build and, cell by cell,
+// "blocked" of the fresh class layer of the same mask.
 TEST(CSpaceStack, IncrementalUpdatesEqualAFreshBuild) {
   const std::vector<FootprintMask> masks = default_masks();
   ASSERT_EQ(masks.size(), 65u);
@@ -114,6 +116,12 @@ TEST(CSpaceStack, IncrementalUpdatesEqualAFreshBuild) {
     stack.reset(map);
     std::vector<CSpaceLayer> layers(masks.size());
     for (std::size_t k = 0; k < masks.size(); ++k) layers[k].build(map, masks[k]);
+    constexpr int kTurnFirst = 32;  // masks[32, 64): the turn clearance's grown bodies
+    constexpr int kTurns = 32;
+    SliceBits bits;
+    bits.resize(w, h, kTurns);
+    std::vector<CSpaceLayer> bit_layers(kTurns);
+    for (int k = 0; k < kTurns; ++k) bit_layers[static_cast<std::size_t>(k)].build_bits(map, masks[static_cast<std::size_t>(kTurnFirst + k)], bits, k);
     std::vector<ClassChange> out;
     std::array<std::size_t, 3> seen{};  // stored cells per class over all checks
     std::size_t changes_seen = 0;       // reported class changes over all batches
@@ -131,14 +139,29 @@ TEST(CSpaceStack, IncrementalUpdatesEqualAFreshBuild) {
         reports[k].assign(out.begin() + 3, out.end());
         changes_seen += reports[k].size();
       }
+      for (int k = 0; k < kTurns; ++k)
+        bit_layers[static_cast<std::size_t>(k)].update_bits(stack, map, map.changes(), bits, k);
       stack.end_sync(map.changes());
       map.clear_changes();
+      SliceBits fresh_bits;
+      fresh_bits.resize(w, h, kTurns);
+      for (int k = 0; k < kTurns; ++k) {
+        CSpaceLayer f;
+        f.build_bits(map, masks[static_cast<std::size_t>(kTurnFirst + k)], fresh_bits, k);
+      }
+      ASSERT_EQ(bits.bits, fresh_bits.bits) << "map " << w << "x" << h << " batch " << batch << " turn bits";
       for (std::size_t k = 0; k < layers.size(); ++k) {
         CSpaceLayer fresh;
         fresh.build(map, masks[k]);
         for (std::uint8_t c : fresh.grid().cls) ++seen[c];
         ASSERT_EQ(layers[k].grid().cls, fresh.grid().cls) << "map " << w << "x" << h << " batch " << batch
                                                             << " layer " << k;
+        const int turn = static_cast<int>(k) - kTurnFirst;
+        if (turn >= 0 && turn < kTurns) {
+          for (std::uint32_t g = 0; g < fresh.grid().cls.size(); ++g) {
+            ASSERT_EQ(bits.blocked_at(g, turn), fresh.grid().cls[g] == kBlocked) << "turn bit " << turn << " cell " << g;
+          }
+        }
         std::map<std::uint32_t, std::uint8_t> reported;
         for (const ClassChange& ch : reports[k])
           ASSERT_TRUE(reported.emplace(ch.index, ch.before).second) << "reported twice, layer " << k;
@@ -160,31 +183,52 @@ TEST(CSpaceStack, IncrementalUpdatesEqualAFreshBuild) {
 }
 
 // Why: the facade's wiring: after random syncs its body and turn layers equal those of a planner
-// given the final map at once.
+// given the final map at once, and each turn bit says what a class layer of the grown body says;
+// at 16 and 64 slices over a half turn (32 and 128 turn bits per cell: 1 and 4 words).
 TEST(CSpaceStack, PlannerLayersAfterSyncsEqualAFreshPlanner) {
-  PlannerConfig cfg;
-  cfg.footprint = FootprintKind::Rectangle;
-  cfg.rectangle = RectangleFootprint{1.025, 0.700, 0.183, 0.0};
-  cfg.turn_clearance = 0.25;
-  Planner p(cfg);
-  OccupancyMap start(MapGeometry{60, 45, 0.05, {}});
-  std::mt19937 rng(9);
-  for (int y = 0; y < 45; ++y)
-    for (int x = 0; x < 60; ++x)
-      if ((x / 9 + y / 7) % 3 != 0) start.mark_free({x, y});
-  random_batch(start, rng, 30, 6);
-  start.clear_changes();
-  p.set_map(start);
-  for (int batch = 0; batch < 15; ++batch) {
-    random_batch(p.map(), rng, 10, 6);
-    p.sync();
-  }
-  Planner fresh(cfg);
-  fresh.set_map(p.map());
-  ASSERT_EQ(p.slices(), 32);
-  for (int k = 0; k < p.slices(); ++k) {
-    EXPECT_EQ(p.expanded(k).cls, fresh.expanded(k).cls) << "slice " << k;
-    EXPECT_EQ(p.turnable(k).cls, fresh.turnable(k).cls) << "slice " << k;
+  for (const int half_turn : {16, 64}) {
+    PlannerConfig cfg;
+    cfg.footprint = FootprintKind::Rectangle;
+    cfg.rectangle = RectangleFootprint{1.025, 0.700, 0.183, 0.0};
+    cfg.turn_clearance = 0.25;
+    cfg.heading_slices = half_turn;
+    Planner p(cfg);
+    OccupancyMap start(MapGeometry{60, 45, 0.05, {}});
+    std::mt19937 rng(9);
+    for (int y = 0; y < 45; ++y)
+      for (int x = 0; x < 60; ++x)
+        if ((x / 9 + y / 7) % 3 != 0) start.mark_free({x, y});
+    random_batch(start, rng, 30, 6);
+    start.clear_changes();
+    p.set_map(start);
+    for (int batch = 0; batch < 15; ++batch) {
+      random_batch(p.map(), rng, 10, 6);
+      p.sync();
+    }
+    Planner fresh(cfg);
+    fresh.set_map(p.map());
+    ASSERT_EQ(p.slices(), 2 * half_turn);
+    ASSERT_EQ(p.turn_room().slices, 2 * half_turn);
+    ASSERT_EQ(p.turn_room().words, (2 * half_turn + 31) / 32);
+    EXPECT_EQ(p.turn_room().bits, fresh.turn_room().bits);
+    RectangleFootprint grown = cfg.rectangle;
+    grown.margin += cfg.turn_clearance;
+    const std::vector<FootprintMask> turn_masks = rectangle_slices(grown, 0.05, p.slices());
+    std::size_t blocked = 0, clear = 0;
+    for (int k = 0; k < p.slices(); ++k) {
+      EXPECT_EQ(p.expanded(k).cls, fresh.expanded(k).cls) << "slice " << k;
+      CSpaceLayer grown_layer;
+      grown_layer.build(p.map(), turn_masks[static_cast<std::size_t>(k)]);
+      for (int y = -1; y <= 45; ++y)
+        for (int x = -1; x <= 60; ++x) {
+          const Cell c{x, y};
+          const bool b = grown_layer.grid().at(c) == kBlocked;
+          ASSERT_EQ(p.turn_room().blocked(c, k), b) << "slice " << k << " cell " << x << "," << y;
+          ASSERT_EQ(p.can_turn(c, k), !b) << "slice " << k << " cell " << x << "," << y;
+          (b ? blocked : clear) += 1;
+        }
+    }
+    EXPECT_GT(clear, blocked / 10);  // room to turn somewhere, not a map blocked everywhere
   }
 }
 

@@ -21,7 +21,8 @@ struct Stack {
   std::vector<PassGrid> turns;   // room to turn per slice (in half the stacks within the body's)
   PassGrid relaxed;              // free where any slice is (an admissible relaxation)
   std::vector<const PassGrid*> slice_ptrs;  // pointers to slices
-  std::vector<const PassGrid*> turn_ptrs;   // pointers to turns
+  std::vector<const PassGrid*> turn_ptrs;   // pointers to turns (the reference search's form)
+  SliceBits turn_bits;                       // turns as the planner keeps them: bit set = blocked
 };
 
 Stack random_stack(std::mt19937& rng, int w, int h, int k, double density) {
@@ -47,6 +48,10 @@ Stack random_stack(std::mt19937& rng, int w, int h, int k, double density) {
       }
   for (const PassGrid& g : st.slices) st.slice_ptrs.push_back(&g);
   for (const PassGrid& g : st.turns) st.turn_ptrs.push_back(&g);
+  st.turn_bits.resize(w, h, k);
+  for (int s = 0; s < k; ++s)
+    for (std::uint32_t i = 0; i < st.turns[static_cast<std::size_t>(s)].cls.size(); ++i)
+      st.turn_bits.set_blocked(i, s, st.turns[static_cast<std::size_t>(s)].cls[i] == kBlocked);
   return st;
 }
 
@@ -93,7 +98,8 @@ double walk_cost(const Stack& st, const std::vector<CellPose>& path, CellPose st
 
 // The lean search finds exactly the full graph's optimal cost, and a valid path of that cost,
 // on random slice stacks: both motion models, with and without turn slices and heuristic, the
-// ring and the heap, starts in move and pass-through slices, unreachable goals included.
+// ring and the heap, starts in move and pass-through slices, unreachable goals included. The
+// lean search reads the turn slices as bits, the reference as PassGrids.
 TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
   std::mt19937 rng(20261202);
   const int cases = test::sample(3000, 400);
@@ -101,7 +107,7 @@ TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
   HeadingSearch lean;
   ReferenceHeadingSearch full;
   CostField field;
-  const std::vector<int> ks = {1, 2, 4, 6, 8, 16, 32};
+  const std::vector<int> ks = {1, 2, 4, 6, 8, 16, 32, 40, 64, 128};  // 40+: turn bits in 2-4 words
   for (int c = 0; c < cases; ++c) {
     const int w = 6 + static_cast<int>(rng() % 18);
     const int h = 6 + static_cast<int>(rng() % 18);
@@ -129,7 +135,7 @@ TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
     }
     const std::span<const PassGrid* const> turn_span =
         with_turns ? std::span<const PassGrid* const>(st.turn_ptrs) : std::span<const PassGrid* const>();
-    const PlanResult a = lean.find(st.slice_ptrs, start, goal, opt, costs, heur, turn_span);
+    const PlanResult a = lean.find(st.slice_ptrs, start, goal, opt, costs, heur, with_turns ? &st.turn_bits : nullptr);
     const PlanResult b = full.find(st.slice_ptrs, start, goal, opt, costs, heur, turn_span);
     SCOPED_TRACE(testing::Message() << "case " << c << " k " << k << " " << w << "x" << h);
     ASSERT_EQ(a.status, b.status);

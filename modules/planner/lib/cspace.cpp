@@ -13,6 +13,51 @@ std::uint8_t class_of(std::uint16_t cover, CellState s) {
   return s == CellState::Unknown ? kUnknown : kFree;
 }
 
+// A class layer's own PassGrid: writes report each changed cell (once per update) with its
+// class before, when asked.
+struct ClassStore {
+  static constexpr bool kClasses = true;  // free <-> unknown matters
+  PassGrid& grid;                         // the layer's classes
+
+  std::uint32_t index(Cell c) const { return grid.index(c); }
+  bool blocked(std::uint32_t g) const { return grid.cls[g] == kBlocked; }
+  void put(std::uint32_t g, std::uint8_t now) { grid.cls[g] = now; }
+  // Why: write one cell's class and report it (once per update) if it changed.
+  void set(CSpaceStack& stack, std::uint32_t i, std::uint32_t g, std::uint8_t now,
+           std::vector<ClassChange>* out) {
+    const std::uint8_t before = grid.cls[g];
+    if (now == before) return;
+    grid.cls[g] = now;
+    if (out && stack.mark_reported(i)) out->push_back({g, before});
+  }
+};
+
+// One slice of a SliceBits: only "blocked or not" is kept, nothing is reported. Holds its word
+// and bit and a raw pointer so that the update's inner loop stays as small as a class layer's.
+struct BitStore {
+  static constexpr bool kClasses = false;  // free <-> unknown changes nothing here
+  std::uint32_t* data;                     // SliceBits::bits
+  std::size_t words;                       // words per stored cell
+  std::size_t word;                        // this slice's word within a cell's
+  std::uint32_t bit;                       // this slice's bit within that word
+  int stride;                              // stored cells per row
+
+  BitStore(SliceBits& bits, int slice)
+      : data(bits.bits.data()), words(static_cast<std::size_t>(bits.words)),
+        word(static_cast<std::size_t>(slice >> 5)), bit(std::uint32_t{1} << (slice & 31)),
+        stride(bits.stride) {}
+  std::uint32_t index(Cell c) const { return static_cast<std::uint32_t>((c.y + 1) * stride + (c.x + 1)); }
+  bool blocked(std::uint32_t g) const { return (data[g * words + word] & bit) != 0; }
+  void put(std::uint32_t g, std::uint8_t now) {
+    std::uint32_t& w = data[g * words + word];
+    w = (w & ~bit) | (now == kBlocked ? bit : 0u);
+  }
+  // Why: as ClassStore::set, without classes or reports.
+  void set(CSpaceStack&, std::uint32_t, std::uint32_t g, std::uint8_t now, std::vector<ClassChange>*) {
+    put(g, now);
+  }
+};
+
 }  // namespace
 
 void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid) {
@@ -24,9 +69,24 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid) {
 void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
   mask_ = std::move(mask);
   index_mask();
+  grid_.resize(map.width(), map.height());
+  ClassStore store{grid_};
+  fill(map, store);
+}
+
+void CSpaceLayer::build_bits(const OccupancyMap& map, FootprintMask mask, SliceBits& bits, int slice) {
+  mask_ = std::move(mask);
+  index_mask();
+  grid_ = PassGrid{};
+  BitStore store{bits, slice};
+  fill(map, store);
+}
+
+// Why: the full build, written through `store` (every cell of the map once).
+template <class Store>
+void CSpaceLayer::fill(const OccupancyMap& map, Store& store) const {
   const int w = map.width();
   const int h = map.height();
-  grid_.resize(w, h);
   // A temporary table (set_map allocates): prefix[y * (w + 1) + x] = occupied cells in row y with column < x.
   std::vector<std::uint32_t> prefix(static_cast<std::size_t>(w + 1) * static_cast<std::size_t>(h), 0);
   for (int y = 0; y < h; ++y) {
@@ -59,7 +119,7 @@ void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
       for (int x = std::max(x_out + 1, x_in); x < w; ++x) clamped(x);
     }
     for (int x = 0; x < w; ++x)
-      grid_.set({x, y}, class_of(acc[static_cast<std::size_t>(x)] > 0 ? 1 : 0, map.state_at(map.index({x, y}))));
+      store.put(store.index({x, y}), class_of(acc[static_cast<std::size_t>(x)] > 0 ? 1 : 0, map.state_at(map.index({x, y}))));
   }
 }
 
@@ -107,42 +167,49 @@ bool CSpaceLayer::meets(const CSpaceStack& stack, int x, int y) const {
   return false;
 }
 
-// Why: write one cell's class and report it (once per update) if it changed.
-void CSpaceLayer::set(CSpaceStack& stack, std::uint32_t i, std::uint32_t g, std::uint8_t now,
-                      std::vector<ClassChange>* out) {
-  const std::uint8_t before = grid_.cls[g];
-  if (now == before) return;
-  grid_.cls[g] = now;
-  if (out && stack.mark_reported(i)) out->push_back({g, before});
-}
-
 void CSpaceLayer::update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                          std::vector<ClassChange>* out) {
+  ClassStore store{grid_};
+  update_in(store, stack, map, cells, out);
+}
+
+void CSpaceLayer::update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
+                              SliceBits& bits, int slice) {
+  BitStore store{bits, slice};
+  update_in(store, stack, map, cells, nullptr);
+}
+
+// Why: one update, written through `store`; `out` only with a class store.
+template <class Store>
+void CSpaceLayer::update_in(Store& store, CSpaceStack& stack, const OccupancyMap& map,
+                            std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const {
   const std::size_t first = out ? out->size() : 0;
   const int w = map.width();
   const int h = map.height();
   // Blocks first, then the re-tests against the final occupancy, then the relabels: each step
   // writes what the final occupancy and states say, so the order only decides the work.
+  // A bit layer skips the relabels: they never change whether a cell is blocked.
   for (const CellChange pass : {kRaised, kLowered, kRelabelled}) {
+    if (!Store::kClasses && pass == kRelabelled) break;
     for (std::uint32_t o : cells) {
       if (stack.kind(o) != pass) continue;
       const Cell oc = map.cell_of_index(o);
       if (pass == kRelabelled) {
-        const std::uint32_t g = grid_.index(oc);
-        if (grid_.cls[g] != kBlocked) set(stack, o, g, class_of(0, map.state_at(o)), out);
+        const std::uint32_t g = store.index(oc);
+        if (!store.blocked(g)) store.set(stack, o, g, class_of(0, map.state_at(o)), out);
         continue;
       }
       // The cells p whose footprint covers o: p = o - (dx, dy) for each mask offset; and o
       // itself (blocked by its own obstacle whether or not the mask holds (0, 0)).
       auto visit = [&](int x, int y) {
         const std::uint32_t i = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w) + static_cast<std::uint32_t>(x);
-        const std::uint32_t g = grid_.index({x, y});
+        const std::uint32_t g = store.index({x, y});
         if (pass == kRaised) {
-          if (grid_.cls[g] != kBlocked) set(stack, i, g, kBlocked, out);
-        } else if (grid_.cls[g] == kBlocked && stack.mark_checked(i)) {
+          if (!store.blocked(g)) store.set(stack, i, g, kBlocked, out);
+        } else if (store.blocked(g) && stack.mark_checked(i)) {
           // Re-tested once per update: a cell still blocked is not tested again for the next
           // freed cell under its footprint.
-          if (!meets(stack, x, y)) set(stack, i, g, class_of(0, map.state_at(i)), out);
+          if (!meets(stack, x, y)) store.set(stack, i, g, class_of(0, map.state_at(i)), out);
         }
       };
       for (const MaskRun& r : mask_.runs) {
@@ -169,7 +236,7 @@ void CSpaceLayer::update(CSpaceStack& stack, const OccupancyMap& map, std::span<
     }
     stack.clear_checked(o);
   }
-  if (out) {
+  if (Store::kClasses && out) {
     // Drop cells that flipped back, and clear the report marks.
     std::size_t keep = first;
     for (std::size_t k = first; k < out->size(); ++k) {

@@ -10,6 +10,7 @@
 #include "modules/planner/lib/footprint.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
+#include "modules/planner/lib/slice_bits.hpp"
 
 namespace robuter::plan {
 
@@ -32,6 +33,9 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid);
 // cells whose footprint covered it, each once per update, against the table (the mask's bounding
 // box, then bands of runs, stopping at the first occupied cell); a free <-> unknown change re-classes that cell
 // unless it is blocked.
+// A layer that is only asked "blocked or not" (a turn-clearance slice) keeps no classes: it
+// writes bit `slice` of a SliceBits shared by its stack of layers (build_bits, update_bits),
+// by the same steps, so each bit says exactly whether the class layer would be blocked.
 class CSpaceLayer {
  public:
   // Why: size for the map and compute everything once.
@@ -42,6 +46,12 @@ class CSpaceLayer {
   // appended to `out` (each once per call, with its class before the call) when it is not null.
   void update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
               std::vector<ClassChange>* out);
+
+  // Why: a turn-clearance layer: the same footprint test, kept as bit `slice` of `bits` (sized
+  // by the caller for the map and every slice); grid() stays empty.
+  void build_bits(const OccupancyMap& map, FootprintMask mask, SliceBits& bits, int slice);
+  void update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
+                   SliceBits& bits, int slice);
 
   const PassGrid& grid() const { return grid_; }
   const FootprintMask& mask() const { return mask_; }
@@ -59,14 +69,18 @@ class CSpaceLayer {
 
   void index_mask();
   bool meets(const CSpaceStack& stack, int x, int y) const;
-  void set(CSpaceStack& stack, std::uint32_t map_index, std::uint32_t g, std::uint8_t now,
-           std::vector<ClassChange>* out);
+  // Where a build or an update writes (cspace.cpp: the layer's classes, or one slice's bits).
+  template <class Store>
+  void fill(const OccupancyMap& map, Store& store) const;
+  template <class Store>
+  void update_in(Store& store, CSpaceStack& stack, const OccupancyMap& map,
+                 std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;
 
   FootprintMask mask_;
   Band box_;                  // the whole mask's bounding box
   bool box_exact_ = false;    // box_ holds < 65,536 cells (the table's count is exact)
   std::vector<Band> bands_;   // kBandRuns runs each, in order
-  PassGrid grid_;                                          // the searchable result
+  PassGrid grid_;             // the searchable result (empty for a bit layer)
 };
 
 }  // namespace robuter::plan

@@ -71,7 +71,6 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   path_.reserve(2 * stored + static_cast<std::size_t>(k));
   const auto kk = static_cast<std::size_t>(k);
   if (cls_of_.size() < kk) cls_of_.resize(kk, nullptr);
-  if (turn_of_.size() < kk) turn_of_.resize(kk, nullptr);
   if (allowed_.size() < kk) allowed_.resize(kk, 0);
   if (move_slice_.size() < kk) move_slice_.resize(kk, 0);
   if (slot_of_.size() < kk) slot_of_.resize(kk, -1);
@@ -79,8 +78,7 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
 
 PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                                const HeadingOptions& options, const CostModel& costs,
-                               const CostField* heuristic,
-                               std::span<const PassGrid* const> turn_slices) {
+                               const CostField* heuristic, const SliceBits* turn_room) {
   PlanResult r;
   path_.clear();
   used_ = 0;
@@ -107,15 +105,13 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   const auto cost = costs.table();
   std::uint8_t* allowed = allowed_.data();
   const std::uint8_t** cls_of = cls_of_.data();
-  const std::uint8_t** turn_of = turn_of_.data();
   int* move_slice = move_slice_.data();
   int* slot_of = slot_of_.data();
-  const bool own_turns = turn_slices.size() == slices.size();
+  const bool own_turns = turn_room != nullptr && turn_room->slices == k_count;
   int m_count = 0;  // move slots
   for (int k = 0; k < k_count; ++k) {
     allowed[k] = allowed_moves(k, k_count, options.motion);
     cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
-    turn_of[k] = own_turns ? turn_slices[static_cast<std::size_t>(k)]->cls.data() : cls_of[k];
     slot_of[k] = -1;
     if (allowed[k] != 0) {
       slot_of[k] = m_count;
@@ -218,15 +214,21 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   };
 
   // Why: can the robot turn in place at `cell` from slice `from` by `steps` slice steps in
-  // direction `dir` (+1 up, -1 down)? Each step j -> j' needs room (`room`) at j and j' and the
-  // body itself free at j' (the full graph's rule, step by step).
-  auto arc_free = [&](const std::uint8_t* const* room, std::uint32_t cell, int from, int steps,
-                      int dir) {
-    if (room[from][cell] == kBlocked) return false;
+  // direction `dir` (+1 up, -1 down)? Each step j -> j' needs room at j and j' — the turn
+  // bits when `grown`, else the body's own classes — and the body itself free at j' (the full
+  // graph's rule, step by step).
+  const std::uint32_t* room_bits = own_turns ? turn_room->bits.data() : nullptr;
+  const auto room_words = static_cast<std::uint32_t>(own_turns ? turn_room->words : 1);
+  auto arc_free = [&](bool grown, std::uint32_t cell, int from, int steps, int dir) {
+    const std::uint32_t* wb = grown ? room_bits + cell * room_words : nullptr;
+    auto no_room = [&](int j) {
+      return grown ? ((wb[j >> 5] >> (j & 31)) & 1u) != 0 : cls_of[j][cell] == kBlocked;
+    };
+    if (no_room(from)) return false;
     int j = from;
     for (int q = 0; q < steps; ++q) {
       j = (j + dir + k_count) % k_count;
-      if (room[j][cell] == kBlocked || cls_of[j][cell] == kBlocked) return false;
+      if (no_room(j) || cls_of[j][cell] == kBlocked) return false;
     }
     return true;
   };
@@ -245,9 +247,9 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
     int n_down = 0;
     do down = (down + k_count - 1) % k_count, ++n_down;
     while (slot_of[down] < 0);
-    if (arc_free(cls_of, start_index, s0, n_up, +1))
+    if (arc_free(false, start_index, s0, n_up, +1))
       relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
-    if (arc_free(cls_of, start_index, s0, n_down, -1))
+    if (arc_free(false, start_index, s0, n_down, -1))
       relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
   }
   while (!limit) {
@@ -287,13 +289,13 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       // The current slice is free at u (tight); turning may ask for more room, except where
       // the robot already stands: there the body's own room is enough (it may have stopped
       // close to something, and must be able to turn away).
-      const std::uint8_t* const* room = own_turns && u != start_index ? turn_of : cls_of;
+      const bool grown = own_turns && u != start_index;
       const int up = (slot + 1) % m_count;
       const int down = (slot + m_count - 1) % m_count;
       const int n_up = (move_slice[up] - k + k_count) % k_count;
       const int n_down = (k - move_slice[down] + k_count) % k_count;
-      if (arc_free(room, u, k, n_up, +1)) relax(x, y, up, gu + n_up * turn, kTurnedUp);
-      if (arc_free(room, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
+      if (arc_free(grown, u, k, n_up, +1)) relax(x, y, up, gu + n_up * turn, kTurnedUp);
+      if (arc_free(grown, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
     }
   }
   if (limit) return r.status = PlanStatus::SearchLimit, r;

@@ -15,6 +15,7 @@
 #include "modules/planner/lib/indexed_heap.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
 #include "modules/planner/lib/plan_result.hpp"
+#include "modules/planner/lib/slice_bits.hpp"
 
 namespace robuter::plan {
 
@@ -66,14 +67,13 @@ class HeadingSearch {
                std::size_t state_budget = kDefaultStateBudget);
 
   // Why: the entry point; `slices` are K grids of one size; the path is then in path().
-  // `turn_slices` (empty, or K grids of the same size): where turning in place needs more room
-  // than translating (a body grown by a clearance), a turn k -> k±1 at a cell needs the cell
-  // free in both of these slices instead — except at the start cell, where the robot already
-  // stands and the body's own room is enough.
+  // `turn_room` (null, or K slices of bits over the same grid): where turning in place needs
+  // more room than translating (a body grown by a clearance), a turn k -> k±1 at a cell needs
+  // the cell's bits k and k±1 clear — except at the start cell, where the robot already stands
+  // and the body's own room is enough.
   PlanResult find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                   const HeadingOptions& options, const CostModel& costs = {},
-                  const CostField* heuristic = nullptr,
-                  std::span<const PassGrid* const> turn_slices = {});
+                  const CostField* heuristic = nullptr, const SliceBits* turn_room = nullptr);
 
   // Start first; consecutive entries differ by one grid move or one slice step.
   const std::vector<CellPose>& path() const { return path_; }
@@ -107,7 +107,6 @@ class HeadingSearch {
   std::vector<CellPose> path_; // last path, start first
   std::uint32_t gen_ = 0;      // generation stamp
   std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
-  std::vector<const std::uint8_t*> turn_of_; // per slice: classes checked for turns (this search)
   std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
   std::vector<int> move_slice_;              // per move slot: its slice (this search)
   std::vector<int> slot_of_;                 // per slice: its move slot, or -1 (this search)

@@ -36,9 +36,10 @@ void Planner::set_map(const OccupancyMap& map) {
   slice_grids_.clear();
   for (const CSpaceLayer& l : layers_) slice_grids_.push_back(&l.grid());
   turn_layers_.resize(turn_masks_.size());
-  for (std::size_t k = 0; k < turn_masks_.size(); ++k) turn_layers_[k].build(map_, turn_masks_[k]);
-  turn_grids_.clear();
-  for (const CSpaceLayer& l : turn_layers_) turn_grids_.push_back(&l.grid());
+  turn_room_.resize(turn_masks_.empty() ? 0 : map_.width(), turn_masks_.empty() ? 0 : map_.height(),
+                    static_cast<int>(turn_masks_.size()));
+  for (std::size_t k = 0; k < turn_masks_.size(); ++k)
+    turn_layers_[k].build_bits(map_, turn_masks_[k], turn_room_, static_cast<int>(k));
   const int w = map_.width(), h = map_.height();
   field_changes_.clear();
   field_changes_.reserve(map_.cell_count());
@@ -62,7 +63,8 @@ void Planner::sync() {
   cspace_.begin_sync(map_, changed);
   for (std::size_t k = 0; k < layers_.size(); ++k)
     layers_[k].update(cspace_, map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
-  for (CSpaceLayer& l : turn_layers_) l.update(cspace_, map_, changed, nullptr);
+  for (std::size_t k = 0; k < turn_layers_.size(); ++k)
+    turn_layers_[k].update_bits(cspace_, map_, changed, turn_room_, static_cast<int>(k));
   if (rect) relaxation_.update(cspace_, map_, changed, &field_changes_);
   cspace_.end_sync(changed);
   if (field_ready_) field_.update(field_changes_);
@@ -74,10 +76,11 @@ const PassGrid& Planner::expanded(int slice) const {
   return layers_[static_cast<std::size_t>(k)].grid();
 }
 
-const PassGrid& Planner::turnable(int slice) const {
-  if (turn_layers_.empty()) return expanded(slice);
+bool Planner::can_turn(Cell c, int slice) const {
+  if (!map_.contains(c)) return false;
   const int k = slice < 0 || slice >= slices() ? 0 : slice;
-  return turn_layers_[static_cast<std::size_t>(k)].grid();
+  if (turn_layers_.empty()) return layers_[static_cast<std::size_t>(k)].grid().at(c) != kBlocked;
+  return !turn_room_.blocked(c, k);
 }
 
 // Why: the cost field is recomputed only when the goal moves; map changes repair it.
@@ -127,7 +130,8 @@ PlanResult Planner::plan(const Pose2& start, Point2 goal) {
   HeadingOptions opt;
   opt.motion = cfg_.motion;
   opt.rotation_step_cost = cfg_.rotation_cost * (2.0 * kPi / full_turn_slices()) / map_.resolution();
-  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h, turn_grids_);
+  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h,
+                            turn_layers_.empty() ? nullptr : &turn_room_);
   if (r.found()) fill_waypoints_3d(heading_search_.path());
   return r;
 }

@@ -14,6 +14,7 @@
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
 #include "modules/planner/lib/plan_result.hpp"
+#include "modules/planner/lib/slice_bits.hpp"
 
 namespace robuter::plan {
 
@@ -76,9 +77,12 @@ class Planner {
   const std::vector<Waypoint>& waypoints() const { return waypoints_; }
   // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
   const PassGrid& expanded(int slice = 0) const;
-  // Why: pictures and the follower ask where turning in place is allowed (the translation
-  // layer when no turn clearance is configured).
-  const PassGrid& turnable(int slice = 0) const;
+  // Why: the follower and the route ask whether turning in place at a cell is allowed in a
+  // slice (the slice's grown body is clear there; the body itself when no turn clearance is
+  // configured). False off the map.
+  bool can_turn(Cell c, int slice) const;
+  // Why: tests compare the turn layers (one bit per slice per cell; empty without clearance).
+  const SliceBits& turn_room() const { return turn_room_; }
   int slices() const { return static_cast<int>(layers_.size()); }
   // Why: the rectangle's slices over the full turn (the body is not symmetric under a half
   // turn: its centre is ahead of the axle, the pose).
@@ -101,8 +105,8 @@ class Planner {
   CSpaceLayer relaxation_;              // Rectangle: inscribed-disc layer (heuristic field)
   std::vector<const PassGrid*> slice_grids_;  // pointers to layers_' grids
   std::vector<FootprintMask> turn_masks_;     // Rectangle with turn_clearance: grown body per slice
-  std::vector<CSpaceLayer> turn_layers_;      // where turning in place is allowed, per slice
-  std::vector<const PassGrid*> turn_grids_;   // pointers to turn_layers_' grids (empty: none)
+  std::vector<CSpaceLayer> turn_layers_;      // per slice: the grown body's mask, kept as bits
+  SliceBits turn_room_;                       // bit k set: turning at the cell blocked in slice k
   std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
   CostField field_;                     // cost to the goal on the field grid
   bool field_ready_ = false;            // field_ matches the current goal and grid
