@@ -81,10 +81,11 @@ inline std::optional<std::int64_t> axis_shift(std::int64_t x0, std::int64_t w, s
 // Why: XG's goal off the current window moves the window (docs/PLANNER.md, "The window"): centred
 // between the robot and the goal, its corner snapped to whole cells of the current grid (the
 // evidence of the overlap shifts by whole cells), when both then lie at least window_margin()
-// inside it; otherwise none, and the goal is refused. A goal on the window needs no shift.
+// inside it; otherwise none, and the goal is refused. A goal on the window needs no shift. With
+// an a-priori map ([planner] map_file) the map never moves: a goal off it is refused.
 inline std::optional<WindowShift> window_shift(const Config& cfg, const MapWindow& now, std::int64_t robot_x,
                                                std::int64_t robot_y, std::int64_t goal_x, std::int64_t goal_y) {
-  if (now.cell == 0) return std::nullopt;
+  if (now.cell == 0 || !cfg.planner.map_file.empty()) return std::nullopt;  // a prior map's geometry is fixed
   const std::int64_t margin = window_margin(cfg);
   const auto sx = detail::axis_shift(now.x0, now.w, now.cell, robot_x, goal_x, margin);
   const auto sy = detail::axis_shift(now.y0, now.h, now.cell, robot_y, goal_y, margin);
@@ -93,8 +94,8 @@ inline std::optional<WindowShift> window_shift(const Config& cfg, const MapWindo
 }
 
 // Why: XG's whole rule, in one place for the link and the planner: a goal on the current window
-// is taken; a goal off it is taken when the window can move to hold the robot and the goal.
-// TODO(mapfile): with [planner] map_file the map's geometry is fixed: no shift.
+// is taken; a goal off it is taken when the window can move to hold the robot and the goal
+// (never with an a-priori map file).
 inline bool goal_acceptable(const Config& cfg, const MapWindow& now, std::int64_t robot_x, std::int64_t robot_y,
                             std::int64_t goal_x, std::int64_t goal_y) {
   return on_window(now, goal_x, goal_y) || window_shift(cfg, now, robot_x, robot_y, goal_x, goal_y).has_value();

@@ -117,5 +117,37 @@ TEST(PlannerWindow, AMoveKeepsTheEvidenceSeenBeforeAtItsOdometryCoordinates) {
   EXPECT_FALSE(pm->planner().rebuilding());
 }
 
+// Why: an a-priori map ([planner] map_file) fixes the map's geometry: a goal off it is refused
+// even where an unknown map's window would move to hold it, and nothing changes.
+TEST(PlannerWindow, WithAnAPrioriMapFileAGoalOffTheMapIsRefused) {
+  Config cfg;
+  cfg.planner.map_file = PLANNER_SIM_DATA "/default_world.map";  // (-0.6, -0.55) m, 183 x 142 cells
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/default.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  PlannerModule* pm = test::planner_of(fw);
+  ASSERT_NE(pm, nullptr);
+  ASSERT_EQ(fw.ask("XB1"), "ack");
+  ASSERT_EQ(fw.ask("AC 15000 15000 0"), "ack");
+  fw.run_ticks(5);
+  // (1.5, 6.8) m lies 0.25 m north of the map; without the file a window of its size would
+  // move to hold the robot and it (0.9 m to spare).
+  Config file = cfg;  // the geometry the file gives the planner
+  file.planner.map_origin_x_mm = -600;
+  file.planner.map_origin_y_mm = -550;
+  file.planner.map_width_mm = 183 * 50;
+  file.planner.map_height_mm = 142 * 50;
+  Config unknown = file;
+  unknown.planner.map_file.clear();
+  const planner::MapWindow now = planner::configured_window(file.planner);
+  EXPECT_TRUE(planner::window_shift(unknown, now, 15'000, 15'000, 15'000, 68'000));
+  EXPECT_FALSE(planner::goal_acceptable(file, now, 15'000, 15'000, 15'000, 68'000));
+  EXPECT_EQ(fw.ask("XG 15000 68000"), "error 4 out-of-range");
+  fw.run_ticks(20);
+  EXPECT_EQ(pm->state(), PlannerState::idle);
+  EXPECT_EQ(pm->map_x0_mm(), -600);
+  EXPECT_EQ(pm->map_y0_mm(), -550);
+  EXPECT_EQ(fw.ask("XG 15000 60000"), "ack");  // on the map: taken
+}
+
 }  // namespace
 }  // namespace robuter
