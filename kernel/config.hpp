@@ -143,10 +143,10 @@ struct DoorsConfig {
 
 // The grid planner (modules/planner): its map, robot model, sonar use and motion.
 struct PlannerModuleConfig {
-  std::int32_t map_origin_x_mm = -6000;  // lower-left corner of the map, odometry frame, mm
-  std::int32_t map_origin_y_mm = -6000;  // mm
-  std::uint32_t map_width_mm = 12000;    // map extent along x, mm
-  std::uint32_t map_height_mm = 12000;   // map extent along y, mm
+  std::int32_t map_origin_x_mm = -8000;  // lower-left corner of the map, odometry frame, mm
+  std::int32_t map_origin_y_mm = -8000;  // mm
+  std::uint32_t map_width_mm = 16000;    // map extent along x, mm
+  std::uint32_t map_height_mm = 16000;   // map extent along y, mm
   std::uint32_t cell_mm = 50;            // cell side, mm (seed 000: 5 cm)
   std::string footprint = "rectangle";   // "rectangle" (the body, with heading) or "disc"
   std::uint32_t disc_radius_mm = 780;    // disc footprint radius, mm (axle to a front corner)

@@ -235,6 +235,8 @@ struct PlannerStatus {
   std::uint32_t plan_us = 0;    // execution time of the last plan's search, µs (thread CPU time)
   std::uint32_t run_us_max = 0; // longest activation of the planner since start, µs (thread CPU time)
   std::uint32_t goal_seq = 0;   // PlannerGoal.seq being served
+  std::int32_t map_x0_mm = 0;   // lower-left corner of the planner's map window, odometry frame, mm
+  std::int32_t map_y0_mm = 0;   // mm (the window moves for a goal off it: docs/PLANNER.md)
   std::uint64_t tick = 0;       // tick of the report
 };
 

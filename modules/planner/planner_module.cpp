@@ -9,6 +9,7 @@
 
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
+#include "modules/planner/map_bounds.hpp"
 #include "modules/planner/map_window.hpp"
 #include "modules/planner/sonar_mapping.hpp"
 
@@ -19,6 +20,9 @@ constexpr double kTenthMm = 1e-4;                  // m per 0.1 mm
 constexpr double kCentideg = plan::kPi / 18000.0;  // rad per 0.01°
 constexpr std::uint64_t kScanTimeoutTicks = 600;   // a scan gives up waiting after this (6 s)
 constexpr std::uint64_t kSettleTicks = 20;         // ticks after the drive reports zero speeds
+// C-space layers rebuilt per activation after the window moved (65 for the default rectangle:
+// 32 slices, 32 turn layers, the relaxation), so that no activation carries the whole rebuild.
+constexpr int kRebuildLayersPerRun = 3;
 
 // CPU time of the kernel thread, µs: what an activation costs, without the time other
 // processes of a shared machine took the CPU away (wall clock would count that too).
@@ -55,7 +59,10 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       claim_(bb, MotionSource::planner),
       motion_out_(bb.planner_motion.writer()),
       status_out_(bb.planner_status.writer()),
-      map_out_(bb.planner_map.writer()) {}
+      map_out_(bb.planner_map.writer()),
+      map_x0_mm_(cfg.planner.map_origin_x_mm),
+      map_y0_mm_(cfg.planner.map_origin_y_mm),
+      cfg_(cfg) {}
 
 // Everything sized here: the map, the C-space layers, the searches' arrays.
 bool PlannerModule::init(Kernel& k) {
@@ -128,6 +135,34 @@ void PlannerModule::integrate_pan_tilt() {
   }
 }
 
+void PlannerModule::skip_readings() {
+  const UltrasonicRanges& r = ranges_.peek();
+  for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = r.read_tick[i];
+  pan_tick_ = pan_tilt_.peek().read_tick;
+}
+
+// The same rule as the link's check (planner::goal_acceptable), from the posture now: the robot
+// may have moved a little since the XG was taken, which the margin absorbs.
+void PlannerModule::place_window(std::uint64_t tick) {
+  const planner::MapWindow now = planner::window_at(cfg_.planner, map_x0_mm_, map_y0_mm_);
+  const Posture& at = posture_.peek();
+  if (planner::on_window(now, goal_.x, goal_.y)) return;
+  const auto shift = planner::window_shift(cfg_, now, at.x, at.y, goal_.x, goal_.y);
+  if (!shift) return;  // the plan then reports the goal off the map: unreachable
+  planner_.shift_map(shift->dx, shift->dy);
+  map_x0_mm_ += std::int64_t{shift->dx} * cfg_.planner.cell_mm;
+  map_y0_mm_ += std::int64_t{shift->dy} * cfg_.planner.cell_mm;
+  prepared_seq_ = 0;  // the cost field is to be made on the moved map
+  log::info("planner: map window moved by ({}, {}) cells to ({}, {}) mm at tick {}", shift->dx, shift->dy,
+            map_x0_mm_, map_y0_mm_, tick);
+}
+
+void PlannerModule::rebuild_step(std::uint64_t tick) {
+  if (!planner_.rebuild_step(kRebuildLayersPerRun)) return;
+  fresh_.fill(0);  // the scan's readings count from now, marked on the rebuilt layers
+  if (settled_) scan_tick_ = tick;
+}
+
 void PlannerModule::request(std::uint64_t tick, std::int32_t left, std::int32_t right) {
   const bool changed = left != last_left_ || right != last_right_;
   motion_out_.modify([&](MotionRequest& m) {
@@ -165,6 +200,7 @@ void PlannerModule::serve_goal(std::uint64_t tick) {
   final_turn_ = false;
   log::info("planner: goal {} {}{}", g.x, g.y, g.has_theta ? " with heading" : "");
   begin_scan(tick);
+  place_window(tick);
 }
 
 // The arbiter's word (modules/emergency): XH cancels; the operator's command or an emergency stops.
@@ -330,10 +366,14 @@ void PlannerModule::run(Kernel& k) {
   kernel_ = &k;
   const std::uint64_t tick = k.tick();
   const plan::Pose2 pose = pose_now();
-  integrate_ranges(pose);
+  // After a window move the layers are rebuilt a few per activation (the robot is stopped, the
+  // state reads scanning); the map takes no readings until they match it again.
+  if (planner_.rebuilding()) rebuild_step(tick);
+  if (planner_.rebuilding()) skip_readings();
+  else integrate_ranges(pose);
   if (!interrupted(tick)) {
     serve_goal(tick);
-    if (state_ == PlannerState::scanning) {
+    if (state_ == PlannerState::scanning && !planner_.rebuilding()) {
       planner_.sync();  // fold the new readings into the layers now: the plan only searches
       if (scan_done(tick)) state_ = PlannerState::planning;
     }
@@ -374,6 +414,8 @@ void PlannerModule::publish_status(std::uint64_t tick) {
   s.plan_us = plan_us_;
   s.run_us_max = run_us_max_;
   s.goal_seq = goal_.seq;
+  s.map_x0_mm = static_cast<std::int32_t>(map_x0_mm_);
+  s.map_y0_mm = static_cast<std::int32_t>(map_y0_mm_);
   s.tick = tick;
   status_out_.publish(s);
 }

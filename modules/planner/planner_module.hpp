@@ -51,12 +51,21 @@ class PlannerModule final : public Process {
   std::span<const plan::Waypoint> prefix() const { return {prefix_.data(), prefix_len_}; }
   const planner::PlannerSettings& settings() const { return s_; }
   PlannerState state() const { return state_; }
+  // The map window's lower-left corner, odometry frame, mm (moves for a goal off the map).
+  std::int64_t map_x0_mm() const { return map_x0_mm_; }
+  std::int64_t map_y0_mm() const { return map_y0_mm_; }
 
  private:
   // Marks every new ring and pan-tilt reading along its beam, and the body's cells free.
   void integrate_ranges(const plan::Pose2& pose);
   // Marks every new pan-tilt reading along its beam, from the posture it was fired at.
   void integrate_pan_tilt();
+  // While the layers are rebuilt after a window move: the readings are passed over, unmarked.
+  void skip_readings();
+  // A goal off the map: moves the window to hold the robot and the goal, if they fit.
+  void place_window(std::uint64_t tick);
+  // One step of the layers' rebuild after a move; when it ends, the scan counts from now.
+  void rebuild_step(std::uint64_t tick);
   // A new XG (start) or XH (cancel).
   void serve_goal(std::uint64_t tick);
   // True (and the navigation ended) when the arbiter took the robot back: XH, the operator, an emergency.
@@ -121,6 +130,8 @@ class PlannerModule final : public Process {
   std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
   std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
+  std::int64_t map_x0_mm_ = 0, map_y0_mm_ = 0;   // mm, the map window's lower-left corner
+  const Config& cfg_;                      // for the window's rule (planner::window_shift)
 };
 
 }  // namespace robuter

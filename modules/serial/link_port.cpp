@@ -349,11 +349,17 @@ std::uint32_t LinkPort::features() const noexcept {
 }
 
 // XG: checked here so that a refused goal changes nothing: the planner must run, the goal must
-// lie on its map, and no emergency may be latched (as AW).
+// lie on its map or the map must be able to move to hold the robot and the goal
+// (planner::goal_acceptable, the planner's own rule), and no emergency may be latched (as AW).
 PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexcept {
   if (!planner_running()) return PortResult::unavailable;
   if (with_theta && (g.theta <= -18000 || g.theta > 18000)) return PortResult::out_of_range;
-  if (!planner::goal_on_map(cfg_.planner, g.x, g.y)) return PortResult::out_of_range;
+  const planner::MapWindow now =
+      planner_status_.generation() > 0
+          ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
+          : planner::configured_window(cfg_.planner);
+  const Posture& at = posture_.peek();
+  if (!planner::goal_acceptable(cfg_, now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   w_.goal.modify([&](PlannerGoal& p) {
     p.x = g.x;

@@ -92,5 +92,38 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   if (keep == nullptr) std::filesystem::remove_all(pictures);
 }
 
+// (b) The same run with the default [planner] configuration (a 16 x 16 m window around the
+// odometry origin, which does not hold the goal): the XG moves the window between the robot and
+// the goal (docs/PLANNER.md, "The window"), then the run is (a)'s.
+TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithTheDefaultMapWindow) {
+  Config cfg;
+  if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000-default");
+  const PlannerModule* pm = test::planner_of(fw);
+  ASSERT_NE(pm, nullptr);
+  std::printf("seed000 lab, default window: state %d, %u plans (%u replans), %u scans, %.1f s simulated, "
+              "%.2f m driven, min clearance %.3f m, final error %.3f m, worst activation %u us, window at "
+              "(%lld, %lld) mm\n",
+              static_cast<int>(r.state), r.plans, r.plans ? r.plans - 1 : 0, r.scans, r.seconds, r.travelled,
+              r.min_clearance, r.final_error, r.run_us_max, static_cast<long long>(pm->map_x0_mm()),
+              static_cast<long long>(pm->map_y0_mm()));
+  std::printf("plan times (us): %s\n", r.plan_times.c_str());
+  EXPECT_EQ(r.state, PlannerState::reached);
+  EXPECT_FALSE(r.bumper);
+  EXPECT_EQ(r.trips, 0u);
+  EXPECT_GT(r.min_clearance, 0.0);
+  EXPECT_LT(r.final_error, 0.15);
+  EXPECT_EQ(pm->map_x0_mm(), 750);  // centred on (8.75, 3.75) m: corner (0.75, -4.25) m
+  EXPECT_EQ(pm->map_y0_mm(), -4250);
+  const auto xp = fw.ask("XP");
+  ASSERT_TRUE(xp);
+  EXPECT_EQ(xp->rfind("P reached 150000 55000 ", 0), 0u) << *xp;
+}
+
 }  // namespace
 }  // namespace robuter

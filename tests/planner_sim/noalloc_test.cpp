@@ -57,5 +57,34 @@ TEST(PlannerSimNoAlloc, ANavigationInTheSeed000LabAllocatesNothing) {
 #endif
 }
 
+// The same with the default [planner] configuration: the XG moves the map window (the map's
+// counts in place, the layers rebuilt over several activations) without allocating either.
+TEST(PlannerSimNoAlloc, AWindowMoveAndTheNavigationAfterItAllocateNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", Config{});
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  for (const char* l : {"XP", "XM", "XH", "XG 1 2 3 4"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the paths
+  fw.run_ticks(20);
+  fw.count_lines();
+  const auto& status = fw.bb().planner_status.reader().peek();
+  ASSERT_EQ(status.map_x0_mm, -8000);
+  test::AllocCounter counter;
+  fw.send_raw("XG 150000 55000\r");
+  int ticks = 0;
+  for (; ticks < 20'000 && status.state != PlannerState::reached; ++ticks) {
+    if (ticks % 500 == 250) fw.send_raw(ticks % 1000 == 250 ? "XP\r" : "XM\r");
+    fw.step();
+    fw.count_lines();
+  }
+  const auto allocations = counter.count();
+  EXPECT_EQ(allocations, 0u);
+  EXPECT_EQ(status.map_x0_mm, 750);  // the window moved
+  EXPECT_EQ(status.state, PlannerState::reached);
+#endif
+}
+
 }  // namespace
 }  // namespace robuter

@@ -27,14 +27,14 @@ void expect_unchanged(test::SimFirmware& fw, const std::string& before) {
 }
 
 TEST(PlannerSimProtocol, MalformedOrOffTheMapGoalsAreErrorsAndChangeNothing) {
-  test::SimFirmware fw;  // default world, default planner map (12 x 12 m around the start)
+  test::SimFirmware fw;  // default world, default planner map (16 x 16 m around the start)
   ASSERT_TRUE(fw.ok()) << fw.error();
   ASSERT_EQ(fw.ask("XB1"), "ack");
   const auto before = fw.ask("XP");
   ASSERT_TRUE(before);
   EXPECT_EQ(before->rfind("P idle 0 0 0 0 0 0 0 0 ", 0), 0u) << *before;
   EXPECT_EQ(fw.ask("XG 900000 0"), "error 4 out-of-range");     // 90 m: off the map
-  EXPECT_EQ(fw.ask("XG 0 -60001"), "error 4 out-of-range");     // just below the map
+  EXPECT_EQ(fw.ask("XG 0 -150000"), "error 4 out-of-range");    // 15 m: no 16 m window holds both
   EXPECT_EQ(fw.ask("XG 10000 10000 18001"), "error 4 out-of-range");  // theta
   EXPECT_EQ(fw.ask("XG 10000"), "error 2 bad-parameter-count");
   EXPECT_EQ(fw.ask("XG 1 2 3 4"), "error 2 bad-parameter-count");

@@ -123,6 +123,12 @@ void CSpaceLayer::fill(const OccupancyMap& map, Store& store) const {
   }
 }
 
+void CSpaceLayer::rebuild(const CSpaceStack& stack, const OccupancyMap& map) {
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x)
+      grid_.set({x, y}, class_of(meets(stack, x, y) ? 1 : 0, map.state_at(map.index({x, y}))));
+}
+
 // Why: the bounding box of the mask and of each band of kBandRuns runs, for meets().
 void CSpaceLayer::index_mask() {
   auto box_of = [&](std::size_t i0, std::size_t i1) {

@@ -41,6 +41,11 @@ class CSpaceLayer {
   // Why: size for the map and compute everything once.
   void build(const OccupancyMap& map, FootprintMask mask);
 
+  // Why: the map moved under the layer (Planner::shift_map): recompute every class from the
+  // stack (already reset for the moved map) with the mask kept, without allocating. The same
+  // classes as build() on that map.
+  void rebuild(const CSpaceStack& stack, const OccupancyMap& map);
+
   // Why: follow the map after beams: `cells` are the map indexes from OccupancyMap::changes()
   // that `stack` has folded (begin_sync, before end_sync). Cells whose class changed are
   // appended to `out` (each once per call, with its class before the call) when it is not null.

@@ -94,6 +94,23 @@ void OccupancyMap::clear() {
   for (std::uint32_t i = 0; i < counts_.size(); ++i) write(i, kUnknown);
 }
 
+void OccupancyMap::shift(int dx, int dy) {
+  clear_changes();
+  const int w = geo_.width, h = geo_.height;
+  geo_.origin.x += dx * geo_.resolution;
+  geo_.origin.y += dy * geo_.resolution;
+  // New cell (x, y) is old cell (x + dx, y + dy); rows and columns are walked away from the
+  // side they are read from, so every count is read before it is overwritten.
+  const int y_first = dy >= 0 ? 0 : h - 1, y_step = dy >= 0 ? 1 : -1;
+  const int x_first = dx >= 0 ? 0 : w - 1, x_step = dx >= 0 ? 1 : -1;
+  for (int n = 0, y = y_first; n < h; ++n, y += y_step) {
+    for (int m = 0, x = x_first; m < w; ++m, x += x_step) {
+      const Cell from{x + dx, y + dy};
+      counts_[index({x, y})] = contains(from) ? counts_[index(from)] : kUnknown;
+    }
+  }
+}
+
 // Why: seed 003's update rule; the beam is walked cell to cell with Bresenham like the thesis.
 void OccupancyMap::integrate_beam(Point2 origin, double angle, double range, double max_range) {
   if (!(range >= 0.0) || !(max_range > 0.0)) return;  // also rejects NaN

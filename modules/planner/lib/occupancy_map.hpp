@@ -75,6 +75,11 @@ class OccupancyMap {
   void mark_free(Cell c);
   // Every cell back to unknown (logs the changes).
   void clear();
+  // Why: the planner's window moves by whole cells (docs/PLANNER.md, "The window"): the origin
+  // moves by (dx, dy) cells, each count stays with its place in the world, the cells that come
+  // into view are unknown. In place (no allocation); the change log is cleared, since whatever
+  // was built on the map is rebuilt.
+  void shift(int dx, int dy);
 
   // One range reading: cells from the origin's cell up to the end of the beam lose 1 (down to
   // 0, and become seen); if range < max_range the last cell is a hit and gains 1. A never-seen

@@ -71,6 +71,30 @@ void Planner::sync() {
   map_.clear_changes();
 }
 
+void Planner::shift_map(int dx, int dy) {
+  map_.shift(dx, dy);
+  cspace_.reset(map_);  // same size: the table and marks are refilled, not reallocated
+  field_ready_ = false;
+  waypoints_.clear();
+  rebuild_next_ = 0;
+}
+
+// Layers in order: the heading slices, the turn layers, then the relaxation (rectangle).
+bool Planner::rebuild_step(int layers) {
+  if (rebuild_next_ < 0) return true;
+  const int slices = static_cast<int>(layers_.size()), turns = static_cast<int>(turn_layers_.size());
+  const int total = slices + turns + (cfg_.footprint == FootprintKind::Rectangle ? 1 : 0);
+  for (int n = 0; n < layers && rebuild_next_ < total; ++n, ++rebuild_next_) {
+    const int k = rebuild_next_;
+    if (k < slices) layers_[static_cast<std::size_t>(k)].rebuild(cspace_, map_);
+    else if (k < slices + turns) turn_layers_[static_cast<std::size_t>(k - slices)].rebuild(cspace_, map_);
+    else relaxation_.rebuild(cspace_, map_);
+  }
+  if (rebuild_next_ < total) return false;
+  rebuild_next_ = -1;
+  return true;
+}
+
 const PassGrid& Planner::expanded(int slice) const {
   const int k = slice < 0 || slice >= slices() ? 0 : slice;
   return layers_[static_cast<std::size_t>(k)].grid();

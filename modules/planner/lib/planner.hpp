@@ -64,6 +64,17 @@ class Planner {
   // Why: fold the map's logged changes into the layers and the cost field.
   void sync();
 
+  // Why: the window moves by whole cells (docs/PLANNER.md, "The window"): the map's counts move
+  // in place (OccupancyMap::shift) and the shared occupancy table is retaken, in one call; the
+  // layers are then stale until rebuild_step() has returned true. No allocation. Between the two,
+  // the map must not change and nothing may sync, prepare or plan.
+  void shift_map(int dx, int dy);
+  // Why: rebuilds at most `layers` C-space layers after shift_map() (the turn layers and the
+  // relaxation count as layers), so that a caller with a time budget spreads the rebuild over
+  // several steps; true once every layer is rebuilt (at once when none is pending).
+  bool rebuild_step(int layers);
+  bool rebuilding() const { return rebuild_next_ >= 0; }
+
   // Why: a plan's largest fixed cost is the goal's cost field (a Dijkstra over the whole map:
   // the heuristic of the rectangle search, the path itself for the incremental disc); a caller
   // with a time budget pays it here, in a step of its own, so that plan() only searches.
@@ -114,6 +125,7 @@ class Planner {
   HeadingSearch heading_search_;        // (x, y, slice) search
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
+  int rebuild_next_ = -1;               // next layer to rebuild after shift_map (-1: none)
 };
 
 }  // namespace robuter::plan
