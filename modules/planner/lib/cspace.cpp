@@ -129,6 +129,12 @@ void CSpaceLayer::rebuild(const CSpaceStack& stack, const OccupancyMap& map) {
       grid_.set({x, y}, class_of(meets(stack, x, y) ? 1 : 0, map.state_at(map.index({x, y}))));
 }
 
+void CSpaceLayer::rebuild_bits(const CSpaceStack& stack, const OccupancyMap& map, SliceBits& bits, int slice) const {
+  BitStore store{bits, slice};
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x) store.put(store.index({x, y}), meets(stack, x, y) ? kBlocked : kFree);
+}
+
 // Why: the bounding box of the mask and of each band of kBandRuns runs, for meets().
 void CSpaceLayer::index_mask() {
   auto box_of = [&](std::size_t i0, std::size_t i1) {

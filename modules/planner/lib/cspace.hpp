@@ -57,6 +57,8 @@ class CSpaceLayer {
   void build_bits(const OccupancyMap& map, FootprintMask mask, SliceBits& bits, int slice);
   void update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                    SliceBits& bits, int slice);
+  // Why: rebuild() for a turn-clearance layer: bit `slice` of `bits` recomputed from the stack.
+  void rebuild_bits(const CSpaceStack& stack, const OccupancyMap& map, SliceBits& bits, int slice) const;
 
   const PassGrid& grid() const { return grid_; }
   const FootprintMask& mask() const { return mask_; }

@@ -87,7 +87,8 @@ bool Planner::rebuild_step(int layers) {
   for (int n = 0; n < layers && rebuild_next_ < total; ++n, ++rebuild_next_) {
     const int k = rebuild_next_;
     if (k < slices) layers_[static_cast<std::size_t>(k)].rebuild(cspace_, map_);
-    else if (k < slices + turns) turn_layers_[static_cast<std::size_t>(k - slices)].rebuild(cspace_, map_);
+    else if (k < slices + turns)  // turn layers are bits (turn_room_); their grid() is empty
+      turn_layers_[static_cast<std::size_t>(k - slices)].rebuild_bits(cspace_, map_, turn_room_, k - slices);
     else relaxation_.rebuild(cspace_, map_);
   }
   if (rebuild_next_ < total) return false;
