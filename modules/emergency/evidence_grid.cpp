@@ -26,23 +26,22 @@ EvidenceGrid::EvidenceGrid(const GridSettings& s) : s_(s) {
   next_.reserve(kCarried);
 }
 
-double EvidenceGrid::box_half(const Carried& c) const {
-  return 0.5 * s_.cell * (std::abs(std::cos(c.turn)) + std::abs(std::sin(c.turn)));
+template <class Visit>
+bool EvidenceGrid::for_box(const Carried& c, Visit visit) const {
+  const double ext = 0.5 * s_.cell * (std::abs(std::cos(c.turn)) + std::abs(std::sin(c.turn)));
+  const int x0 = index(c.centre.x() - ext), x1 = index(c.centre.x() + ext);
+  const int y0 = index(c.centre.y() - ext), y1 = index(c.centre.y() + ext);
+  for (int gy = y0; gy <= y1; ++gy)
+    for (int gx = x0; gx <= x1; ++gx)
+      if (contains(gx, gy) && visit(gx, gy)) return true;
+  return false;
 }
 
 bool EvidenceGrid::still_there(const Carried& c) const {
-  const double ext = box_half(c);
-  const int x0 = index(c.centre.x() - ext), x1 = index(c.centre.x() + ext);
-  const int y0 = index(c.centre.y() - ext), y1 = index(c.centre.y() + ext);
-  for (int gy = y0; gy <= y1; ++gy) {
-    for (int gx = x0; gx <= x1; ++gx) {
-      if (!contains(gx, gy)) continue;
-      const Cell& cell = at(gx, gy);
-      const std::size_t slot = static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_));
-      if (from_carry_[slot] != 0 && cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick) return true;
-    }
-  }
-  return false;
+  return for_box(c, [&](int gx, int gy) {
+    const Cell& cell = at(gx, gy);
+    return from_carry_[slot(gx, gy)] != 0 && cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
+  });
 }
 
 void EvidenceGrid::collect(const Eigen::Vector2d& robot, double radius, bool near, bool carried) {
@@ -59,7 +58,7 @@ void EvidenceGrid::collect(const Eigen::Vector2d& robot, double radius, bool nea
     for (int gx = ox_; gx < ox_ + s_.side; ++gx) {
       const Cell& cell = at(gx, gy);
       if (cell.hit_tick == 0 || cell.hit_tick < cell.free_tick) continue;
-      if (from_carry_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))] != 0) continue;  // in carried_
+      if (from_carry_[slot(gx, gy)] != 0) continue;  // in carried_
       const Eigen::Vector2d c((gx + 0.5) * s_.cell, (gy + 0.5) * s_.cell);
       if (((c - robot).squaredNorm() <= r2) != near) continue;
       if (next_.size() == kCarried) return;
@@ -94,17 +93,12 @@ void EvidenceGrid::carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d&
   for (Carried c : next_) {
     c.centre = rotation * c.centre + translation;
     c.turn += turn;
-    const double ext = box_half(c);
-    const int x0 = index(c.centre.x() - ext), x1 = index(c.centre.x() + ext);
-    const int y0 = index(c.centre.y() - ext), y1 = index(c.centre.y() + ext);
-    for (int gy = y0; gy <= y1; ++gy) {
-      for (int gx = x0; gx <= x1; ++gx) {
-        if (!contains(gx, gy)) continue;
-        Cell& cell = at(gx, gy);
-        cell.hit_tick = std::max(cell.hit_tick, c.tick);
-        from_carry_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))] = 1;
-      }
-    }
+    for_box(c, [&](int gx, int gy) {
+      Cell& cell = cells_[slot(gx, gy)];
+      cell.hit_tick = std::max(cell.hit_tick, c.tick);
+      from_carry_[slot(gx, gy)] = 1;
+      return false;
+    });
     carried_.push_back(c);
   }
   next_.clear();
@@ -214,7 +208,7 @@ void EvidenceGrid::add_reading(std::uint64_t tick, const Eigen::Vector2d& origin
     const int gx = index(p.x()), gy = index(p.y());
     if (!contains(gx, gy)) continue;
     at(gx, gy).hit_tick = tick;
-    from_carry_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))] = 0;  // observed here
+    from_carry_[slot(gx, gy)] = 0;  // observed here
   }
 }
 

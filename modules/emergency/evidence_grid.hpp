@@ -78,8 +78,10 @@ class EvidenceGrid {
   };
   // Whether the global cell (gx, gy) is inside the window.
   bool contains(int gx, int gy) const { return gx - ox_ >= 0 && gx - ox_ < s_.side && gy - oy_ >= 0 && gy - oy_ < s_.side; }
-  Cell& at(int gx, int gy) { return cells_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))]; }
-  const Cell& at(int gx, int gy) const { return cells_[static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_))]; }
+  // The storage slot of global cell (gx, gy) (toroidal: the window's cells are a mask away).
+  std::size_t slot(int gx, int gy) const { return static_cast<std::size_t>((gy & mask_) * s_.side + (gx & mask_)); }
+  Cell& at(int gx, int gy) { return cells_[slot(gx, gy)]; }
+  const Cell& at(int gx, int gy) const { return cells_[slot(gx, gy)]; }
   int index(double v) const;  // global cell index of a coordinate
   // Clears the cells of global column gx (every row of the window) / row gy.
   void clear_column(int gx);
@@ -91,8 +93,10 @@ class EvidenceGrid {
     double turn;             // rotation from the frame it was observed in to the current one, rad
     std::uint64_t tick;      // its evidence tick
   };
-  // The half side of the box holding a carried cell's turned square, m.
-  double box_half(const Carried& c) const;
+  // Calls visit(gx, gy) for each window cell of the box holding a carried cell's turned square
+  // (its half side: half a cell × (|cos turn| + |sin turn|)); stops early when visit returns true.
+  template <class Visit>
+  bool for_box(const Carried& c, Visit visit) const;
   // Whether some cell of a carried cell's box still holds the evidence carry() put there.
   bool still_there(const Carried& c) const;
   // Adds to next_ the carried cells still there (carried) or the observed evidence cells
