@@ -497,8 +497,9 @@ struct FirmwareCase {
 // on one case. Measures a full plan (set_map + plan, CPU), replans after 100 new occupied cells
 // on the path 1-2 m ahead of the robot (median of 100 placements), the worst activation
 // (prepare() and plan() run as separate steps, as the module runs them) and the VmHWM growth
-// (the caller runs it in a child process so that the peak is this planner's alone).
-void bench_firmware(const FirmwareCase& fc, bool check_default) {
+// (the caller runs it in a child process so that the peak is this planner's alone). False when
+// the case has no path (reported).
+bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   const long hwm0 = vm_hwm_kb();
   const robuter::planner::PlannerSettings settings = robuter::planner::make_settings(robuter::Config{});
   const OccupancyMap& base = fc.map;
@@ -523,7 +524,7 @@ void bench_firmware(const FirmwareCase& fc, bool check_default) {
   if (!first.found()) {
     std::printf("%-8s no path from (%.2f, %.2f) to (%.2f, %.2f): %s\n", fc.label, start.x, start.y, goal.x, goal.y,
                 std::string(to_string(first.status)).c_str());
-    return;
+    return false;
   }
   // Worst activation: after set_map, prepare() then plan(), and the same after each placement.
   double worst_prepare = 0.0, worst_plan = 0.0;
@@ -538,7 +539,7 @@ void bench_firmware(const FirmwareCase& fc, bool check_default) {
   };
   p.set_map(base);
   activations();
-  std::vector<double> replan;
+  std::vector<double> replan, replan_sync;
   int found = 0, placed_total = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < 100; ++i) {
@@ -564,8 +565,11 @@ void bench_firmware(const FirmwareCase& fc, bool check_default) {
         }
       if (pass == 0) {
         const double c0 = cpu_ms();
-        found += p.plan(start, goal).found() ? 1 : 0;  // folds the changes in, then searches
+        p.sync();  // the layers and the heuristic field take the new cells
+        const double c1 = cpu_ms();
+        found += p.plan(start, goal).found() ? 1 : 0;  // the search
         replan.push_back(cpu_ms() - c0);
+        replan_sync.push_back(c1 - c0);
         placed_total += placed;
       } else {
         activations();
@@ -587,15 +591,17 @@ void bench_firmware(const FirmwareCase& fc, bool check_default) {
               // The target compares with a plan on the same map (cost field + search): rebuilding
               // every layer (set_map) is not part of planning from scratch on a map already held.
               verdict(median(search_only) / replan_ms >= 10.0));
+  std::printf("    of which sync (layers + field) %6.2f ms (median)\n", median(replan_sync));
   std::printf("  worst activation               %8.2f ms CPU (prepare %.2f, plan %.2f; first plan + 100 replans)%s\n",
               worst, worst_prepare, worst_plan,
               check_default ? (worst < 5.0 ? "   target < 5 ms: PASS" : "   target < 5 ms: FAIL") : "");
   std::printf("  memory (VmHWM growth)          %8.1f MB\n", static_cast<double>(hwm1 - hwm0) / 1024.0);
+  return true;
 }
 
 // Why: each firmware-planner figure in a child process (its own VmHWM). (a) the default map
-// (12 m x 12 m, 240 x 240 cells, origin 6 m south-west of the robot as the default
-// [planner] section places it) with the default world's walls; (b) 300 x 300 cells: the
+// (the default [planner] window: 16 m x 16 m, 320 x 320 cells, origin 8 m south-west of the
+// robot) with the default world's walls; (b) 300 x 300 cells: the
 // seed 000 lab (tests/planner/data/lab.env, 15 m x 15 m) with lab.params' start and goal.
 void bench_firmware_all(const std::string& root) {
   std::printf("firmware planner (plan::Planner from make_settings(default config): rectangle, 16 slices,"
@@ -612,13 +618,22 @@ void bench_firmware_all(const std::string& root) {
         }
         const robuter::sim::World& world = loaded.value();
         const Pose2 s{world.start->x, world.start->y, world.start->theta};
-        FirmwareCase fc{"default", OccupancyMap(MapGeometry{240, 240, 0.05, {s.x - 6.0, s.y - 6.0}}), s,
-                        Point2{world.goal->x(), world.goal->y()}};
-        for (int y = 0; y < 240; ++y)
-          for (int x = 0; x < 240; ++x) fc.map.mark_free({x, y});
+        // The default [planner] window (make_settings), placed around the world's start as the
+        // module places it around the odometry origin.
+        MapGeometry g = robuter::planner::make_settings(robuter::Config{}).map;
+        g.origin = {s.x + g.origin.x, s.y + g.origin.y};
+        FirmwareCase fc{"default", OccupancyMap(g), s, Point2{world.goal->x(), world.goal->y()}};
+        for (int y = 0; y < g.height; ++y)
+          for (int x = 0; x < g.width; ++x) fc.map.mark_free({x, y});
         tool::rasterise_world(world, fc.map);
         fc.map.clear_changes();
-        bench_firmware(fc, true);
+        if (!bench_firmware(fc, true)) {
+          // The world's goal is in the east room, behind the 90 cm door: with the window's cell
+          // alignment the rasterised jambs leave 80 cm, which the rectangle's 16 slices cannot
+          // pass (issue #13). The figures are then taken on a goal in the west room.
+          fc.goal = Point2{3.6, 4.6};
+          bench_firmware(fc, true);
+        }
       } else {
         const auto lab = load_environment(root + "/tests/planner/data/lab.env");
         const auto params = load_parameters(root + "/tests/planner/data/lab.params");
@@ -730,6 +745,10 @@ void bench_cspace_layers() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--firmware") {  // the firmware planner's figures alone
+    bench_firmware_all(argc > 2 ? argv[2] : ROBUTER_SOURCE_DIR);
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--layers") {  // the C-space layers' figures alone
     bench_cspace_layers();
     return 0;

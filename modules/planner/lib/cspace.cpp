@@ -224,14 +224,22 @@ void CSpaceLayer::update_in(Store& store, CSpaceStack& stack, const OccupancyMap
           if (!meets(stack, x, y)) store.set(stack, i, g, class_of(0, map.state_at(i)), out);
         }
       };
+      // Raised cells go by runs along a row, from each run's first cell: the footprints over a
+      // run's cells cover, in each mask row, one span (the run widened by the mask run), so a
+      // cell is visited once per mask row instead of once per raised cell under it.
+      int last = oc.x;  // last column of the run (the cell alone when lowered)
+      if (pass == kRaised) {
+        if (oc.x > 0 && stack.kind(o - 1) == kRaised) continue;  // not the first of its run
+        while (last + 1 < w && stack.kind(o + static_cast<std::uint32_t>(last + 1 - oc.x)) == kRaised) ++last;
+      }
       for (const MaskRun& r : mask_.runs) {
         const int y = oc.y - r.dy;
         if (y < 0 || y >= h) continue;
         const int lo = std::max(oc.x - r.hi, 0);
-        const int hi = std::min(oc.x - r.lo, w - 1);
+        const int hi = std::min(last - r.lo, w - 1);
         for (int x = lo; x <= hi; ++x) visit(x, y);
       }
-      visit(oc.x, oc.y);
+      for (int x = oc.x; x <= last; ++x) visit(x, oc.y);
     }
   }
   // Clear the "checked" marks: the same cells again (a write per cell, no test).

@@ -29,7 +29,8 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid);
 // marks its update needs, are the CSpaceStack shared by every layer of a planner.
 // A full build sums each mask run's occupied cells with per-row prefix sums (O(cells x mask
 // rows)). An update after a sync (CSpaceStack::begin_sync) keeps no counts: a newly occupied
-// map cell blocks every cell whose footprint covers it; a freed one re-tests only the blocked
+// map cell blocks every cell whose footprint covers it (a run of them along a row by one span
+// per mask row); a freed one re-tests only the blocked
 // cells whose footprint covered it, each once per update, against the table (the mask's bounding
 // box, then bands of runs, stopping at the first occupied cell); a free <-> unknown change re-classes that cell
 // unless it is blocked.
