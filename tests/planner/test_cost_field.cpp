@@ -41,6 +41,40 @@ TEST(CostField, AgreesWithAStar) {
     }
 }
 
+// Why: the planner module computes a new goal's field in steps (one per activation); any step
+// size must give exactly the field of one computation, and report completion only at the end.
+TEST(CostField, InStepsEqualsOneComputation) {
+  std::mt19937 rng(5);
+  const int w = 60, h = 45;
+  PassGrid g(w, h);
+  std::uniform_int_distribution<int> cls(0, 9);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) g.set({x, y}, cls(rng) < 2 ? kBlocked : cls(rng) < 3 ? kUnknown : kFree);
+  const Cell goal{30, 20};
+  g.set(goal, kFree);
+  CostModel costs;
+  costs.unknown_cost = 3.0;
+  CostField one;
+  ASSERT_TRUE(one.compute(g, goal, costs));
+  for (const std::uint32_t budget : {1u, 7u, 100u, 1000u, 100000u}) {
+    CostField f;
+    f.begin(g, goal, costs);
+    int steps = 0;
+    while (!f.step(budget)) {
+      ASSERT_TRUE(f.pending());
+      ASSERT_LT(++steps, w * h * 4) << "never completes with " << budget << " cells a step";
+    }
+    EXPECT_FALSE(f.pending());
+    EXPECT_TRUE(f.step(budget));  // a completed field stays complete
+    EXPECT_EQ(f.last_settled(), one.last_settled()) << budget;
+    if (budget == 1u) {
+      EXPECT_GT(steps, 1000);
+    }
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) ASSERT_EQ(f.cost({x, y}), one.cost({x, y})) << x << "," << y << " budget " << budget;
+  }
+}
+
 // Why: the incremental repair is the risky part; compare it with a fresh field after each of
 // many random batches of changes (blocking, freeing, unknown with a cost, the goal itself).
 TEST(CostField, IncrementalRepairEqualsRecomputation) {

@@ -68,5 +68,42 @@ TEST(TurnClearance, PrepareThenPlanEqualsPlan) {
   EXPECT_EQ(a.waypoints().size(), b.waypoints().size());
 }
 
+// Why: the module prepares a goal in steps (prepare_step, one per activation) while its sonar
+// keeps writing the map: the steps must not fold those changes under the field (sync defers), and
+// once the field is complete the next plan folds them, ending where a planner given the final map
+// at once ends. A new goal in the middle starts the field again.
+TEST(TurnClearance, PrepareInStepsDefersMapChangesAndEqualsAFreshPlan) {
+  Planner a(robuter(0.25));
+  a.set_map(door_map());
+  ASSERT_FALSE(a.prepare_step({1.0, 4.5}, 500));  // another goal, dropped half-way
+  int steps = 1;
+  bool blocked_early = false;
+  while (!a.prepare_step({4.5, 4.5}, 500)) {
+    ++steps;
+    if (steps == 3) {  // a new obstacle on the way to the door, mid-way
+      for (int y = 15; y < 19; ++y)
+        for (int x = 95; x < 99; ++x) a.map().mark_occupied({x, y});
+      a.sync();  // deferred: the layers must not change under the field
+      blocked_early = a.map().changes().empty() || a.expanded(0).at({96, 16}) == kBlocked;
+    }
+  }
+  EXPECT_FALSE(blocked_early) << "a sync folded map changes while the field was being made";
+  EXPECT_GT(steps, 3);
+  const PlanResult ra = a.plan({1.5, 1.5, 0.3}, {4.5, 4.5});  // folds the change, repairs the field
+  EXPECT_TRUE(a.map().changes().empty());
+  EXPECT_EQ(a.expanded(0).at({96, 16}), kBlocked);
+  OccupancyMap final_map = door_map();
+  for (int y = 15; y < 19; ++y)
+    for (int x = 95; x < 99; ++x) final_map.mark_occupied({x, y});
+  Planner b(robuter(0.25));
+  b.set_map(final_map);
+  const PlanResult rb = b.plan({1.5, 1.5, 0.3}, {4.5, 4.5});
+  ASSERT_EQ(ra.status, rb.status);
+  ASSERT_TRUE(ra.found());
+  EXPECT_DOUBLE_EQ(ra.cost, rb.cost);
+  EXPECT_EQ(a.waypoints().size(), b.waypoints().size());
+  EXPECT_EQ(a.expanded(0).cls, b.expanded(0).cls);
+}
+
 }  // namespace
 }  // namespace robuter::plan

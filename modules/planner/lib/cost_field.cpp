@@ -20,6 +20,12 @@ void CostField::reserve(int width, int height) {
 }
 
 bool CostField::compute(const PassGrid& grid, Cell goal, const CostModel& costs) {
+  begin(grid, goal, costs);
+  step(~std::uint32_t{0});
+  return grid.contains(goal) && grid.at(goal) != kBlocked;
+}
+
+void CostField::begin(const PassGrid& grid, Cell goal, const CostModel& costs) {
   reserve(grid.width, grid.height);
   grid_ = &grid;
   costs_ = costs;
@@ -28,21 +34,31 @@ bool CostField::compute(const PassGrid& grid, Cell goal, const CostModel& costs)
   goal_ = goal;
   std::fill(dist_.begin(), dist_.begin() + static_cast<std::ptrdiff_t>(grid.stored()), kInfinity);
   std::fill(next_.begin(), next_.begin() + static_cast<std::ptrdiff_t>(grid.stored()), std::uint8_t{kNoMove});
+  // A computation dropped half-way (cancel()) leaves cells marked as queued.
+  std::fill(in_heap_.begin(), in_heap_.begin() + static_cast<std::ptrdiff_t>(grid.stored()), std::uint8_t{0});
   heap_.clear();
   settled_ = 0;
   invalidated_ = 0;
+  pending_ = false;
   if (!grid.contains(goal)) {
     goal_index_ = 0;  // a border cell: always blocked, never seeded
-    return false;
+    return;
   }
   goal_index_ = grid.index(goal);
   // One seed: Dijkstra's keys stay within two edges of the lowest, so the bucket ring fits
   // (label-correcting: a cell improved after its pop is queued again, so the result is exact).
   use_ring_ = ring_.reset(kBucketWidth, kSqrt2 * std::max(1.0, costs_.unknown_cost), 0.0);
   seed(goal_index_);
-  run();
-  use_ring_ = false;
-  return grid.at(goal) != kBlocked;
+  pending_ = true;
+}
+
+bool CostField::step(std::uint32_t max_settled) {
+  if (!pending_) return true;
+  if (run(max_settled)) {
+    pending_ = false;
+    use_ring_ = false;
+  }
+  return !pending_;
 }
 
 double CostField::cost(Cell c) const {
@@ -126,14 +142,15 @@ void CostField::relax_from(std::uint32_t u) {
   }
 }
 
-void CostField::run() {
-  for (;;) {
+bool CostField::run(std::uint32_t max_settled) {
+  for (std::uint32_t n = 0;; ++n) {
+    if (n == max_settled) return use_ring_ ? ring_.empty() : heap_.empty();
     std::uint32_t u;
     if (use_ring_) {
-      if (ring_.empty()) break;
+      if (ring_.empty()) return true;
       u = ring_.pop();
     } else {
-      if (heap_.empty()) break;
+      if (heap_.empty()) return true;
       u = heap_.pop().node;
     }
     in_heap_[u] = 0;
@@ -165,7 +182,7 @@ void CostField::invalidate_subtree(std::uint32_t root) {
 }
 
 void CostField::update(std::span<const ClassChange> changes) {
-  if (!grid_) return;
+  if (!grid_ || pending_) return;
   const std::uint8_t* cls = grid_->cls.data();
   const std::array<double, 3> mult = {kInfinity, 1.0, std::max(1.0, costs_.unknown_cost)};
   settled_ = 0;
@@ -200,7 +217,7 @@ void CostField::update(std::span<const ClassChange> changes) {
     }
   }
   for (std::uint32_t x : work_) reset_[x] = 0;
-  run();
+  run(~std::uint32_t{0});
 }
 
 PlanResult CostField::path_from(Cell start, std::vector<Cell>& path) const {

@@ -36,6 +36,16 @@ class CostField {
   // update(). Returns false if the goal is outside or blocked (then every cell is unreachable).
   bool compute(const PassGrid& grid, Cell goal, const CostModel& costs = {});
 
+  // Why: the same computation in steps, for a caller with a time budget per activation: begin()
+  // seeds the goal, each step() settles at most `max_settled` cells and returns true once the
+  // field is complete (compute() = begin() + one unbounded step()). Until then the grid must not
+  // change, cost() and path_from() are not to be used, and update() does nothing.
+  void begin(const PassGrid& grid, Cell goal, const CostModel& costs = {});
+  bool step(std::uint32_t max_settled);
+  bool pending() const { return pending_; }
+  // Why: drop a computation in steps (the grid it was for is about to change wholesale).
+  void cancel() { pending_ = false; use_ring_ = false; }
+
   // Why: repair after `changes` (the grid already holds the new classes).
   void update(std::span<const ClassChange> changes);
 
@@ -55,7 +65,7 @@ class CostField {
  private:
   bool edge_ok(std::uint32_t u, int m) const;
   void relax_from(std::uint32_t u);
-  void run();
+  bool run(std::uint32_t max_settled);  // true when the queue is empty
   void seed(std::uint32_t v);
   void push_or_lower(std::uint32_t v, double old, double d);
   void invalidate_subtree(std::uint32_t root);
@@ -74,6 +84,7 @@ class CostField {
   IndexedHeap heap_;                           // repair queue keyed by dist (seeds spread wide)
   BucketRing ring_;                            // full computation's queue (one seed)
   bool use_ring_ = false;                      // run() takes from ring_ instead of heap_
+  bool pending_ = false;                       // begin() done, the last step() not yet
   std::uint32_t settled_ = 0;                  // nodes popped by the last run
   std::uint32_t invalidated_ = 0;              // cells reset by the last update
 };

@@ -44,6 +44,7 @@ void Planner::set_map(const OccupancyMap& map) {
   field_changes_.clear();
   field_changes_.reserve(map_.cell_count());
   field_.reserve(w, h);
+  field_.cancel();
   field_ready_ = false;
   // Each footprint reserves only the search it uses (the rectangle never runs the 2D one).
   if (cfg_.footprint == FootprintKind::Rectangle) {
@@ -56,6 +57,7 @@ void Planner::set_map(const OccupancyMap& map) {
 }
 
 void Planner::sync() {
+  if (field_.pending()) return;  // prepare_step() under way: its grid must hold still
   const auto changed = map_.changes();
   if (changed.empty()) return;
   const bool rect = cfg_.footprint == FootprintKind::Rectangle;
@@ -74,6 +76,7 @@ void Planner::sync() {
 void Planner::shift_map(int dx, int dy) {
   map_.shift(dx, dy);
   cspace_.reset(map_);  // same size: the table and marks are refilled, not reallocated
+  field_.cancel();
   field_ready_ = false;
   waypoints_.clear();
   rebuild_next_ = 0;
@@ -115,17 +118,36 @@ void Planner::ensure_field(const PassGrid& grid, Cell goal) {
   field_ready_ = true;
 }
 
+const PassGrid* Planner::field_grid(Cell g) const {
+  if (cfg_.footprint == FootprintKind::Rectangle)
+    return relaxation_.grid().contains(g) ? &relaxation_.grid() : nullptr;
+  if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && layers_[0].grid().contains(g)) return &layers_[0].grid();
+  return nullptr;
+}
+
 void Planner::prepare(Point2 goal) {
+  field_.cancel();
   sync();
   const Cell g = map_.cell_of(goal);
-  if (cfg_.footprint == FootprintKind::Rectangle) {
-    if (relaxation_.grid().contains(g)) ensure_field(relaxation_.grid(), g);
-  } else if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && layers_[0].grid().contains(g)) {
-    ensure_field(layers_[0].grid(), g);
+  if (const PassGrid* grid = field_grid(g)) ensure_field(*grid, g);
+}
+
+bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
+  const Cell g = map_.cell_of(goal);
+  if (field_.pending() && !(field_.goal() == g)) field_.cancel();  // a new goal: start again
+  if (!field_.pending()) {
+    sync();
+    const PassGrid* grid = field_grid(g);
+    if (grid == nullptr || (field_ready_ && field_.goal() == g)) return true;
+    field_ready_ = false;
+    field_.begin(*grid, g, costs_);
   }
+  field_ready_ = field_.step(max_cells);
+  return field_ready_;
 }
 
 PlanResult Planner::plan(const Pose2& start, Point2 goal) {
+  field_.cancel();  // a field still in steps is made at once below, after the sync
   sync();
   waypoints_.clear();
   const Cell s = map_.cell_of({start.x, start.y});

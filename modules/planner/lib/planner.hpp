@@ -61,7 +61,8 @@ class Planner {
   const OccupancyMap& map() const { return map_; }
   const PlannerConfig& config() const { return cfg_; }
 
-  // Why: fold the map's logged changes into the layers and the cost field.
+  // Why: fold the map's logged changes into the layers and the cost field (deferred while a
+  // prepare_step() is pending).
   void sync();
 
   // Why: the window moves by whole cells (docs/PLANNER.md, "The window"): the map's counts move
@@ -80,6 +81,12 @@ class Planner {
   // with a time budget pays it here, in a step of its own, so that plan() only searches.
   // Folds pending map changes first. No effect for a goal off the map or a one-shot search.
   void prepare(Point2 goal);
+  // Why: prepare() in steps of at most `max_cells` settled cells, for a caller whose activation
+  // must stay short (the field of a 320 x 320 window of unknown cells settles ~100 k cells):
+  // true once the field for `goal` is complete (or none is needed). While steps are pending,
+  // sync() defers (the map keeps its logged changes; the field's grid must not change under it)
+  // and the next plan() completes the field at once; a new goal starts it again.
+  bool prepare_step(Point2 goal, std::uint32_t max_cells);
 
   // Why: plan from a pose to a point (world frame); the path is then in waypoints().
   // PlanResult lengths and costs are in cells (multiply by resolution for metres).
@@ -102,6 +109,7 @@ class Planner {
 
  private:
   void ensure_field(const PassGrid& grid, Cell goal);
+  const PassGrid* field_grid(Cell goal) const;  // the grid the goal's field is on, or null
   void fill_waypoints_2d(const std::vector<Cell>& cells);
   void fill_waypoints_3d(const std::vector<CellPose>& cells);
 
