@@ -23,9 +23,6 @@ constexpr std::uint64_t kSettleTicks = 20;         // ticks after the drive repo
 // C-space layers rebuilt per activation after the window moved (65 for the default rectangle:
 // 32 slices, 32 turn layers, the relaxation), so that no activation carries the whole rebuild.
 constexpr int kRebuildLayersPerRun = 3;
-// Cells of a new goal's cost field settled per activation (~20 k cells per ms here: the default
-// window's 102,400 cells of unknown space take 3 activations of ~2 ms instead of one of ~5 ms).
-constexpr std::uint32_t kFieldCellsPerRun = 40000;
 
 // CPU time of the kernel thread, µs: what an activation costs, without the time other
 // processes of a shared machine took the CPU away (wall clock would count that too).
@@ -182,6 +179,7 @@ void PlannerModule::request(std::uint64_t tick, std::int32_t left, std::int32_t 
 void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
   const bool was = navigating(state_);
   follower_.cancel();
+  planner_.cancel_steps();  // a field or a search under way is moot; the layers sync again
   if (stop && was) request(tick, 0, 0);
   if (state != state_) log::info("planner: {} (plans {}, scans {})", word(state), plans_, scans_);
   state_ = state;
@@ -223,6 +221,7 @@ bool PlannerModule::interrupted(std::uint64_t tick) {
 
 void PlannerModule::begin_scan(std::uint64_t tick) {
   follower_.cancel();
+  planner_.cancel_steps();
   request(tick, 0, 0);
   state_ = PlannerState::scanning;
   settled_ = false;
@@ -293,13 +292,17 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
   if (prepared_seq_ != goal_.seq) {
     // A new goal: its cost field (a Dijkstra over the whole map) in steps of at most
-    // kFieldCellsPerRun cells, one per activation, and the search in the next, so that no
+    // PlannerSettings::field_cells_per_run cells, one per activation, and the search in the next, so that no
     // activation carries a whole field or a field and a search (docs/PLANNER.md, "The module").
-    if (planner_.prepare_step(goal, kFieldCellsPerRun)) prepared_seq_ = goal_.seq;
+    if (planner_.prepare_step(goal, s_.field_cells_per_run)) prepared_seq_ = goal_.seq;
     return;
   }
-  const plan::PlanResult r = planner_.plan(pose, goal);
-  plan_us_ = elapsed_us();
+  // The search in steps of at most PlannerSettings::search_pops_per_run states, one per activation.
+  if (!planner_.stepping()) plan_us_ = 0;
+  plan::PlanResult r;
+  const bool ended = planner_.plan_step(pose, goal, s_.search_pops_per_run, r);
+  plan_us_ += elapsed_us();
+  if (!ended) return;
   ++plans_;
   switch (r.status) {
     case plan::PlanStatus::Found: break;

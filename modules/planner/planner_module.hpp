@@ -125,7 +125,7 @@ class PlannerModule final : public Process {
   double last_theta_ = 0.0;                // rad, wrapped heading of the previous activation
   bool have_heading_ = false;
   std::uint32_t plans_ = 0, scans_ = 0;    // for this goal
-  std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search
+  std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search (all its steps)
   std::uint32_t run_us_max_ = 0;           // µs, thread CPU time: the longest activation
   std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m

@@ -27,6 +27,11 @@ struct PlannerSettings {
   std::int32_t drive_cm_s = 20;        // cm/s, fastest wheel driving
   std::int32_t turn_cm_s = 10;         // cm/s, fastest wheel turning in place
   std::uint32_t wheel_base_mm = 600;   // mm, DBW
+  // Work per activation (not configured: what keeps an activation near 2 ms CPU here).
+  std::uint32_t field_cells_per_run = 25000;  // cells of a new goal's cost field settled (~12 per µs:
+                                              // the default window's 102,400 take 5 activations)
+  std::uint32_t search_pops_per_run = 20000;  // states of a search popped (~10 per µs; a page of
+                                              // states never written before counts 256)
 };
 
 // Why: one place turns the configuration's mm and counts into the planner's m and cells.

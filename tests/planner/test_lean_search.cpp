@@ -155,6 +155,63 @@ TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
   EXPECT_GT(pass_through_starts, cases / 50);
 }
 
+// Why: the planner module runs the search in steps (begin, then resume with a few states each
+// activation); any step size must end exactly as one find() does: the same status, cost,
+// expansions and path, on random stacks of every kind above.
+TEST(LeanHeadingSearch, InStepsEqualsOneSearch) {
+  std::mt19937 rng(7102);
+  const int cases = test::sample(600, 100);
+  int stepped = 0;
+  HeadingSearch one, steps;
+  CostField field;
+  const std::vector<int> ks = {1, 4, 8, 32, 64};
+  for (int c = 0; c < cases; ++c) {
+    const int w = 6 + static_cast<int>(rng() % 30);
+    const int h = 6 + static_cast<int>(rng() % 30);
+    const int k = ks[rng() % ks.size()];
+    const double density = 0.05 + 0.25 * std::uniform_real_distribution<double>(0, 1)(rng);
+    const Stack st = random_stack(rng, w, h, k, density);
+    HeadingOptions opt;
+    opt.motion = rng() % 3 == 0 ? MotionModel::Holonomic : MotionModel::Aligned;
+    opt.rotation_step_cost = rng() % 2 == 0 ? 0.3 : 1.0;
+    opt.heap = rng() % 4 == 0;
+    CostModel costs;
+    costs.unknown_cost = rng() % 3 == 0 ? 2.5 : 1.0;
+    const bool with_turns = rng() % 2 == 0;
+    const CellPose start{static_cast<int>(rng() % static_cast<unsigned>(w)),
+                         static_cast<int>(rng() % static_cast<unsigned>(h)), static_cast<int>(rng() % static_cast<unsigned>(k))};
+    const Cell goal{static_cast<int>(rng() % static_cast<unsigned>(w)), static_cast<int>(rng() % static_cast<unsigned>(h))};
+    const CostField* heur = nullptr;
+    if (rng() % 2 == 0) {
+      field.reserve(w, h);
+      field.compute(st.relaxed, goal, costs);
+      heur = &field;
+    }
+    const SliceBits* turn = with_turns ? &st.turn_bits : nullptr;
+    const PlanResult a = one.find(st.slice_ptrs, start, goal, opt, costs, heur, turn);
+    const std::uint32_t budget = 1u + static_cast<std::uint32_t>(rng() % 40);
+    PlanResult b;
+    int calls = 0;
+    if (!steps.begin(st.slice_ptrs, start, goal, opt, costs, heur, turn, b)) {
+      do {
+        ASSERT_TRUE(steps.pending());
+        ASSERT_LT(++calls, 1000000) << "never ends";
+      } while (!steps.resume(budget, b));
+    }
+    EXPECT_FALSE(steps.pending());
+    stepped += calls > 1;
+    SCOPED_TRACE(testing::Message() << "case " << c << " k " << k << " " << w << "x" << h << " budget " << budget);
+    ASSERT_EQ(a.status, b.status);
+    ASSERT_EQ(a.expanded, b.expanded);
+    if (a.found()) {
+      ASSERT_EQ(a.cost, b.cost);
+      ASSERT_EQ(a.length, b.length);
+      ASSERT_EQ(one.path(), steps.path());
+    }
+  }
+  EXPECT_GT(stepped, cases / 4);  // most searches took several steps
+}
+
 // States exist only in move slices: 8 of 32 with the aligned model; a turn from a pass-through
 // start slice reaches both neighbouring move slices, and the path lists every slice passed.
 TEST(LeanHeadingSearch, PassThroughStartListsEverySlice) {

@@ -105,5 +105,45 @@ TEST(TurnClearance, PrepareInStepsDefersMapChangesAndEqualsAFreshPlan) {
   EXPECT_EQ(a.expanded(0).cls, b.expanded(0).cls);
 }
 
+// Why: the module runs the search in steps too (plan_step, one per activation): the plan must
+// equal plan()'s, map changes meanwhile wait for the next plan, another goal starts again, and
+// cancel_steps() lets syncs through again.
+TEST(TurnClearance, PlanInStepsEqualsPlanAndDefersMapChanges) {
+  Planner a(robuter(0.25)), b(robuter(0.25));
+  a.set_map(door_map());
+  b.set_map(door_map());
+  const Pose2 start{1.5, 1.5, 0.3};
+  ASSERT_TRUE(a.prepare_step({4.5, 4.5}, 1u << 30));
+  PlanResult ra;
+  ASSERT_FALSE(a.plan_step(start, {1.0, 2.5}, 20, ra));  // another goal, dropped after one step
+  int steps = 0;
+  while (!a.plan_step(start, {4.5, 4.5}, 200, ra)) {
+    ASSERT_TRUE(a.stepping());
+    ASSERT_LT(++steps, 100000);
+    if (steps == 2) {
+      a.map().mark_occupied({96, 16});
+      a.sync();  // deferred while the search runs
+      EXPECT_FALSE(a.map().changes().empty());
+    }
+  }
+  EXPECT_GT(steps, 2);
+  EXPECT_FALSE(a.stepping());
+  const PlanResult rb = b.plan(start, {4.5, 4.5});
+  ASSERT_TRUE(ra.found());
+  EXPECT_EQ(ra.cost, rb.cost);
+  EXPECT_EQ(ra.expanded, rb.expanded);
+  ASSERT_EQ(a.waypoints().size(), b.waypoints().size());
+  for (std::size_t i = 0; i < a.waypoints().size(); ++i) EXPECT_EQ(a.waypoints()[i].cell, b.waypoints()[i].cell);
+  // The deferred change is folded by the next sync; a search cut short lets syncs through.
+  a.sync();
+  EXPECT_TRUE(a.map().changes().empty());
+  ASSERT_FALSE(a.plan_step(start, {4.5, 4.5}, 10, ra));
+  a.map().mark_occupied({97, 16});
+  a.cancel_steps();
+  a.sync();
+  EXPECT_TRUE(a.map().changes().empty());
+  EXPECT_FALSE(a.stepping());
+}
+
 }  // namespace
 }  // namespace robuter::plan

@@ -62,6 +62,7 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   if (budget_ < budget) {
     g_.reset(new double[budget]);  // uninitialised: resident only where a search writes
     meta_.reset(new std::uint8_t[budget]);
+    resident_pages_ = 0;  // fresh memory
   }
   budget_ = budget;
   if (origin_.size() < budget / kTileCells) origin_.resize(budget / kTileCells);
@@ -80,34 +81,44 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
                                const HeadingOptions& options, const CostModel& costs,
                                const CostField* heuristic, const SliceBits* turn_room) {
   PlanResult r;
+  if (begin(slices, start, goal, options, costs, heuristic, turn_room, r)) return r;
+  resume(~std::uint32_t{0}, r);
+  return r;
+}
+
+bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
+                          const HeadingOptions& options, const CostModel& costs,
+                          const CostField* heuristic, const SliceBits* turn_room, PlanResult& out) {
+  PlanResult r;
   path_.clear();
   used_ = 0;
+  run_.active = false;
+  const auto done = [&](PlanStatus st) {
+    r.status = st;
+    out = r;
+    return true;
+  };
   const int k_count = static_cast<int>(slices.size());
-  if (k_count == 0) return r;
+  if (k_count == 0) return done(PlanStatus::Unreachable);
   const PassGrid& g0 = *slices[0];
   const Cell sc{start.x, start.y};
-  if (!g0.contains(sc)) return r.status = PlanStatus::StartOutside, r;
-  if (!g0.contains(goal)) return r.status = PlanStatus::GoalOutside, r;
+  if (!g0.contains(sc)) return done(PlanStatus::StartOutside);
+  if (!g0.contains(goal)) return done(PlanStatus::GoalOutside);
   start.slice = ((start.slice % k_count) + k_count) % k_count;
-  if (slices[static_cast<std::size_t>(start.slice)]->at(sc) == kBlocked)
-    return r.status = PlanStatus::StartBlocked, r;
+  if (slices[static_cast<std::size_t>(start.slice)]->at(sc) == kBlocked) return done(PlanStatus::StartBlocked);
   bool goal_free = false;
   for (const PassGrid* g : slices) goal_free = goal_free || g->at(goal) != kBlocked;
-  if (!goal_free) return r.status = PlanStatus::GoalBlocked, r;
+  if (!goal_free) return done(PlanStatus::GoalBlocked);
 
   reserve(g0.width, g0.height, k_count, budget_ == 0 ? kDefaultStateBudget : budget_);
   if (++gen_ == 0) {
     for (TileEntry& e : tiles_) e.stamp = 0;
     gen_ = 1;
   }
-  const auto stride = static_cast<std::uint32_t>(g0.stride);
-  const MoveTable mt(g0.stride);
-  const auto cost = costs.table();
   std::uint8_t* allowed = allowed_.data();
   const std::uint8_t** cls_of = cls_of_.data();
   int* move_slice = move_slice_.data();
   int* slot_of = slot_of_.data();
-  const bool own_turns = turn_room != nullptr && turn_room->slices == k_count;
   int m_count = 0;  // move slots
   for (int k = 0; k < k_count; ++k) {
     allowed[k] = allowed_moves(k, k_count, options.motion);
@@ -118,9 +129,74 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       move_slice[m_count++] = k;
     }
   }
-  const int shift = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
-  page_shift_ = shift;
-  pages_ = budget_ >> shift;
+  page_shift_ = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
+  pages_ = budget_ >> page_shift_;
+  const int tx = goal.x + 1;
+  const int ty = goal.y + 1;
+  const std::uint32_t t = g0.index(goal);
+  auto h_of = [&](int x, int y, std::uint32_t cell) -> double {
+    if (heuristic) return heuristic->cost_at(cell);
+    return octile(x - tx, y - ty);
+  };
+  const double turn = std::max(options.rotation_step_cost, 0.0);
+
+  // Open list: the bucket ring when edge costs are bounded enough, else the heap (see
+  // BucketRing: with the ring, closed states may be reopened and the loop ends when the lowest
+  // bucket reaches the best goal cost; with the heap, when the popped f reaches it). A turn
+  // edge spans up to k_count - 1 slice steps.
+  const double max_edge =
+      std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn * std::max(k_count - 1, 1));
+  const int sx = sc.x + 1;
+  const int sy = sc.y + 1;
+  const std::uint32_t start_index = g0.index(sc);
+  const double h0 = h_of(sx, sy, start_index);
+  if (h0 == CostField::kInfinity) return done(PlanStatus::Unreachable);  // the relaxation says so
+  if (start_index == t) {  // already there, at the start heading
+    path_.push_back(start);
+    return done(PlanStatus::Found);
+  }
+  if (m_count == 0) return done(PlanStatus::Unreachable);  // no slice allows a grid move
+  const bool use_ring = !options.heap && ring_.reset(kBucketWidth, max_edge, h0);
+  open_.clear();
+  run_ = Run{};
+  run_.slices = slices;
+  run_.start = start;
+  run_.goal = goal;
+  run_.options = options;
+  run_.costs = costs;
+  run_.heuristic = heuristic;
+  run_.turn_room = turn_room;
+  run_.m_count = m_count;
+  run_.use_ring = use_ring;
+  run_.active = true;
+  return false;
+}
+
+bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
+  if (!run_.active) return true;
+  // The search's inputs, and what begin() derived from them, as locals: the loop below reads
+  // them from registers, not through `this` (its writes to meta_ may alias any member).
+  const std::span<const PassGrid* const> slices = run_.slices;
+  const CellPose start = run_.start;
+  const Cell goal = run_.goal;
+  const HeadingOptions& options = run_.options;
+  const CostModel& costs = run_.costs;
+  const CostField* const heuristic = run_.heuristic;
+  const SliceBits* const turn_room = run_.turn_room;
+  const int k_count = static_cast<int>(slices.size());
+  const int m_count = run_.m_count;
+  const bool use_ring = run_.use_ring;
+  const PassGrid& g0 = *slices[0];
+  const Cell sc{start.x, start.y};
+  const auto stride = static_cast<std::uint32_t>(g0.stride);
+  const MoveTable mt(g0.stride);
+  const auto cost = costs.table();
+  std::uint8_t* allowed = allowed_.data();
+  const std::uint8_t** cls_of = cls_of_.data();
+  int* move_slice = move_slice_.data();
+  int* slot_of = slot_of_.data();
+  const bool own_turns = turn_room != nullptr && turn_room->slices == k_count;
+  const int shift = page_shift_;
   const std::uint32_t local_mask = (std::uint32_t{1} << shift) - 1;
   const int tx = goal.x + 1;
   const int ty = goal.y + 1;
@@ -143,29 +219,19 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
     return (page << shift) | (static_cast<std::uint32_t>(slot) << (2 * kTileShift)) |
            (static_cast<std::uint32_t>(y & tmask) << kTileShift) | static_cast<std::uint32_t>(x & tmask);
   };
-
-  // Open list: the bucket ring when edge costs are bounded enough, else the heap (see
-  // BucketRing: with the ring, closed states may be reopened and the loop ends when the lowest
-  // bucket reaches the best goal cost; with the heap, when the popped f reaches it). A turn
-  // edge spans up to k_count - 1 slice steps.
-  const double max_edge =
-      std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn * std::max(k_count - 1, 1));
   const int sx = sc.x + 1;
   const int sy = sc.y + 1;
   const std::uint32_t start_index = g0.index(sc);
-  const double h0 = h_of(sx, sy, start_index);
-  if (h0 == CostField::kInfinity) return r;  // the relaxation already says unreachable
-  if (start_index == t) {  // already there, at the start heading
-    path_.push_back(start);
-    r.status = PlanStatus::Found;
-    return r;
-  }
-  if (m_count == 0) return r;  // no slice allows a grid move
-  const bool use_ring = !options.heap && ring_.reset(kBucketWidth, max_edge, h0);
-  open_.clear();
-  double best = CostField::kInfinity;
-  std::uint32_t reached = 0;
-  bool limit = false;
+  PlanResult r = run_.partial;
+  // A page no search has written yet costs its first touch (the kernel maps its memory: ~25 µs
+  // here, as much as ~250 pops), charged to the step's budget so that a first search through
+  // fresh memory takes more steps, not a longer one. Pages are handed out in order, so those
+  // below the high-water mark are resident.
+  const std::size_t resident = resident_pages_;
+  std::uint32_t charged = 0;
+  double best = run_.best;
+  std::uint32_t reached = run_.reached;
+  bool limit = run_.limit;
 
   auto relax = [&](int x, int y, int slot, double ng, std::uint8_t how) {
     const std::uint32_t cell = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
@@ -179,6 +245,7 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
         return;
       }
       te.stamp = gen_;
+      if (used_ >= resident) charged += kFirstTouchPops;
       te.page = static_cast<std::uint32_t>(used_++);
       origin[te.page] = PageOrigin{x & ~tmask, y & ~tmask};
       std::fill_n(meta + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
@@ -234,25 +301,37 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   };
 
   const int s0 = start.slice;
-  if (slot_of[s0] >= 0) {
-    relax(sx, sy, slot_of[s0], 0.0, kStartState);
-  } else {
-    // A pass-through start slice: seed the nearest move slices either way (at the start cell
-    // the body's own room is enough to turn).
-    int up = s0;
-    int n_up = 0;
-    do up = (up + 1) % k_count, ++n_up;
-    while (slot_of[up] < 0);
-    int down = s0;
-    int n_down = 0;
-    do down = (down + k_count - 1) % k_count, ++n_down;
-    while (slot_of[down] < 0);
-    if (arc_free(false, start_index, s0, n_up, +1))
-      relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
-    if (arc_free(false, start_index, s0, n_down, -1))
-      relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
+  if (!run_.seeded) {
+    run_.seeded = true;
+    if (slot_of[s0] >= 0) {
+      relax(sx, sy, slot_of[s0], 0.0, kStartState);
+    } else {
+      // A pass-through start slice: seed the nearest move slices either way (at the start cell
+      // the body's own room is enough to turn).
+      int up = s0;
+      int n_up = 0;
+      do up = (up + 1) % k_count, ++n_up;
+      while (slot_of[up] < 0);
+      int down = s0;
+      int n_down = 0;
+      do down = (down + k_count - 1) % k_count, ++n_down;
+      while (slot_of[down] < 0);
+      if (arc_free(false, start_index, s0, n_up, +1))
+        relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
+      if (arc_free(false, start_index, s0, n_down, -1))
+        relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
+    }
   }
-  while (!limit) {
+  for (std::uint32_t pops = 0; !limit; ++pops) {
+    if (pops >= max_pops || charged >= max_pops - pops) {
+      // The step's budget is spent: the search goes on at the next resume().
+      resident_pages_ = std::max(resident_pages_, used_);
+      run_.partial = r;
+      run_.best = best;
+      run_.reached = reached;
+      run_.limit = limit;
+      return false;
+    }
     std::uint32_t s;
     if (use_ring) {
       if (ring_.empty() || ring_.lower() >= best) break;
@@ -298,9 +377,18 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
       if (arc_free(grown, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
     }
   }
-  if (limit) return r.status = PlanStatus::SearchLimit, r;
+  run_.active = false;
+  resident_pages_ = std::max(resident_pages_, used_);
+  if (limit) {
+    r.status = PlanStatus::SearchLimit;
+    out = r;
+    return true;
+  }
   const bool found = best != CostField::kInfinity;
-  if (!found) return r;  // Unreachable
+  if (!found) {
+    out = r;  // Unreachable
+    return true;
+  }
 
   // Walk back from the goal state, listing every slice a turn passes.
   int orth = 0;
@@ -346,7 +434,8 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
   std::reverse(path_.begin(), path_.end());
   r.status = PlanStatus::Found;
   r.length = static_cast<double>(orth) + kSqrt2 * static_cast<double>(diag);
-  return r;
+  out = r;
+  return true;
 }
 
 }  // namespace robuter::plan

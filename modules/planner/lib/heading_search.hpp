@@ -75,6 +75,19 @@ class HeadingSearch {
                   const HeadingOptions& options, const CostModel& costs = {},
                   const CostField* heuristic = nullptr, const SliceBits* turn_room = nullptr);
 
+  // Why: the same search in steps, for a caller whose activation must stay short: begin() checks
+  // the ends and seeds nothing yet; it returns true when the outcome is already known (written
+  // to `out`: outside, blocked, unreachable by the relaxation, already there). Each resume()
+  // then pops at most `max_pops` states and returns true once the search has ended (`out` and
+  // path() as find() gives them). Between steps the slices, the heuristic and the turn room
+  // must hold still (the caller defers its map syncs); find() = begin() + one unbounded resume().
+  bool begin(std::span<const PassGrid* const> slices, CellPose start, Cell goal, const HeadingOptions& options,
+             const CostModel& costs, const CostField* heuristic, const SliceBits* turn_room, PlanResult& out);
+  bool resume(std::uint32_t max_pops, PlanResult& out);
+  bool pending() const { return run_.active; }
+  // Why: drop a search in steps (its grids are about to change).
+  void cancel() { run_.active = false; }
+
   // Start first; consecutive entries differ by one grid move or one slice step.
   const std::vector<CellPose>& path() const { return path_; }
   // Why: measurements and tests: pages (tiles) the last search took, and states per page.
@@ -93,6 +106,28 @@ class HeadingSearch {
     std::int32_t x;  // stored cells (grid x + 1)
     std::int32_t y;  // stored cells (grid y + 1)
   };
+
+  // One search's inputs (begin()) and its progress between resume() steps.
+  struct Run {
+    std::span<const PassGrid* const> slices;  // the slice grids (the caller's, kept alive)
+    CellPose start{};                         // cells, slice normalised
+    Cell goal{};                              // cells
+    HeadingOptions options{};                 // moves, turn cost
+    CostModel costs{};                        // class costs
+    const CostField* heuristic = nullptr;     // relaxation field, or null (octile)
+    const SliceBits* turn_room = nullptr;     // grown-body bits, or null
+    int m_count = 0;                          // move slots
+    bool use_ring = false;                    // open list: ring (else heap)
+    bool active = false;                      // begun, not yet ended
+    bool seeded = false;                      // the start's states are queued
+    PlanResult partial{};                     // expansions so far
+    double best = CostField::kInfinity;       // cells: best goal cost so far
+    std::uint32_t reached = 0;                // pool state of that goal
+    bool limit = false;                       // the pool ran out
+  };
+  Run run_;
+  static constexpr std::uint32_t kFirstTouchPops = 256;  // pops a never-written page counts for
+  std::size_t resident_pages_ = 0;  // pages some search has written (handed out in order)
 
   std::unique_ptr<double[]> g_;          // per pool state: cells, best cost from the start
   std::unique_ptr<std::uint8_t[]> meta_; // per pool state: parent (low 4 bits) | kSeen | kClosed

@@ -44,7 +44,7 @@ void Planner::set_map(const OccupancyMap& map) {
   field_changes_.clear();
   field_changes_.reserve(map_.cell_count());
   field_.reserve(w, h);
-  field_.cancel();
+  cancel_steps();
   field_ready_ = false;
   // Each footprint reserves only the search it uses (the rectangle never runs the 2D one).
   if (cfg_.footprint == FootprintKind::Rectangle) {
@@ -57,7 +57,7 @@ void Planner::set_map(const OccupancyMap& map) {
 }
 
 void Planner::sync() {
-  if (field_.pending()) return;  // prepare_step() under way: its grid must hold still
+  if (stepping()) return;  // prepare_step() or plan_step() under way: their grids hold still
   const auto changed = map_.changes();
   if (changed.empty()) return;
   const bool rect = cfg_.footprint == FootprintKind::Rectangle;
@@ -76,7 +76,7 @@ void Planner::sync() {
 void Planner::shift_map(int dx, int dy) {
   map_.shift(dx, dy);
   cspace_.reset(map_);  // same size: the table and marks are refilled, not reallocated
-  field_.cancel();
+  cancel_steps();
   field_ready_ = false;
   waypoints_.clear();
   rebuild_next_ = 0;
@@ -125,14 +125,20 @@ const PassGrid* Planner::field_grid(Cell g) const {
   return nullptr;
 }
 
-void Planner::prepare(Point2 goal) {
+void Planner::cancel_steps() {
   field_.cancel();
+  heading_search_.cancel();
+}
+
+void Planner::prepare(Point2 goal) {
+  cancel_steps();
   sync();
   const Cell g = map_.cell_of(goal);
   if (const PassGrid* grid = field_grid(g)) ensure_field(*grid, g);
 }
 
 bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
+  heading_search_.cancel();  // a field is asked for: any search under way is moot
   const Cell g = map_.cell_of(goal);
   if (field_.pending() && !(field_.goal() == g)) field_.cancel();  // a new goal: start again
   if (!field_.pending()) {
@@ -146,8 +152,51 @@ bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
   return field_ready_;
 }
 
-PlanResult Planner::plan(const Pose2& start, Point2 goal) {
+bool Planner::plan_step(const Pose2& start, Point2 goal, std::uint32_t max_pops, PlanResult& out) {
+  const Cell s = map_.cell_of({start.x, start.y});
+  const Cell g = map_.cell_of(goal);
+  if (heading_search_.pending()) {
+    const CellPose sp{s.x, s.y, slice_of_heading(start.heading, full_turn_slices())};
+    if (sp == step_start_ && g == step_goal_) {
+      if (!heading_search_.resume(max_pops, out)) return false;
+      if (out.found()) fill_waypoints_3d(heading_search_.path());
+      return true;
+    }
+    heading_search_.cancel();  // another start or goal: start again
+  }
+  if (cfg_.footprint != FootprintKind::Rectangle) {
+    out = plan(start, goal);
+    return true;
+  }
   field_.cancel();  // a field still in steps is made at once below, after the sync
+  sync();
+  waypoints_.clear();
+  const int k = slice_of_heading(start.heading, full_turn_slices());
+  const PassGrid& relax = relaxation_.grid();
+  const CostField* h = nullptr;
+  if (relax.contains(g)) {
+    ensure_field(relax, g);
+    h = &field_;
+  }
+  step_start_ = CellPose{s.x, s.y, k};
+  step_goal_ = g;
+  if (!heading_search_.begin(slice_grids_, step_start_, g, heading_options(), costs_, h,
+                             turn_layers_.empty() ? nullptr : &turn_room_, out) &&
+      !heading_search_.resume(max_pops, out))
+    return false;
+  if (out.found()) fill_waypoints_3d(heading_search_.path());
+  return true;
+}
+
+HeadingOptions Planner::heading_options() const {
+  HeadingOptions opt;
+  opt.motion = cfg_.motion;
+  opt.rotation_step_cost = cfg_.rotation_cost * (2.0 * kPi / full_turn_slices()) / map_.resolution();
+  return opt;
+}
+
+PlanResult Planner::plan(const Pose2& start, Point2 goal) {
+  cancel_steps();  // a field still in steps is made at once below, after the sync
   sync();
   waypoints_.clear();
   const Cell s = map_.cell_of({start.x, start.y});
@@ -174,10 +223,7 @@ PlanResult Planner::plan(const Pose2& start, Point2 goal) {
     ensure_field(relax, g);
     h = &field_;
   }
-  HeadingOptions opt;
-  opt.motion = cfg_.motion;
-  opt.rotation_step_cost = cfg_.rotation_cost * (2.0 * kPi / full_turn_slices()) / map_.resolution();
-  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, opt, costs_, h,
+  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, heading_options(), costs_, h,
                             turn_layers_.empty() ? nullptr : &turn_room_);
   if (r.found()) fill_waypoints_3d(heading_search_.path());
   return r;

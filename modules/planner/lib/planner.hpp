@@ -62,7 +62,7 @@ class Planner {
   const PlannerConfig& config() const { return cfg_; }
 
   // Why: fold the map's logged changes into the layers and the cost field (deferred while a
-  // prepare_step() is pending).
+  // prepare_step() or a plan_step() is under way).
   void sync();
 
   // Why: the window moves by whole cells (docs/PLANNER.md, "The window"): the map's counts move
@@ -92,6 +92,17 @@ class Planner {
   // PlanResult lengths and costs are in cells (multiply by resolution for metres).
   PlanResult plan(const Pose2& start, Point2 goal);
 
+  // Why: plan() in steps, for a caller whose activation must stay short: each call pops at most
+  // `max_pops` states of the (x, y, heading) search and returns true once the plan has ended
+  // (`out` then holds what plan() returns, and waypoints() the path). The first call folds the
+  // map's changes and needs the goal's field (prepare_step() first, or it is made at once);
+  // until the last, sync() defers (the layers must hold still under the search). A call with
+  // another start or goal starts again. The disc plans at once.
+  bool plan_step(const Pose2& start, Point2 goal, std::uint32_t max_pops, PlanResult& out);
+  // Why: drop a prepare_step() or plan_step() under way (the caller moved on); syncs resume.
+  void cancel_steps();
+  bool stepping() const { return field_.pending() || heading_search_.pending(); }
+
   const std::vector<Waypoint>& waypoints() const { return waypoints_; }
   // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
   const PassGrid& expanded(int slice = 0) const;
@@ -110,6 +121,7 @@ class Planner {
  private:
   void ensure_field(const PassGrid& grid, Cell goal);
   const PassGrid* field_grid(Cell goal) const;  // the grid the goal's field is on, or null
+  HeadingOptions heading_options() const;       // the rectangle search's options
   void fill_waypoints_2d(const std::vector<Cell>& cells);
   void fill_waypoints_3d(const std::vector<CellPose>& cells);
 
@@ -134,6 +146,8 @@ class Planner {
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
   int rebuild_next_ = -1;               // next layer to rebuild after shift_map (-1: none)
+  CellPose step_start_{};               // cells, slice: the start of a plan_step() search
+  Cell step_goal_{};                    // cells: its goal
 };
 
 }  // namespace robuter::plan
