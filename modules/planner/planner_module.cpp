@@ -23,6 +23,10 @@ constexpr std::uint64_t kSettleTicks = 20;         // ticks after the drive repo
 // C-space layers rebuilt per activation after the window moved (65 for the default rectangle:
 // 32 slices, 32 turn layers, the relaxation), so that no activation carries the whole rebuild.
 constexpr int kRebuildLayersPerRun = 3;
+// A motion paused this long by a protective stop is replanned (3 s: three times the envelope's
+// clear time), and after this many such replans in a row the navigation ends `blocked`.
+constexpr std::uint64_t kPausedReplanTicks = 300;
+constexpr std::uint32_t kPausedReplansMax = 5;
 
 // CPU time of the kernel thread, µs: what an activation costs, without the time other
 // processes of a shared machine took the CPU away (wall clock would count that too).
@@ -56,6 +60,7 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       selection_(bb.sonar_selection.reader()),
       pan_tilt_(bb.pan_tilt_scan.reader()),
       goal_in_(bb.planner_goal.reader()),
+      emergency_(bb.emergency.reader()),
       claim_(bb, MotionSource::planner),
       motion_out_(bb.planner_motion.writer()),
       status_out_(bb.planner_status.writer()),
@@ -196,6 +201,8 @@ void PlannerModule::serve_goal(std::uint64_t tick) {
   const PlannerGoal g = goal_in_.copy();
   goal_ = g;
   plans_ = scans_ = 0;
+  paused_replans_ = 0;
+  paused_since_ = 0;
   path_m_ = prefix_m_ = 0.0;
   prefix_len_ = leg_count_ = 0;
   final_turn_ = false;
@@ -347,6 +354,25 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
 }
 
 void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
+  // Our motion paused by a protective stop (obstacle evidence in the envelope; it resumes by
+  // itself once clear): if it stays paused, the evidence is not going away — stop, scan (the
+  // ring's readings go into the map as they do for any obstacle) and plan again; after
+  // kPausedReplansMax such replans with no prefix driven in between, give up: `blocked`.
+  const bool paused = emergency_.peek().protective && (last_left_ != 0 || last_right_ != 0);
+  if (!paused) {
+    paused_since_ = 0;
+  } else if (paused_since_ == 0) {
+    paused_since_ = tick;
+  } else if (tick - paused_since_ >= kPausedReplanTicks) {
+    paused_since_ = 0;
+    if (++paused_replans_ > kPausedReplansMax) {
+      log::warn("planner: the envelope kept stopping the robot ({} replans): giving up", kPausedReplansMax);
+      return finish(tick, PlannerState::blocked, true);
+    }
+    log::info("planner: motion paused by obstacle evidence for {} s, stopping to scan and replan",
+              kPausedReplanTicks / 100);
+    return begin_scan(tick);
+  }
   // New obstacles on what is left to drive (or where a turn is to happen): stop, scan, replan.
   // A turn in place under way is finished first, so that the robot stops at a heading the
   // search can start from (a slice that carries moves), not half-way between two.
@@ -364,6 +390,7 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
     if (add_final_turn(pose)) return request(tick, 0, 0);
     return finish(tick, PlannerState::reached, true);
   }
+  paused_replans_ = 0;  // a whole prefix driven: progress
   begin_scan(tick);
 }
 

@@ -100,6 +100,7 @@ class PlannerModule final : public Process {
   Reader<SonarSelection> selection_;
   Reader<PanTiltScan> pan_tilt_;         // the pan-tilt's sectors: more beams for the map
   Reader<PlannerGoal> goal_in_;
+  Reader<EmergencyState> emergency_;     // a protective stop pausing our motion (replan after a while)
   MotionClaim claim_;                    // runs handed by the arbiter (XG), and their end
   Writer<MotionRequest> motion_out_;
   Writer<PlannerStatus> status_out_;
@@ -125,6 +126,8 @@ class PlannerModule final : public Process {
   double last_theta_ = 0.0;                // rad, wrapped heading of the previous activation
   bool have_heading_ = false;
   std::uint32_t plans_ = 0, scans_ = 0;    // for this goal
+  std::uint64_t paused_since_ = 0;         // tick our motion was first seen paused by a protective stop (0: not)
+  std::uint32_t paused_replans_ = 0;       // replans in a row after such pauses, with no prefix driven since
   std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search (all its steps)
   std::uint32_t run_us_max_ = 0;           // µs, thread CPU time: the longest activation
   std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)

@@ -44,6 +44,35 @@ Config lab_config() {
   return cfg;
 }
 
+// Why: with the simulator's sonar noise, obstacle evidence the ring can never clear again (seed 1:
+// 11 m into the run, a turn paused by a protective stop) left the planner `moving` for ever, the
+// robot still (600 s simulated, before). A motion paused 3 s is replanned, and after 5 such
+// replans with no progress the navigation ends `blocked`: it always ends, and never in contact.
+TEST(PlannerSim, WithSonarNoiseANavigationAlwaysEnds) {
+  Config cfg = lab_config();
+  cfg.emergency.comm_limit_ticks = 100'000;  // the test's link is silent: only the planner ends the run
+  hal::SimOptions sim;
+  sim.sonar_noise = true;
+  sim.seed = 1;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg, sim, false, "");
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  const test::NavRecord r = test::run_navigation(fw, 40'000, 15.0, 5.5, "seed000-noise");
+  std::printf("seed000 lab, sonar noise seed 1: state %d, %u plans, %.1f s simulated, %.2f m driven, min clearance %.3f m\n",
+              static_cast<int>(r.state), r.plans, r.seconds, r.travelled, r.min_clearance);
+  EXPECT_TRUE(r.state == PlannerState::reached || r.state == PlannerState::blocked) << static_cast<int>(r.state);
+  EXPECT_LT(r.seconds, 400.0);
+  EXPECT_FALSE(r.bumper);
+  EXPECT_GT(r.min_clearance, 0.0);
+  if (r.state == PlannerState::blocked) {
+    const auto xp = fw.ask("XP");
+    ASSERT_TRUE(xp);
+    EXPECT_NE(xp->find("blocked"), std::string::npos) << *xp;
+  }
+}
+
 // (a) From (2.5, 2.0) to (15.0, 5.5) with nothing known: the robot scans, plans, follows what it
 // can see, and replans until it arrives, never touching anything and never tripping the gate.
 // ROBUTER_SONAR_NOISE_SEED=N (by hand) turns the simulator's sonar noise on with seed N.
