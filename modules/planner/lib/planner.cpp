@@ -197,35 +197,26 @@ HeadingOptions Planner::heading_options() const {
 
 PlanResult Planner::plan(const Pose2& start, Point2 goal) {
   cancel_steps();  // a field still in steps is made at once below, after the sync
+  PlanResult r;
+  if (cfg_.footprint == FootprintKind::Rectangle) {
+    plan_step(start, goal, ~std::uint32_t{0}, r);  // nothing under way: one unbounded step
+    return r;
+  }
   sync();
   waypoints_.clear();
   const Cell s = map_.cell_of({start.x, start.y});
   const Cell g = map_.cell_of(goal);
-  PlanResult r;
-  if (cfg_.footprint == FootprintKind::Disc) {
-    const PassGrid& grid = layers_[0].grid();
-    if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && grid.contains(g)) {
-      const bool fresh = !(field_ready_ && field_.goal() == g);
-      ensure_field(grid, g);
-      r = field_.path_from(s, cells_);
-      r.expanded = fresh ? field_.last_settled() : 0;
-    } else {
-      r = grid_search_.find(grid, s, g, cfg_.mode, costs_);
-      cells_.assign(grid_search_.path().begin(), grid_search_.path().end());
-    }
-    if (r.found()) fill_waypoints_2d(cells_);
-    return r;
+  const PassGrid& grid = layers_[0].grid();  // the disc's one layer
+  if (cfg_.mode == SearchMode::Optimal && cfg_.incremental && grid.contains(g)) {
+    const bool fresh = !(field_ready_ && field_.goal() == g);
+    ensure_field(grid, g);
+    r = field_.path_from(s, cells_);
+    r.expanded = fresh ? field_.last_settled() : 0;
+  } else {
+    r = grid_search_.find(grid, s, g, cfg_.mode, costs_);
+    cells_.assign(grid_search_.path().begin(), grid_search_.path().end());
   }
-  const int k = slice_of_heading(start.heading, full_turn_slices());
-  const PassGrid& relax = relaxation_.grid();
-  const CostField* h = nullptr;
-  if (relax.contains(g)) {
-    ensure_field(relax, g);
-    h = &field_;
-  }
-  r = heading_search_.find(slice_grids_, CellPose{s.x, s.y, k}, g, heading_options(), costs_, h,
-                            turn_layers_.empty() ? nullptr : &turn_room_);
-  if (r.found()) fill_waypoints_3d(heading_search_.path());
+  if (r.found()) fill_waypoints_2d(cells_);
   return r;
 }
 
