@@ -36,6 +36,13 @@ constexpr std::uint8_t kSeedUp = 10;      // turned up from a pass-through start
 constexpr std::uint8_t kSeedDown = 11;    // turned down from a pass-through start slice
 constexpr std::uint8_t kStartState = 15;  // the start itself
 
+// Why: the search's heuristic at a stored cell (x, y) of index `cell`: the relaxation field when
+// there is one, else the octile distance to the goal (grid cell `goal`, stored at goal + 1).
+double heuristic_at(const CostField* field, Cell goal, int x, int y, std::uint32_t cell) {
+  if (field) return field->cost_at(cell);
+  return octile(x - (goal.x + 1), y - (goal.y + 1));
+}
+
 // Why: pages hold a power of two of move slots, so a state's slot is a shift away.
 int log2_ceil(std::size_t n) {
   int b = 0;
@@ -131,13 +138,7 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   }
   page_shift_ = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
   pages_ = budget_ >> page_shift_;
-  const int tx = goal.x + 1;
-  const int ty = goal.y + 1;
   const std::uint32_t t = g0.index(goal);
-  auto h_of = [&](int x, int y, std::uint32_t cell) -> double {
-    if (heuristic) return heuristic->cost_at(cell);
-    return octile(x - tx, y - ty);
-  };
   const double turn = std::max(options.rotation_step_cost, 0.0);
 
   // Open list: the bucket ring when edge costs are bounded enough, else the heap (see
@@ -149,7 +150,7 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   const int sx = sc.x + 1;
   const int sy = sc.y + 1;
   const std::uint32_t start_index = g0.index(sc);
-  const double h0 = h_of(sx, sy, start_index);
+  const double h0 = heuristic_at(heuristic, goal, sx, sy, start_index);
   if (h0 == CostField::kInfinity) return done(PlanStatus::Unreachable);  // the relaxation says so
   if (start_index == t) {  // already there, at the start heading
     path_.push_back(start);
@@ -198,13 +199,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   const bool own_turns = turn_room != nullptr && turn_room->slices == k_count;
   const int shift = page_shift_;
   const std::uint32_t local_mask = (std::uint32_t{1} << shift) - 1;
-  const int tx = goal.x + 1;
-  const int ty = goal.y + 1;
   const std::uint32_t t = g0.index(goal);
-  auto h_of = [&](int x, int y, std::uint32_t cell) -> double {
-    if (heuristic) return heuristic->cost_at(cell);
-    return octile(x - tx, y - ty);
-  };
+  auto h_of = [&](int x, int y, std::uint32_t cell) { return heuristic_at(heuristic, goal, x, y, cell); };
   const double turn = std::max(options.rotation_step_cost, 0.0);
   double* g = g_.get();
   std::uint8_t* meta = meta_.get();
