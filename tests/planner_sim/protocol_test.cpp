@@ -140,5 +140,54 @@ TEST(PlannerSimProtocol, MapWindowAndHalt) {
   EXPECT_EQ(xp->rfind("P cancelled 20000 0 ", 0), 0u) << *xp;
 }
 
+// A plan is made in steps, one per activation (docs/PLANNER.md, "The module"): the operator's
+// command, XH or a new goal in the middle of the steps drops them; the plan that follows is the
+// newest goal's, and nothing of the dropped one drives the robot.
+TEST(PlannerSimProtocol, APlanInStepsIsDroppedWhenTheOperatorOrANewGoalTakesOver) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  PlannerModule* pm = test::planner_of(fw);
+  ASSERT_NE(pm, nullptr);
+  const auto in_steps = [&] { return pm->state() == PlannerState::planning && pm->planner().stepping(); };
+  const auto at_rest = [&] {
+    const Posture& p = fw.bb().posture.reader().peek();
+    return p.left == 0 && p.right == 0;
+  };
+
+  // The operator: AM 0 0 ends the navigation in the middle of its cost field.
+  ASSERT_EQ(fw.ask("XG 20000 0"), "ack");
+  ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
+  ASSERT_EQ(fw.ask("AM 0 0"), "ack");
+  fw.run_ticks(1);
+  EXPECT_EQ(pm->state(), PlannerState::operator_ended);
+  EXPECT_FALSE(pm->planner().stepping());
+  for (int i = 0; i < 200; ++i) {
+    fw.step();
+    ASSERT_TRUE(at_rest()) << "tick " << i << " after the operator's AM 0 0";
+  }
+
+  // XH in the middle of the steps: cancelled, the steps dropped.
+  ASSERT_EQ(fw.ask("XG 0 15000"), "ack");
+  ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
+  ASSERT_EQ(fw.ask("XH"), "ack");
+  fw.run_ticks(1);
+  EXPECT_EQ(pm->state(), PlannerState::cancelled);
+  EXPECT_FALSE(pm->planner().stepping());
+
+  // A new goal in the middle of the steps: the plan made is the new goal's.
+  ASSERT_EQ(fw.ask("XG 20000 0"), "ack");
+  ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
+  ASSERT_EQ(fw.ask("XG -15000 0"), "ack");
+  ASSERT_TRUE(fw.run_until([&] { return pm->state() != PlannerState::scanning && pm->state() != PlannerState::planning; },
+                           3000))
+      << *fw.ask("XP");
+  EXPECT_EQ(pm->state(), PlannerState::moving) << *fw.ask("XP");
+  const auto& path = pm->planner().waypoints();
+  ASSERT_FALSE(path.empty());
+  EXPECT_NEAR(path.back().pose.x, -1.5, 0.1);
+  EXPECT_NEAR(path.back().pose.y, 0.0, 0.1);
+  EXPECT_EQ(fw.ask("XH"), "ack");
+}
+
 }  // namespace
 }  // namespace robuter
