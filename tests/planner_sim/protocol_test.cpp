@@ -158,8 +158,7 @@ TEST(PlannerSimProtocol, APlanInStepsIsDroppedWhenTheOperatorOrANewGoalTakesOver
   ASSERT_EQ(fw.ask("XG 20000 0"), "ack");
   ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
   ASSERT_EQ(fw.ask("AM 0 0"), "ack");
-  fw.run_ticks(1);
-  EXPECT_EQ(pm->state(), PlannerState::operator_ended);
+  EXPECT_TRUE(fw.run_until([&] { return pm->state() == PlannerState::operator_ended; }, 10));  // its next activation
   EXPECT_FALSE(pm->planner().stepping());
   for (int i = 0; i < 200; ++i) {
     fw.step();
@@ -167,25 +166,24 @@ TEST(PlannerSimProtocol, APlanInStepsIsDroppedWhenTheOperatorOrANewGoalTakesOver
   }
 
   // XH in the middle of the steps: cancelled, the steps dropped.
-  ASSERT_EQ(fw.ask("XG 0 15000"), "ack");
+  ASSERT_EQ(fw.ask("XG 10000 10000"), "ack");
   ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
   ASSERT_EQ(fw.ask("XH"), "ack");
-  fw.run_ticks(1);
-  EXPECT_EQ(pm->state(), PlannerState::cancelled);
+  EXPECT_TRUE(fw.run_until([&] { return pm->state() == PlannerState::cancelled; }, 10));  // its next activation
   EXPECT_FALSE(pm->planner().stepping());
 
   // A new goal in the middle of the steps: the plan made is the new goal's.
   ASSERT_EQ(fw.ask("XG 20000 0"), "ack");
   ASSERT_TRUE(fw.run_until(in_steps, 3000)) << *fw.ask("XP");
-  ASSERT_EQ(fw.ask("XG -15000 0"), "ack");
+  ASSERT_EQ(fw.ask("XG 0 15000"), "ack");
   ASSERT_TRUE(fw.run_until([&] { return pm->state() != PlannerState::scanning && pm->state() != PlannerState::planning; },
                            3000))
       << *fw.ask("XP");
   EXPECT_EQ(pm->state(), PlannerState::moving) << *fw.ask("XP");
   const auto& path = pm->planner().waypoints();
   ASSERT_FALSE(path.empty());
-  EXPECT_NEAR(path.back().pose.x, -1.5, 0.1);
-  EXPECT_NEAR(path.back().pose.y, 0.0, 0.1);
+  EXPECT_NEAR(path.back().pose.x, 0.0, 0.1);
+  EXPECT_NEAR(path.back().pose.y, 1.5, 0.1);
   EXPECT_EQ(fw.ask("XH"), "ack");
 }
 
