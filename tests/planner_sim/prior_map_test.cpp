@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "modules/planner/lib/map_file.hpp"
 #include "tests/planner_sim/nav_harness.hpp"
@@ -54,6 +55,43 @@ TEST(PlannerSimPriorMap, TheFirmwarePlansThroughThe90cmDoorOfTheDefaultWorldWith
   }
   EXPECT_TRUE(through);
   EXPECT_GT(w.size(), 50u);
+}
+
+// (1b) On the way to that door the ring's echoes from its jambs go to the jambs' cells: a jamb's
+// corner met by the arc of an oblique sensor lies on a cell boundary, and a hit put in the free
+// cell beside it (the arc looked at a cell apart) made the 90 cm door 5 cm narrower, too narrow
+// for the body (the second replan was `unreachable`). Every cell of the doorway stays unoccupied
+// until the robot's front reaches the door, and so do the cells 10 cm before and after it.
+TEST(PlannerSimPriorMap, TheRingsEchoesFromTheJambsDoNotCloseTheDoor) {
+  Config cfg;
+  cfg.planner.map_file = kDefaultWorldMap;
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/default.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  PlannerModule* planner = test::planner_of(fw);
+  ASSERT_NE(planner, nullptr);
+  const plan::OccupancyMap& map = planner->planner().map();
+  std::vector<plan::Cell> doorway;  // centres in the partition (x 4.45-4.55 m) and 10 cm either side, between the jambs (y 2.55-3.45 m)
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x) {
+      const plan::Point2 c = map.center({x, y});
+      if (c.x > 4.35 && c.x < 4.65 && c.y > 2.55 && c.y < 3.45) doorway.push_back({x, y});
+    }
+  ASSERT_EQ(doorway.size(), 6u * 18u);
+  for (const plan::Cell& c : doorway) ASSERT_NE(map.state(c), plan::CellState::Occupied) << c.x << " " << c.y;
+  ASSERT_EQ(fw.ask("AC 15000 15000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 56000 30000"), "ack");
+  const auto& robot = fw.sim().robot();
+  bool at_door = false;
+  for (int i = 0; i < 6'000 && !at_door; ++i) {
+    fw.step();
+    at_door = robot.pose().x > 3.7;  // the front face (0.695 m ahead of the axle) 5 cm from the partition
+    for (const plan::Cell& c : doorway)
+      ASSERT_NE(map.state(c), plan::CellState::Occupied) << "tick " << i << ": doorway cell at (" << map.center(c).x
+                                                         << ", " << map.center(c).y << ") m marked";
+    ASSERT_NE(planner->state(), PlannerState::unreachable) << "tick " << i;
+  }
+  EXPECT_TRUE(at_door) << "axle at (" << robot.pose().x << ", " << robot.pose().y << ") m";
 }
 
 // Runs robuterd, returns its exit status and what it printed (stdout and stderr).
