@@ -5,7 +5,10 @@ drives and ultrasonic nodes as their own process) on a Unix-socket bus, robuterd
 ([can] interface = "unix:PATH"). The robot drives; `kill -9` of robuterd: both drives quick-stop
 and stand still within their consumer heartbeat time (measured by the node process on its own
 clock); a new robuterd brings them back; SIGSEGV in a driving robuterd: the fatal handler's quick
-stop reaches the drives at once, before their watchdog would. Waits are liveness bounds only."""
+stop reaches the drives at once, before their watchdog would. Then the node process's script
+(--script, lines on its stdin; make test-vm drives it the same way): the ranges it answers reach
+BU, a bad line is refused and changes nothing, a silenced drive's heartbeat makes XE say
+heartbeat-lost. Waits are liveness bounds only."""
 import os
 import re
 import select
@@ -118,7 +121,27 @@ def drive(fd):
     return True
 
 
-nodes = subprocess.Popen([nodes_tool, "--bus", f"unix:{bus}"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+nodes = subprocess.Popen([nodes_tool, "--bus", f"unix:{bus}", "--script"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+
+
+def script(line):
+    """One line of the node process's script; its reply."""
+    nodes.stdin.write(line.encode() + b"\n")
+    nodes.stdin.flush()
+    m = out.wait_for(rf"robuter-can-nodes: {re.escape(line)}: (.*)", 5)
+    return m.group(1) if m else None
+
+
+def bu_values(fd):
+    m = re.fullmatch(r"U ((?:\d+ ){24})[01] \d+", ask(fd, "BU") or "")
+    return [int(v) for v in m.group(1).split()] if m else None
+
+
+def xe_cause(fd):
+    m = re.fullmatch(r"E \d \d (\S+) .*", ask(fd, "XE") or "")
+    return m.group(1) if m else None
+
 out = Lines(nodes.stdout.fileno())
 proc = None
 try:
@@ -162,6 +185,31 @@ try:
           rc == -signal.SIGSEGV and len(qs) == 2 and all(v < WATCHDOG_MS for v in qs.values())
           and "fatal signal SIGSEGV: drives sent quick stop" in log,
           f"rc {rc}, quick stop {qs} ms after the last heartbeat, lines before: {early}")
+
+    # The script: ranges, a refused line, a silenced drive.
+    proc, fd = start_robuterd()
+    check("a third robuterd drives them", drive(fd))
+    check("script: range 700 acknowledged", script("range 700") == "ok")
+    seen = None
+    for _ in range(50):
+        seen = bu_values(fd)
+        if seen and any(abs(v - 700) <= 30 for v in seen):
+            break
+        time.sleep(0.1)
+    check("BU reports the 700 mm the nodes answer", seen and any(abs(v - 700) <= 30 for v in seen), f"BU {seen}")
+    check("script: a bad line is refused", (script("range 25 1") or "").startswith("error"))
+    check("script: an unknown word is refused", (script("busy left") or "").startswith("error"))
+    check("the refused lines changed nothing: XE none", xe_cause(fd) == "none", ask(fd, "XE"))
+    check("script: silent left 1 acknowledged", script("silent left 1") == "ok")
+    cause = None
+    for _ in range(50):
+        cause = xe_cause(fd)
+        if cause not in (None, "none"):
+            break
+        time.sleep(0.1)
+    check("a silenced drive: XE cause heartbeat-lost", cause == "heartbeat-lost", f"XE cause {cause}")
+    check("script: quit", script("quit") == "ok")
+    check("the node process ends on quit", nodes.wait(timeout=10) == 0)
 finally:
     if proc and proc.poll() is None:
         proc.kill()

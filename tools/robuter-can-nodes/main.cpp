@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <time.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "hal/linux/can/sim_nodes.hpp"
 #include "hal/linux/can/socketcan_transport.hpp"
 #include "hal/linux/can/unix_transport.hpp"
+#include "tools/robuter-can-nodes/node_commands.hpp"
 #include "tools/robuter-can-nodes/node_report.hpp"
 
 namespace {
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   unsigned left = 1, right = 2, sonar_base = 16, step_ms = 2;
   double accel = 1e6, seconds = 0.0;
   bool no_sonar = false;
+  bool script = false;
   app.add_option("--bus", bus_name, "unix:/path (robuterd's [can] interface = \"unix:/path\") or a SocketCAN interface (vcan0)")
       ->required();
   app.add_option("--left", left, "node id of the left drive (default 1)");
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-sonar", no_sonar, "no ultrasonic nodes");
   app.add_option("--accel", accel, "drive acceleration and quick-stop deceleration, increments/s² (default 1e6)");
   app.add_option("--step-ms", step_ms, "the nodes' time step, ms (default 2)")->check(CLI::Range(1u, 100u));
+  app.add_flag("--script", script, "read commands from standard input: range, silent, fault, reboot, busoff (docs/CAN.md)");
   app.add_option("--seconds", seconds, "stop after this long (default: until SIGINT/SIGTERM)");
   if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   if (left < 1 || left > 127 || right < 1 || right > 127 || left == right || sonar_base < 1 || sonar_base > 120) {
@@ -77,12 +81,19 @@ int main(int argc, char** argv) {
   else std::printf(", ultrasonic nodes %u..%u\n", sonar_base, sonar_base + 5);
   std::fflush(stdout);
 
+  std::unique_ptr<robuter::tools::NodeCommands> commands;
+  if (script) {
+    robuter::tools::ScriptedNodes scripted{&left_drive, &right_drive, {}, wire.get()};
+    for (auto& s : sonars) scripted.sonars.push_back(s.get());
+    commands = std::make_unique<robuter::tools::NodeCommands>(STDIN_FILENO, scripted, stdout);
+  }
   const std::int64_t t0 = monotonic_us();
   std::int64_t next = t0;
   std::int64_t last_flush = 0;  // µs, the tool's clock
   while (!g_stop) {
     const std::int64_t now = monotonic_us() - t0;
     if (seconds > 0.0 && static_cast<double>(now) >= seconds * 1e6) break;
+    if (commands && !commands->poll(now)) break;
     can_frame f;
     while (wire->receive(f)) bridge.send(f);
     left_drive.step(now);
