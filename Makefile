@@ -21,6 +21,13 @@ endif
 CROSS_TRIPLET := $(or $(CROSS),aarch64-linux-gnu)
 CROSS_BUILD   := build-$(CROSS_TRIPLET)
 CROSS_CMAKE   := -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/toolchains/$(CROSS_TRIPLET).cmake -DROBUTER_BENCH=OFF
+# armhf compiles against an extracted armhf root, not multiarch (tools/deps/cross.sh says why).
+ARMHF_SYSROOT ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/robuterd-armhf-root
+ifeq ($(CROSS_TRIPLET),arm-linux-gnueabihf)
+CROSS_CMAKE   := -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/toolchains/arm-linux-gnueabihf-sysroot.cmake \
+                 -DROBUTER_SYSROOT=$(ARMHF_SYSROOT) -DROBUTER_BENCH=OFF
+export ROBUTER_ARMHF_SYSROOT := $(ARMHF_SYSROOT)
+endif
 ifneq ($(CROSS),)
 BUILD := $(CROSS_BUILD)
 endif
@@ -91,12 +98,18 @@ install: build
 
 # The Debian package, built with debhelper from a copy of the tree (tests off); the .deb goes to
 # $(DEB_DIR)/robuterd_<version>_<arch>.deb.
-DEB_DIR ?= build-deb
+# ARCH=arm64 cross-builds it (dpkg-buildpackage -a arm64, the toolchain and arm64 libraries of
+# `make CROSS=arm64` first) into build-deb-arm64.
+NATIVE_ARCH := $(shell dpkg --print-architecture)
+ARCH ?= $(NATIVE_ARCH)
+DEB_CROSS := $(filter-out $(NATIVE_ARCH),$(ARCH))
+DEB_DIR ?= build-deb$(if $(DEB_CROSS),-$(ARCH))
 deb:
 	@tools/deps/ensure.sh tools/deps/debian-packages.txt tools/deps/package-packages.txt
+	$(if $(DEB_CROSS),tools/deps/cross.sh $(if $(filter arm64,$(ARCH)),aarch64-linux-gnu,$(ARCH)))
 	rm -rf $(DEB_DIR) && mkdir -p $(DEB_DIR)/src
 	git ls-files -co --exclude-standard -z | tar --null --ignore-failed-read -T - -cf - | tar -xf - -C $(DEB_DIR)/src
-	cd $(DEB_DIR)/src && DEB_BUILD_OPTIONS="nocheck parallel=$(JOBS)" dpkg-buildpackage -b -us -uc
+	cd $(DEB_DIR)/src && DEB_BUILD_OPTIONS="nocheck parallel=$(JOBS)" dpkg-buildpackage -b -us -uc $(if $(DEB_CROSS),-a $(ARCH))
 	@ls -l $(DEB_DIR)/*.deb
 
 # Installs the package on this machine (root), checks it and starts its service as systemd
@@ -108,8 +121,9 @@ test-package: deb
 # The package on real Linux (stays out of `make test`): a Debian 12 guest built once with mmdebstrap
 # and cached in ~/.cache/robuterd-vm boots under QEMU (TCG; KVM where a probe shows it boots), installs
 # the .deb and checks robuterd under systemd on a real kernel's SocketCAN (docs/INSTALL.md).
+# ARCH=arm64: the arm64 package in an arm64 guest (qemu-system-aarch64, TCG).
 test-vm: deb
-	@tools/deps/ensure.sh tools/deps/vm-packages.txt
+	@tools/deps/ensure.sh tools/deps/vm-packages.txt $(if $(DEB_CROSS),tools/deps/vm-arm64-packages.txt)
 	tools/vm/run.sh $$(ls $(DEB_DIR)/robuterd_*.deb | grep -v dbgsym)
 
 clean:

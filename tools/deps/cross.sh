@@ -12,6 +12,17 @@ case "$triplet" in
 esac
 
 # The target architecture must be known to dpkg before its packages can be installed.
+# armhf: not multiarch (the mirror's armhf security index has been inconsistent): the cross
+# compiler, qemu-user and mmdebstrap from the host's architecture, and an extracted armhf root as
+# the sysroot (cmake/toolchains/arm-linux-gnueabihf-sysroot.cmake, tools/deps/armhf-sysroot.sh).
+if [[ "$arch" == armhf ]]; then
+  list=$(mktemp)
+  trap 'rm -f "$list"' EXIT
+  printf '%s\n' g++-arm-linux-gnueabihf qemu-user-static mmdebstrap pkg-config cmake ninja-build > "$list"
+  "$here/ensure.sh" "$list"
+  exec "$here/armhf-sysroot.sh" "${ROBUTER_ARMHF_SYSROOT:-${XDG_CACHE_HOME:-$HOME/.cache}/robuterd-armhf-root}"
+fi
+
 if ! dpkg --print-foreign-architectures | grep -qx "$arch"; then
   if [[ $(id -u) -ne 0 ]]; then
     echo "cross: run as root:  dpkg --add-architecture $arch && apt-get update" >&2
