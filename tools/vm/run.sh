@@ -4,12 +4,20 @@
 # QEMU with the .deb on a second disk; the guest installs it, brings vcan0 up, runs the simulated
 # CAN nodes and checks robuterd under systemd (tools/vm/guest/guest-checks.py). Prints every
 # check, the figures, and a last line "N passed, N failed".
-# Usage: tools/vm/run.sh DEB   (ROBUTER_VM_ACCEL=auto|tcg|kvm, ROBUTER_VM_CACHE=DIR)
+# Usage: tools/vm/run.sh DEB   (the guest's architecture is the package's: amd64 or arm64;
+#        ROBUTER_VM_ACCEL=auto|tcg|kvm, ROBUTER_VM_CACHE=DIR, ROBUTER_VM_TIMEOUT=s, ROBUTER_VM_VERBOSE=1)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 deb="$(realpath "$1")"
+arch="$(dpkg-deb -f "$deb" Architecture)"
 accel="${ROBUTER_VM_ACCEL:-auto}"
-timeout_s="${ROBUTER_VM_TIMEOUT:-900}"
+case "$arch" in
+  amd64) qemu=(qemu-system-x86_64) console=ttyS0 ;;
+  arm64) qemu=(qemu-system-aarch64 -M virt) console=ttyAMA0
+         [[ "$arch" == "$(dpkg --print-architecture)" ]] || accel=tcg ;;  # a foreign guest: emulated
+  *) echo "test-vm: a package for amd64 or arm64, not '$arch'"; echo "0 passed, 1 failed"; exit 1 ;;
+esac
+timeout_s="${ROBUTER_VM_TIMEOUT:-$([[ $accel == tcg && $arch != "$(dpkg --print-architecture)" ]] && echo 2400 || echo 900)}"
 work="$(mktemp -d /tmp/robuter-vm.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 
@@ -18,7 +26,8 @@ now() { date +%s.%N; }
 since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
 
 t=$(now)
-img="$("$here/image.sh" "${ROBUTER_VM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/robuterd-vm}" | tail -1)" || fail "the image was not built"
+img="$("$here/image.sh" "${ROBUTER_VM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/robuterd-vm}" "$arch" | tail -1)" ||
+  fail "the $arch image was not built"
 echo "figure image (build, or the cache's check): $(since "$t") s$( [[ -f "$img/build-seconds" ]] && echo "; first build took $(cat "$img/build-seconds") s")"
 
 # The payload disk: the package and the guest's scripts.
@@ -37,8 +46,8 @@ if [[ "$accel" == auto && -f "$probe_file" ]]; then
 elif [[ "$accel" == auto ]]; then
   accel=tcg
   if [[ -r /dev/kvm && -w /dev/kvm ]]; then
-    timeout 20 qemu-system-x86_64 -accel kvm -cpu host -m 512 -display none -monitor none -no-reboot \
-      -serial "file:$work/probe.log" -kernel "$img/vmlinuz" -append "console=ttyS0 panic=-1 root=/dev/null" \
+    timeout 20 "${qemu[@]}" -accel kvm -cpu host -m 512 -display none -monitor none -no-reboot \
+      -serial "file:$work/probe.log" -kernel "$img/vmlinuz" -append "console=$console panic=-1 root=/dev/null" \
       >/dev/null 2>&1 || true
     grep -q "Linux version" "$work/probe.log" 2>/dev/null && accel=kvm
   fi
@@ -52,9 +61,10 @@ case "$accel" in
 esac
 
 t=$(now)
-timeout "$timeout_s" qemu-system-x86_64 "${cpu[@]}" -m 1024 -smp 2 -display none -monitor none -no-reboot \
+echo "test-vm: $arch guest, $accel"
+timeout "$timeout_s" "${qemu[@]}" "${cpu[@]}" -m 1024 -smp 2 -display none -monitor none -no-reboot \
   -serial stdio -kernel "$img/vmlinuz" -initrd "$img/initrd.img" \
-  -append "root=/dev/vda rw console=ttyS0 quiet loglevel=3 systemd.show_status=0 panic=-1" \
+  -append "root=/dev/vda rw console=$console quiet loglevel=3 systemd.show_status=0 panic=-1" \
   -drive "file=$work/root.qcow2,if=virtio,format=qcow2" -drive "file=$work/payload.img,if=virtio,format=raw,readonly=on" \
   -nic none </dev/null | while IFS= read -r line; do
     line="${line%$'\r'}"
