@@ -34,6 +34,10 @@ Config door_config() {
 // first plan is already `unreachable` for this goal (1.0 s, closest 500 mm), though the same
 // walls rasterised on PlannerSimDoor's grid give 6.40 m: the faces lie on cell boundaries and the
 // tool's map rounds them into the neighbouring cells (935 cells differ; docs/PLANNER.md).
+// With the default window and goal (5.6, 3.0) instead (2026-12-02, docs/SAFETY.md §13 "What the
+// envelope does not do"): the plan goes through the door, the robot reaches it, and the envelope
+// holds it there — echo arcs from the jamb corners leave evidence inside the opening that no cone
+// can contradict from the blind near field.
 TEST(EnvelopeDoor, DISABLED_XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArrivesWithoutATrip) {
   Config dc = door_config();
   if (const char* r = std::getenv("ROBUTER_EMERGENCY_RULE")) dc.emergency.rule = r;
