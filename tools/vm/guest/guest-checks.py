@@ -123,6 +123,9 @@ rc, out = sh(f"dpkg -i {debs[0]}", timeout=300)
 if not check(rc == 0, f"dpkg -i {os.path.basename(debs[0])} ({time.monotonic() - t0:.1f} s)"):
     print(out)
     finish()
+if not check(os.access("/usr/bin/robuterd", os.X_OK) and os.access("/usr/bin/robuter-can-nodes", os.X_OK),
+             "the package holds /usr/bin/robuterd and /usr/bin/robuter-can-nodes"):
+    finish()
 rc, out = sh("systemctl is-active robuterd")
 check(out == "active", f"the package's service runs the simulated robot after installation: {out}")
 rc, out = sh("modprobe vcan && ip link add dev vcan0 type vcan && ip link set up vcan0 && ip -details link show vcan0")
