@@ -74,7 +74,7 @@ timeout "$timeout_s" "${qemu[@]}" "${cpu[@]}" -m 1024 -smp 2 -display none -moni
       *) [[ -n "${ROBUTER_VM_VERBOSE:-}" ]] && echo "  | $line" ;;
     esac
     true
-  done | tee "$work/out.log"
+  done | tee "$work/out.log" || true  # a timeout or a crash: the summary check below says so
 echo "figure whole VM run (boot, checks, power-off): $(since "$t") s"
 summary="$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$work/out.log" | tail -1)" ||
   fail "the guest never reported (timeout ${timeout_s} s or a crash; ROBUTER_VM_VERBOSE=1 shows its console)"
