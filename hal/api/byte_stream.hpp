@@ -13,6 +13,7 @@ enum class ClientEvent : std::uint8_t {
   none,           // nothing new
   session_start,  // a client opened it while none held it: a fresh session begins
   session_end,    // its last client closed it: serve what that client wrote, then end the session
+  shared,         // a second program opened it while a client held it: both read the replies
 };
 
 // Result of a read or write: bytes moved, or what stopped it.

@@ -178,6 +178,7 @@ ClientEvent PtyLink::next_client_event() {
         make_raw();  // a client (stty, a terminal program) may have changed the line
         return ClientEvent::session_start;
       }
+      if (clients_ == 2) return ClientEvent::shared;
     } else if (e.mask & IN_CLOSE) {
       if (clients_ > 0 && --clients_ == 0) return ClientEvent::session_end;
     }

@@ -187,6 +187,10 @@ void SerialModule::serve(Kernel& k, Link& l) {
   for (hal::ClientEvent e = s.next_client_event(); e != hal::ClientEvent::none; e = s.next_client_event()) {
     if (e == hal::ClientEvent::session_start) {
       start_session(l);
+    } else if (e == hal::ClientEvent::shared) {
+      // Not refused (a terminal and a logger may share a link on purpose), but said: replies
+      // go to whichever program reads first.
+      log::warn("serial: a second program opened {} while a client holds it: both read its replies", l.stream->name());
     } else {
       if (!pump(k, l)) return;
       end_session(l);

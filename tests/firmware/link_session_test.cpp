@@ -2,8 +2,13 @@
 // Command-link sessions and the stop byte's guarantee (issue #14): the whole firmware on a pty.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cstdio>
 #include <string>
+
+#include "kernel/log.hpp"
 
 #include "modules/firmware/sim_firmware.hpp"
 
@@ -136,6 +141,39 @@ TEST(LinkSessions, EveryNewClientStartsAFreshSession) {
   fw.run_ticks(3);
   EXPECT_EQ(fw.ask("Zz"), "error");
   EXPECT_EQ(fw.bb().link_status.reader().peek().sessions, 4u);
+}
+
+// What the log holds now (the records since the last call), by pointing its sink at a file.
+std::string log_since_last() {
+  std::FILE* f = std::tmpfile();
+  log::start(f);
+  log::stop();
+  std::rewind(f);
+  std::string out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, f)) out += buf;
+  std::fclose(f);
+  return out;
+}
+
+// A second program opening the client's pty (a terminal beside a script; a stale path of another
+// program's pointing at a reused /dev/pts/N) neither ends nor restarts the session, and is said
+// in the log: from then on both read the replies.
+TEST(LinkSessions, ASecondProgramOnTheLinkIsLoggedAndLeavesTheSessionAsItIs) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  fw.run_ticks(10);
+  EXPECT_EQ(fw.ask("XB1"), "ack");
+  log_since_last();
+  const int other = ::open(fw.pty_path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(other, 0);
+  fw.run_ticks(3);
+  const std::string said = log_since_last();
+  EXPECT_NE(said.find("a second program opened"), std::string::npos) << said;
+  ::close(other);
+  fw.run_ticks(3);
+  EXPECT_EQ(fw.ask("Zz"), "error 1 unknown-command");  // XB1 still in force: the same session
+  EXPECT_EQ(fw.bb().link_status.reader().peek().sessions, 1u);
 }
 
 // [links] stop_when_clients_leave: the last client's close stops the robot like a stop byte.

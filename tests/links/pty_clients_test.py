@@ -15,6 +15,7 @@ import time
 import tty
 
 robuterd = os.path.abspath(sys.argv[1])
+T0 = time.time()
 tmp = tempfile.mkdtemp(prefix="robuter-links-")
 A, B = os.path.join(tmp, "a.pty"), os.path.join(tmp, "b.pty")
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
@@ -30,13 +31,25 @@ class Client:
         self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
         tty.setraw(self.fd)
         self.buf = b""
+        self.sent = []  # (seconds since start, line) written, for a failure's transcript
+        self.got = []   # (seconds since start, line) read: replies and stream lines
+
+    def transcript(self, last=24):
+        """The last lines written and read, and how many stream lines came: what a failure shows."""
+        stream = [t for t, line in self.got if line.startswith("@")]
+        out = [f"{len(self.sent)} lines sent, {len(self.got)} read ({len(stream)} stream lines"
+               + (f", last at {stream[-1]:.2f} s)" if stream else ")")]
+        lines = [(t, ">", line) for t, line in self.sent] + [(t, "<", line) for t, line in self.got]
+        out += [f"  {way} {t:7.2f} {line}" for t, way, line in sorted(lines, key=lambda x: x[0])[-last:]]
+        return "\n".join(out)
 
     def lines(self, timeout):
         deadline = time.time() + timeout
         while time.time() < deadline:
             while b"\r" in self.buf:
                 line, self.buf = self.buf.split(b"\r", 1)
-                yield line.decode(errors="replace")
+                self.got.append((time.time() - T0, line.decode(errors="replace")))
+                yield self.got[-1][1]
             r, _, _ = select.select([self.fd], [], [], 0.05)
             if r:
                 try:
@@ -45,6 +58,7 @@ class Client:
                     pass
 
     def ask(self, line, timeout=10.0):
+        self.sent.append((time.time() - T0, line))
         os.write(self.fd, line.encode() + b"\r")
         for reply in self.lines(timeout):
             if not reply.startswith("@"):
@@ -99,6 +113,17 @@ def turn(b):
     return b.wheels_become(20, -20)
 
 
+def seen_on(client):
+    """What a failed check on B shows: the robot's state as B asks it, then B's transcript."""
+    def checked(name, ok):
+        if ok:
+            check(name, True)
+            return
+        state = ", ".join(f"{q} -> {client.ask(q, 3.0)!r}" for q in ("XE", "XD", "BO"))
+        check(name, False, state + "\n" + client.transcript())
+    return checked
+
+
 proc = start()
 try:
     a = Client(A)
@@ -106,21 +131,22 @@ try:
     a.close()
     b = Client(B)
     check("XS on B", b.ask("XS10") == "ack")
-    check("B turns the robot", turn(b))
+    on_b = seen_on(b)
+    on_b("B turns the robot", turn(b))
 
     for i in range(3):
         printf("\\030", A)
         ok = b.wheels_become(0, 0, 5.0)
-        check(f"one-shot stop byte on A after a client left ({i + 1}/3)", ok and cause(b) == "stop-byte")
-        check(f"B turns the robot again ({i + 1}/3)", turn(b))
+        on_b(f"one-shot stop byte on A after a client left ({i + 1}/3)", ok and cause(b) == "stop-byte")
+        on_b(f"B turns the robot again ({i + 1}/3)", turn(b))
 
     printf("AM 0 0\\r", A)
-    check("one-shot 'AM 0 0' on A stops the robot", b.wheels_become(0, 0, 5.0))
+    on_b("one-shot 'AM 0 0' on A stops the robot", b.wheels_become(0, 0, 5.0))
 
     printf("ASN\\rAM 20 -20\\r", A)
-    check("one-shot 'ASN, AM 20 -20' on A turns the robot at once", b.wheels_become(20, -20, 5.0))
+    on_b("one-shot 'ASN, AM 20 -20' on A turns the robot at once", b.wheels_become(20, -20, 5.0))
     printf("AM 0 0\\r", A)
-    check("and 'AM 0 0' stops it", b.wheels_become(0, 0, 5.0))
+    on_b("and 'AM 0 0' stops it", b.wheels_become(0, 0, 5.0))
 
     fresh = 0
     for _ in range(10):
@@ -143,7 +169,9 @@ try:
     check("a second robuterd on A is refused", second.returncode == 2 and "in use by another robuterd" in second.stderr,
           second.stderr.strip())
     check("the first still serves B", (b.ask("BC") or "").startswith("C "))
-    check("and A", (Client(A).ask("BC") or "").startswith("C "))
+    c = Client(A)
+    check("and A", (c.ask("BC") or "").startswith("C "))
+    c.close()
     b.close()
 
     twice = subprocess.run([robuterd, "--sim", "--pty", os.path.join(tmp, "c.pty"), "--pty",
