@@ -438,6 +438,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("emergency.margin_mm", c.emergency.margin_mm, 0, 500);
   b.integer("emergency.creep_cm_s", c.emergency.creep_cm_s, 0, 50);
   b.integer("emergency.free_age_ms", c.emergency.free_age_ms, 10, 600'000);
+  b.boolean("emergency.narrow_arcs", c.emergency.narrow_arcs);
   b.integer("emergency.protective_clear_ms", c.emergency.protective_clear_ms, 0, 600'000);
   b.integer("emergency.reaction_ms", c.emergency.reaction_ms, 0, 10'000);
 

@@ -71,6 +71,7 @@ struct EmergencyConfig {
   std::uint32_t margin_mm = 30;              // envelope: clearance kept around the body, mm
   std::uint32_t creep_cm_s = 20;             // envelope: fastest wheel where only the blind near field is unknown, cm/s
   std::uint32_t free_age_ms = 3000;          // envelope: free space older than this is unknown again, ms
+  bool narrow_arcs = true;                   // envelope: an echo meeting the a-priori map's walls marks only them and what no recent cone saw through (SAFETY.md §13)
   std::uint32_t protective_clear_ms = 1000;  // envelope: an automatic mode resumes after this long clear, ms
   std::uint32_t reaction_ms = 110;           // envelope: from a decision to the next one reaching the drive, ms
 };

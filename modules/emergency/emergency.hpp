@@ -43,6 +43,9 @@ class EmergencyModule final : public Process {
     hand_over_ = gate_hands_over;
     demo_at_boot_ = demo_at_boot;
   }
+  // The a-priori map's structure, which explains echoes ([emergency] narrow_arcs, docs/SAFETY.md
+  // §13 "Narrowing"); nullptr: none. It must outlive the module.
+  void set_known_structure(const safety::KnownStructure* known) { envelope_.set_known_structure(known); }
   // The envelope's grid and pose (tests, figures).
   const safety::RingEnvelope& envelope() const { return envelope_; }
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace robuter::safety {
@@ -17,6 +18,23 @@ enum class CellState : std::uint8_t {
   free,      // certified free within the age limit
 };
 
+// Static structure the robot knows for sure — the planner's a-priori map ([planner] map_file) —
+// in the odometry frame: where an echo is explained. Implemented by the firmware's glue.
+class KnownStructure {
+ public:
+  virtual ~KnownStructure() = default;
+  // Whether the point p (odometry frame, m) lies on known structure (within the map's tolerance).
+  virtual bool occupied(const Eigen::Vector2d& p) const = 0;
+};
+
+// A recent reading with an echo, as narrowing sees it: its cone saw through to `range`.
+struct SeenCone {
+  std::uint64_t tick = 0;                             // its read tick, 0 = none
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();  // the transducer, odometry frame, m
+  double direction = 0.0;                             // the cone's axis, rad
+  double range = 0.0;                                 // its echo, m
+};
+
 // Shape and behaviour of the grid.
 struct GridSettings {
   double cell = 0.025;              // cell side, m
@@ -26,6 +44,12 @@ struct GridSettings {
   double reach = 2.5;               // a reading certifies free space and marks echoes this far at most, m
   double shrink = 0.03;             // free space ends this much short of an echo (range noise), m
   int recentre_cells = 24;          // the window follows once the robot is this many cells off its centre
+  // Narrowing (mark_arc, docs/SAFETY.md §13): an echo whose arc meets known structure (the
+  // a-priori map) is explained by it; its arc then loses the points a cone at most `narrow_age`
+  // ticks old saw through along a line of sight within `narrow_sight` of the echo's. Without
+  // known structure on the arc, or narrow_age 0, the whole arc is marked.
+  std::uint64_t narrow_age = 0;     // ticks
+  double narrow_sight = 0.3491;     // rad (20°)
 };
 
 // A rolling window of cells centred on the robot (toroidal storage: moving the window clears only
@@ -58,6 +82,25 @@ class EvidenceGrid {
   // at the default reach) plus ≤ 200 arc samples.
   void add_reading(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
                    bool contradicts);
+  // The two halves of add_reading, for a batch of readings taken together (every cone, then every
+  // arc). mark_arc narrows the arc by `seen`, recent cones with an echo (docs/SAFETY.md §13).
+  void certify_cone(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
+                    bool contradicts);
+  void mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
+                std::span<const SeenCone> seen = {});
+  // Whether cone c, at most narrow_age old at `tick`, saw through p (inside it, between the
+  // blanking range and its echo less the range noise) along a line of sight within narrow_sight
+  // of the one from `from` to p.
+  bool sees_through(const SeenCone& c, const Eigen::Vector2d& p, const Eigen::Vector2d& from, std::uint64_t tick) const;
+  // Changes how long a cone narrows an arc (the kernel's tick is known at init), ticks.
+  void set_narrow_age(std::uint64_t ticks) { s_.narrow_age = ticks; }
+  // The structure that explains echoes (nullptr: none, no narrowing); it must outlive the grid.
+  void set_known_structure(const KnownStructure* known) { known_ = known; }
+  // Arc cells narrowing left unmarked / echoes whose every point was ruled out (marked whole), counts.
+  std::uint64_t narrowed_cells() const { return narrowed_cells_; }
+  std::uint64_t unexplained_echoes() const { return unexplained_echoes_; }
+  static constexpr std::size_t kMaxSeen = 64;  // cones one arc is tested against, at most
+  static constexpr int kArcCells = 256;        // cells one arc crosses, at most (≤ 90 samples at the 2.5 m reach)
   // Certifies free every cell wholly under the rectangle [lo, hi] (robot frame, m) of a robot at
   // (position, heading): the body is there, so nothing else is. Work: cells of its bounding box.
   void certify_rectangle(std::uint64_t tick, const Eigen::Vector2d& position, double heading,
@@ -113,6 +156,9 @@ class EvidenceGrid {
   int ox_ = 0;               // global index of the window's first column
   int oy_ = 0;               // global index of the window's first row
   bool placed_ = false;      // the window has been placed around a robot
+  const KnownStructure* known_ = nullptr;  // the a-priori map's structure, or none
+  std::uint64_t narrowed_cells_ = 0;      // arc cells left unmarked by narrowing, count
+  std::uint64_t unexplained_echoes_ = 0;  // echoes whose every arc point was ruled out (marked whole), count
 };
 
 }  // namespace robuter::safety

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "robot/model_geometry.hpp"
@@ -59,12 +60,17 @@ RingEnvelope::RingEnvelope(const EmergencyConfig& cfg, const RobotConfig& robot,
       tick_s_(tick_s),
       grid_(grid_settings(cfg)),
       env_(envelope_settings(cfg, robot, tick_s)),
-      start_(start_blind_settings(env_.settings())) {}
+      start_(start_blind_settings(env_.settings())) {
+  set_tick(tick_s);
+}
 
 void RingEnvelope::set_tick(double tick_s) {
   tick_s_ = tick_s;
   const EnvelopeSettings e = envelope_settings(cfg_, robot_, tick_s);
   env_.set_ages(e.free_age_ticks, e.near_age_ticks);
+  // A certificate rules a cell out as an echo's reflector for as long as the sweep trusts it to
+  // drive through that cell (docs/SAFETY.md §13, "Evidence").
+  grid_.set_narrow_age(cfg_.narrow_arcs ? e.free_age_ticks : 0);
 }
 
 void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest) {
@@ -87,12 +93,25 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
         grid_.reset();
       }
       start_.reset();
+      cones_.fill(SeenCone{});  // of the old frame
       reset_tick_ = posture.tick;
     }
   }
   if (history_.empty()) return;
   now_ = history_.at(tick);
   grid_.follow(now_.p);
+  // The new readings: every cone first, then every arc, so an arc is narrowed by what the whole
+  // batch saw through (docs/SAFETY.md §13, "Evidence").
+  struct Fresh {
+    int sensor;                // 1..24
+    std::uint64_t read;        // its read tick
+    Eigen::Vector2d origin;    // the transducer, odometry frame, m
+    double direction;          // the cone's axis, rad
+    double range;              // m
+    bool no_echo;              // nothing came back
+  };
+  std::array<Fresh, kSensors> fresh;
+  std::size_t count = 0;
   for (int s = 1; s <= kSensors; ++s) {
     const auto i = static_cast<std::size_t>(s - 1);
     const std::uint64_t read = ranges.read_tick[i];
@@ -101,16 +120,29 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
     const std::uint32_t bit = 1u << i;
     if (ranges.mm[i] == 0 || read < reset_tick_) continue;  // no data, or from an old frame
     last_reading_ = std::max(last_reading_, read);
-    const bool no_echo = (ranges.no_echo & bit) != 0;
-    // A no-echo certifies free space but never contradicts obstacle evidence: it may be a lost
-    // echo, or a face too oblique to echo — the random sequences found a box whose evidence two
-    // no-echoes in a row had cleared (seed 1631, docs/SAFETY.md §13). Only an echo from farther
-    // away, or the body itself, clears evidence.
-    const bool contradicts = !no_echo;
     const Pose2 at = history_.at(read);
     const robot::SonarMount& m = robot::kRobuter.ring.sensor(s).mount;
-    grid_.add_reading(read, to_world(at, robot::position(m)), at.theta + m.direction, ranges.mm[i] / 1000.0, no_echo,
-                      contradicts);
+    fresh[count++] = Fresh{s, read, to_world(at, robot::position(m)), at.theta + m.direction, ranges.mm[i] / 1000.0,
+                           (ranges.no_echo & bit) != 0};
+  }
+  // A no-echo certifies free space but never contradicts obstacle evidence: it may be a lost
+  // echo, or a face too oblique to echo — the random sequences found a box whose evidence two
+  // no-echoes in a row had cleared (seed 1631, docs/SAFETY.md §13). Only an echo from farther
+  // away, or the body itself, clears evidence.
+  for (std::size_t k = 0; k < count; ++k) {
+    const Fresh& f = fresh[k];
+    grid_.certify_cone(f.read, f.origin, f.direction, f.range, f.no_echo, !f.no_echo);
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const Fresh& f = fresh[k];
+    if (f.no_echo) continue;
+    const auto i = 2 * static_cast<std::size_t>(f.sensor - 1);
+    cones_[i + 1] = cones_[i];
+    cones_[i] = SeenCone{f.read, f.origin, f.direction, f.range};
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const Fresh& f = fresh[k];
+    grid_.mark_arc(f.read, f.origin, f.direction, f.range, f.no_echo, cones_);
   }
   start_.observe(tick, now_, at_rest, ranges.scans, ranges.read_tick.data(), kSensors);
   if (tick != body_tick_) {

@@ -35,6 +35,8 @@ class RingEnvelope final : public EnvelopeJudge {
   void observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest);
   EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) override;
 
+  // The a-priori map's structure, which explains echoes (narrowing); it must outlive the envelope.
+  void set_known_structure(const KnownStructure* known) { grid_.set_known_structure(known); }
   const EvidenceGrid& grid() const { return grid_; }
   const Pose2& pose() const { return now_; }
   const StartBlind& start() const { return start_; }
@@ -49,6 +51,9 @@ class RingEnvelope final : public EnvelopeJudge {
   StartBlind start_;                     // where a creep may go: blind from the last start pose
   PoseHistory history_;                  // recent postures
   std::array<std::uint64_t, kSensors> seen_{};  // read tick of each sensor's last reading taken
+  // Each sensor's last two readings with an echo, [2 (s − 1) + (newest ? 0 : 1)]: what narrowing
+  // tests an arc against point by point (the sensor's own previous one among them).
+  std::array<SeenCone, 2 * kSensors> cones_{};
   std::uint64_t posture_tick_ = ~0ull;   // tick of the last posture taken
   std::uint64_t body_tick_ = 0;          // tick the body was last certified
   std::uint64_t reset_tick_ = 0;         // readings older than this belong to an old odometry frame

@@ -31,6 +31,7 @@
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "modules/planner/prior_map.hpp"
+#include "modules/firmware/prior_structure.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/gate/gate_module.hpp"
@@ -240,6 +241,11 @@ std::optional<std::string> Firmware::setup() {
   }
   hal::Bumpers& bumpers = gpio_ && !cfg_.gpio.bumper_lines.empty() ? static_cast<hal::Bumpers&>(*gpio_) : *bumpers_;
   auto emergency = std::make_unique<EmergencyModule>(bb_, bumpers, cfg_.emergency, cfg_.robot);
+  if (prior_map) {
+    // The map's walls explain the ring's echoes where they meet them (docs/SAFETY.md §13, "Narrowing").
+    known_ = std::make_unique<PriorMapStructure>(*prior_map);
+    emergency->set_known_structure(known_.get());
+  }
   auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
   if (prior_map) planner->set_prior_map(std::move(*prior_map));

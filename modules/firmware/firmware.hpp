@@ -19,6 +19,10 @@ class FrameTransport;
 class CanBackend;
 }  // namespace robuter::hal::can
 
+namespace robuter::safety {
+class KnownStructure;
+}  // namespace robuter::safety
+
 namespace robuter {
 namespace hal {
 class GpioLines;
@@ -94,6 +98,7 @@ class Firmware {
   std::string planner_map_note_;  // [planner] map_file as loaded, for --check-config
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
+  std::unique_ptr<safety::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded
   // The robot's hardware without --sim: [hardware] backends (docs/CAN.md).
   std::optional<std::string> setup_hardware();
 

@@ -123,6 +123,23 @@ TEST(Config, ShippedDefaultFileParsesToTheDefaults) {
   EXPECT_EQ(c.sonar.schedule, d.sonar.schedule);
   EXPECT_EQ(c.sonar.moving_timeout_ms, d.sonar.moving_timeout_ms);
   EXPECT_EQ(c.robot.length_mm, d.robot.length_mm);
+  // The whole safety core's section: the shipped file once said creep_cm_s = 10 against the
+  // documented and compiled 20.
+  const EmergencyConfig& e = c.emergency;
+  const EmergencyConfig& f = d.emergency;
+  EXPECT_EQ(e.mask, f.mask);
+  EXPECT_EQ(e.min_safety_mm, f.min_safety_mm);
+  EXPECT_EQ(e.safety_mm_per_cm_s, f.safety_mm_per_cm_s);
+  EXPECT_EQ(e.motion_timeout_ms, f.motion_timeout_ms);
+  EXPECT_EQ(e.auto_toggle, f.auto_toggle);
+  EXPECT_EQ(e.latch, f.latch);
+  EXPECT_EQ(e.rule, f.rule);
+  EXPECT_EQ(e.margin_mm, f.margin_mm);
+  EXPECT_EQ(e.creep_cm_s, f.creep_cm_s);
+  EXPECT_EQ(e.free_age_ms, f.free_age_ms);
+  EXPECT_EQ(e.narrow_arcs, f.narrow_arcs);
+  EXPECT_EQ(e.protective_clear_ms, f.protective_clear_ms);
+  EXPECT_EQ(e.reaction_ms, f.reaction_ms);
 }
 
 // [planner] map_file: relative to the configuration's folder; the geometry keys written are
