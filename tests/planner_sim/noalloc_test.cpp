@@ -86,5 +86,35 @@ TEST(PlannerSimNoAlloc, AWindowMoveAndTheNavigationAfterItAllocateNothing) {
 #endif
 }
 
+// Through the 90 cm door of the default world with its a-priori map: the safety core narrows
+// the jambs' echo arcs against the map on every reading (docs/SAFETY.md §13, "Narrowing") without
+// allocating, and the robot arrives.
+TEST(PlannerSimNoAlloc, ADoorCrossingWithTheAPrioriMapNarrowingTheArcsAllocatesNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  Config cfg;
+  cfg.planner.map_file = PLANNER_SIM_DATA "/default_world.map";
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/default.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 15000 15000 0"), "ack");
+  for (const char* l : {"XP", "XM", "XH", "XG 1 2 3 4"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the paths
+  fw.run_ticks(20);
+  fw.count_lines();
+  const auto& status = fw.bb().planner_status.reader().peek();
+  test::AllocCounter counter;
+  fw.send_raw("XG 56000 30000\r");
+  int ticks = 0;
+  for (; ticks < 20'000 && status.state != PlannerState::reached; ++ticks) {
+    fw.step();
+    fw.count_lines();
+  }
+  const auto allocations = counter.count();
+  EXPECT_EQ(allocations, 0u);
+  EXPECT_EQ(status.state, PlannerState::reached);
+  EXPECT_GT(fw.sim().robot().pose().x, 4.6) << "through the door";
+#endif
+}
+
 }  // namespace
 }  // namespace robuter

@@ -11,44 +11,35 @@
 namespace robuter::test::safety_sim {
 namespace {
 
-// The planner's map over the 8 × 6 m world, odometry in the world's frame (as the planner's tests).
+// The firmware's default configuration with the default world's a-priori map ([planner] map_file,
+// tests/planner_sim/data/default_world.map: the file's geometry, odometry = the world's frame).
 Config door_config() {
   Config cfg;
-  cfg.planner.map_origin_x_mm = -500;
-  cfg.planner.map_origin_y_mm = -500;
-  cfg.planner.map_width_mm = 9'000;
-  cfg.planner.map_height_mm = 7'000;
+  cfg.planner.map_file = ROBUTER_PLANNER_SIM_DATA "/default_world.map";
   return cfg;
 }
 
-// From the west room (1.5, 1.5) to the goal (6.4, 4.6) in the east room: the only way is the
-// door (100 mm each side of the body when centred). The planner is an automatic source: a
+// From the west room (1.5, 1.5) through the 90 cm door (100 mm each side of the body when
+// centred) to (5.6, 3.0) in the east room. The planner is an automatic source: a
 // protective stop pauses it and it goes on once its envelope is clear; nothing trips.
-// Quarantined (run with --gtest_also_run_disabled_tests): measured, the planner reports
-// `unreachable` after 40 s without crossing — no trip, no protective stop, no contact, closest
-// 418 mm — and the same with the seed's rule (ROBUTER_EMERGENCY_RULE=seed: unreachable after
-// 33 s, closest 415 mm): the planner without a prior map does not find the door in this world;
-// the envelope holds nothing it needs (issue #16's a-priori map; docs/SAFETY.md §13).
-// ROBUTER_PLANNER_MAP_FILE=FILE gives the planner an a-priori map ([planner] map_file): with the
-// default world's map on this test's 9 x 7 m cells (robuter-plan's map cropped), measured: the
-// first plan is already `unreachable` for this goal (1.0 s, closest 500 mm), though the same
-// walls rasterised on PlannerSimDoor's grid give 6.40 m: the faces lie on cell boundaries and the
-// tool's map rounds them into the neighbouring cells (935 cells differ; docs/PLANNER.md).
-// With the default window and goal (5.6, 3.0) instead (2026-12-02, docs/SAFETY.md §13 "What the
-// envelope does not do"): the plan goes through the door, the robot reaches it, and the envelope
-// holds it there — echo arcs from the jamb corners leave evidence inside the opening that no cone
-// can contradict from the blind near field.
-TEST(EnvelopeDoor, DISABLED_XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArrivesWithoutATrip) {
+// The map's walls explain the jambs' echoes, so their arcs lose what other cones saw through
+// (docs/SAFETY.md §13, "Narrowing"). Measured 2026-12-02: reached after 45.3 s, 0 protective
+// stops, closest 80 mm; with `[emergency] narrow_arcs = false` the whole arcs fill the opening and
+// the planner ends `blocked` at the door after 52.3 s (1 protective stop, no trip, no contact).
+constexpr const char* kGoal = "XG 56000 30000";  // mm
+constexpr double kGoalX = 5.6, kGoalY = 3.0;      // m
+
+TEST(EnvelopeDoor, XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArrivesWithoutATrip) {
   Config dc = door_config();
   if (const char* r = std::getenv("ROBUTER_EMERGENCY_RULE")) dc.emergency.rule = r;
-  if (const char* m = std::getenv("ROBUTER_PLANNER_MAP_FILE")) dc.planner.map_file = m;  // an a-priori map
+  if (const char* m = std::getenv("ROBUTER_PLANNER_MAP_FILE")) dc.planner.map_file = m;  // another a-priori map
   SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/default.toml", dc);
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);
   ASSERT_EQ(fw.ask("AC 15000 15000 0"), "ack");
   fw.run_ticks(5);
-  ASSERT_EQ(fw.ask("XG 64000 46000"), "ack");
+  ASSERT_EQ(fw.ask(kGoal), "ack");
   const auto& robot = fw.sim().robot();
   bool crossed = false;
   PlannerState state = PlannerState::idle;
@@ -61,7 +52,7 @@ TEST(EnvelopeDoor, DISABLED_XgThroughThe90cmDoorWithTheUltrasonicDetectionOnArri
                    state == PlannerState::stopped || state == PlannerState::blocked)) break;
   }
   const EmergencyState& e = fw.bb().emergency.reader().peek();
-  const double err = std::hypot(robot.pose().x - 6.4, robot.pose().y - 4.6);
+  const double err = std::hypot(robot.pose().x - kGoalX, robot.pose().y - kGoalY);
   std::printf("door: planner state %d after %.1f s, crossed %d, final error %.3f m, trips %u, protective stops %u, "
               "closest approach %.0f mm, contacts %llu\n",
               static_cast<int>(state), fw.seconds() - t0, crossed, err, e.trips, e.protective_stops,

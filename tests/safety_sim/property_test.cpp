@@ -17,6 +17,8 @@
 #include "hal/sim/world_io.hpp"
 #include "modules/emergency/emergency.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
+#include "modules/planner/lib/map_file.hpp"
+#include "tools/robuter-plan/world_map.hpp"
 #include "tests/safety_sim/support.hpp"
 #include "tests/support/sample.hpp"
 
@@ -88,6 +90,8 @@ Config random_config(sim::Rng& rng) {
   c.enabled_modules->push_back("planner");  // XG: an automatic mode to start and interrupt
   c.enabled_modules->push_back("demo");     // XT1: another
   c.emergency.rule = rule_under_test();
+  // ROBUTER_EMERGENCY_NARROW_ARCS=0: the echo arcs marked whole (the comparison of docs/SAFETY.md §13).
+  if (const char* env = std::getenv("ROBUTER_EMERGENCY_NARROW_ARCS")) c.emergency.narrow_arcs = std::string(env) != "0";
   if (rng.uniform() < 0.3) c.emergency.mask = static_cast<std::uint32_t>(rng.uniform(0.0, 8.0));
   c.emergency.latch = rng.uniform() < 0.85;
   if (rng.uniform() < 0.3) c.emergency.comm_limit_ticks = 100 + static_cast<std::uint32_t>(rng.uniform(0.0, 1400.0));
@@ -98,6 +102,50 @@ Config random_config(sim::Rng& rng) {
 
 // An integer in [lo, hi].
 int irand(sim::Rng& rng, int lo, int hi) { return lo + static_cast<int>(rng.uniform(0.0, hi - lo + 1.0)); }
+
+// The a-priori map a sequence's firmware is given ([planner] map_file): its walls explain the
+// ring's echoes and narrow their arcs (docs/SAFETY.md §13, "Narrowing"), so a wrong map must not
+// open a way into an obstacle either.
+enum class MapKind {
+  none,     // no map (the sequences as before maps were drawn)
+  exact,    // the world's edges, odometry set to the world's frame
+  shifted,  // the same edges displaced 5-40 cm
+  other,    // the edges of another random world (the arena's walls right, every box wrong)
+};
+const char* map_kind_name(MapKind k) {
+  switch (k) {
+    case MapKind::none: return "none";
+    case MapKind::exact: return "exact";
+    case MapKind::shifted: return "shifted";
+    case MapKind::other: return "other";
+  }
+  return "?";
+}
+
+// Writes the map of `kind` for the world `toml` next to it and returns its path (empty for none).
+// Drawn from its own generator, so the sequences without a map are the ones they always were.
+std::string write_map(MapKind kind, const std::string& toml, const std::string& world_path, sim::Rng& mrng) {
+  if (kind == MapKind::none) return {};
+  const std::string source = kind == MapKind::other ? random_world(mrng) : toml;
+  auto w = sim::parse_world_toml(source.empty() ? toml : source, "map.toml", geometry());
+  if (!w) return {};
+  const plan::MapGeometry g{220, 220, 0.05, plan::Point2{-0.5, -0.5}};  // the 10 m arena and 0.5 m round it
+  plan::OccupancyMap exact(g);
+  plan::tool::rasterise_world(w.value(), exact);
+  plan::OccupancyMap map = exact;
+  if (kind == MapKind::shifted) {
+    const double a = mrng.uniform(-sim::kPi, sim::kPi), d = mrng.uniform(0.05, 0.40);
+    const int dx = static_cast<int>(std::lround(d * std::cos(a) / g.resolution));
+    const int dy = static_cast<int>(std::lround(d * std::sin(a) / g.resolution));
+    map = plan::OccupancyMap(g);
+    for (int y = 0; y < g.height; ++y)
+      for (int x = 0; x < g.width; ++x)
+        if (exact.state({x, y}) == plan::CellState::Occupied && map.contains({x + dx, y + dy})) map.mark_occupied({x + dx, y + dy});
+  }
+  const std::string path = world_path + ".map";
+  if (!plan::save_map(map, path)) return {};
+  return path;
+}
 
 // Random wheel speeds: straight, a curve, a rotation or anything, up to 60 cm/s.
 std::pair<int, int> random_speeds(sim::Rng& rng) {
@@ -128,6 +176,8 @@ struct Totals {
   long automatic_after_operator = 0;      // ticks an automatic mode drove after an operator's command ended it
   long resumed_by_itself = 0;             // ticks an operator's motion drove after a trip or stop forgot it
   std::string arbiter_violation;          // the first of those two, for the report
+  std::array<long, 4> mapped{};           // sequences by MapKind given a map (none is not counted)
+  long narrowed_cells = 0;                // arc cells the map-explained narrowing left out
 };
 
 // The arbiter's invariants (docs/SAFETY.md §1), from the commands the sequence sent and every
@@ -202,8 +252,16 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   sim::Rng rng(seed);
   const std::string toml = random_world(rng);
   if (toml.empty()) return;
-  const Config cfg = random_config(rng);
+  Config cfg = random_config(rng);
   TempWorld file(toml);
+  sim::Rng mrng(seed ^ 0x6d61702d6b696e64ull);
+  const double mk = mrng.uniform();
+  const MapKind map_kind = mk < 0.5 ? MapKind::none : mk < 0.75 ? MapKind::exact : mk < 0.875 ? MapKind::shifted : MapKind::other;
+  cfg.planner.map_file = write_map(map_kind, toml, file.path(), mrng);
+  if (map_kind != MapKind::none && cfg.planner.map_file.empty()) {
+    report = "seed " + std::to_string(seed) + ": the map was not written";
+    return;
+  }
   hal::SimOptions opt;
   opt.seed = seed;
   // Sonar noise (range noise, lost and spurious echoes) and odometry noise in half the sequences.
@@ -283,6 +341,14 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
     fw.send_raw("\x18");
     arb.stop_byte(fw.kernel().tick());
   };
+  if (map_kind != MapKind::none) {
+    // Odometry in the map's frame (the world's), as an operator starting a mapped run would set it.
+    const sim::Pose st = *fw.sim().world().start;
+    long theta = std::lround(sim::rad_to_deg(st.theta) * 100.0);
+    if (theta <= -18000) theta += 36000;  // the protocol's (−18000, 18000]
+    send(fmt::format("AC {} {} {}", std::lround(st.x * 10000.0), std::lround(st.y * 10000.0), theta));
+    ++tot.mapped[static_cast<std::size_t>(map_kind)];
+  }
   const int actions = irand(rng, 12, 24);
   for (int a = 0; a < actions; ++a) {
     const double k = rng.uniform();
@@ -363,8 +429,11 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   }
   ++tot.sequences;
   tot.protective_stops += fw.bb().emergency.reader().peek().protective_stops;
-  if (const auto row = fw.kernel().find("emergency"))
+  if (const auto row = fw.kernel().find("emergency")) {
     tot.emergency_max_us = std::max(tot.emergency_max_us, static_cast<double>(fw.kernel().stats(*row).max_ns) / 1000.0);
+    if (auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*row).process))
+      tot.narrowed_cells += static_cast<long>(em->envelope().grid().narrowed_cells());
+  }
   tot.ticks += static_cast<long>(mon.ticks);
   tot.latched_ticks += static_cast<long>(mon.latched_ticks);
   tot.moving_ticks += static_cast<long>(mon.moving_ticks);
@@ -388,10 +457,10 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   const bool broke = mon.latched_moving > 0 || mon.ungranted > 0 || (contacts_fail && mon.contact_us_on > 0) ||
                      !arb.first.empty();
   if (!broke) return;
-  report = fmt::format("seed {} (rule {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
+  report = fmt::format("seed {} (rule {}, map {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
                        "  latched-moving {}, ungranted {} (longest {} ticks), contact with sonar on {}\n"
                        "  commands: {}\n  world:\n{}",
-                       seed, cfg.emergency.rule, opt.sonar_noise, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
+                       seed, cfg.emergency.rule, map_kind_name(map_kind), opt.sonar_noise, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
                        cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms,
                        mon.first_violation.empty() ? arb.first : mon.first_violation,
                        mon.latched_moving, mon.ungranted, mon.longest_disagreement, mon.contact_us_on, log, toml);
@@ -419,6 +488,8 @@ Totals run_shard(int shard, bool contacts_fail) {
               shard + 1, kShards, rule_under_test().c_str(), tot.sequences, tot.noisy, tot.ticks,
               static_cast<double>(tot.ticks) / 100.0, tot.commands, tot.stop_bytes, tot.no_reply, tot.protective_stops,
               tot.emergency_max_us);
+  std::printf("  a-priori maps: exact %ld, shifted %ld, another world's %ld; echo-arc cells narrowed out %ld\n",
+              tot.mapped[1], tot.mapped[2], tot.mapped[3], tot.narrowed_cells);
   std::printf("  ticks moving %ld, latched %ld, sonar on %ld; trips %ld:", tot.moving_ticks, tot.latched_ticks,
               tot.us_on_ticks, tot.trips);
   for (std::size_t c = 1; c < tot.trips_by_cause.size(); ++c) {
