@@ -9,6 +9,7 @@
 
 #include "hal/sim/rng.hpp"
 #include "hal/sim/sonar.hpp"
+#include "hal/sim/world_io.hpp"
 #include "modules/emergency/obstacle_check.hpp"
 #include "modules/emergency/watchdog_sets.hpp"
 #include "tests/safety_sim/support.hpp"
@@ -30,15 +31,29 @@ sim::Pose pose_before_box(const ReactionTrial& t, double d) {
   return backwards(t) ? sim::Pose{face - d - kAxleToRear, kBoxY, sim::kPi} : sim::Pose{face - d - kAxleToFront, kBoxY, 0.0};
 }
 
-// The arena, the box, and a start pose (the approach start, or far from the box for a teleport).
+// The arena, the box, and the start pose.
+// The approach's start, or far from the box for a teleport.
+sim::Pose start_pose(const ReactionTrial& t) {
+  return t.teleport ? sim::Pose{2.5, kBoxY, backwards(t) ? sim::kPi : 0.0} : pose_before_box(t, t.distance);
+}
+
 std::string world_toml(const ReactionTrial& t) {
-  const sim::Pose start = t.teleport ? sim::Pose{2.5, kBoxY, backwards(t) ? sim::kPi : 0.0} : pose_before_box(t, t.distance);
+  const sim::Pose start = start_pose(t);
   return fmt::format(
       "[world]\nname = \"reaction\"\nunits = \"m\"\n"
       "[start]\nx = {:.4f}\ny = {:.4f}\nheading_deg = {:.3f}\n"
       "[[wall]]\nname = \"arena\"\npoints = [[0.0, 0.0], [16.0, 0.0], [16.0, 8.0], [0.0, 8.0]]\nclosed = true\n"
       "[[box]]\nname = \"box\"\ncenter = [{:.4f}, {:.4f}]\nsize = [{:.4f}, {:.4f}]\nangle_deg = {:.3f}\n",
       start.x, start.y, sim::rad_to_deg(start.theta), kBoxX, kBoxY + t.lateral, t.box_size, t.box_size, t.box_angle);
+}
+
+// The box alone (no arena): what a sensor would read from the box, to tell its echoes apart.
+std::string box_only_toml(const ReactionTrial& t) {
+  return fmt::format(
+      "[world]\nname = \"box\"\nunits = \"m\"\n[start]\nx = {:.4f}\ny = {:.4f}\nheading_deg = {:.3f}\n"
+      "[[box]]\nname = \"box\"\ncenter = [{:.4f}, {:.4f}]\nsize = [{:.4f}, {:.4f}]\nangle_deg = {:.3f}\n",
+      start_pose(t).x, start_pose(t).y, sim::rad_to_deg(start_pose(t).theta), kBoxX, kBoxY + t.lateral, t.box_size,
+      t.box_size, t.box_angle);
 }
 }  // namespace
 
@@ -96,6 +111,12 @@ ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
   sim::GridScratch scratch;
   scratch.prepare(fw.sim().world().segments().size());
   sim::SonarModel ideal(fw.sim().world(), fw.sim().ring_params());  // the ring without noise
+  auto box_world = sim::parse_world_toml(box_only_toml(t), "box.toml", geom);
+  if (!box_world) {
+    out.error = "box-only world: " + box_world.error().message;
+    return out;
+  }
+  sim::SonarModel box_only(box_world.value(), fw.sim().ring_params());  // echoes from the box alone
   Wheels last{};           // the drive's speeds at the end of the previous tick
   bool armed = false;      // the obstacle is there to be found (approach: always; teleport: once placed)
   // The probe: the first watch-dog reading under the safety distance of the speeds the drive
@@ -110,6 +131,16 @@ ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
       if (out.appear_tick == 0 &&
           body_clearance_near(fw.sim().world(), geom, robot.pose(), 1.5, scratch) * 1000.0 <= safety_mm)
         out.appear_tick = tick;
+      if (out.appear_tick != 0 && out.seen_tick == 0) {
+        // A reading read this tick whose echo is the box's (noise is off; within 60 mm: a ring read up
+        // to 4 ticks after its echo, at 80 cm/s, has moved 32 mm since).
+        for (int s = 1; s <= 24 && out.seen_tick == 0; ++s) {
+          const auto i = static_cast<std::size_t>(s - 1);
+          if (r.read_tick[i] != tick || r.mm[i] == 0 || (r.no_echo & (1u << i)) != 0) continue;
+          const double b = box_only.measure(robot.pose(), fw.sim().layout()[i]);
+          if (b > 0.0 && std::abs(b * 1000.0 - r.mm[i]) <= 60.0) out.seen_tick = tick;
+        }
+      }
       const auto watch = safety::watch_sensors(safety::main_sensor(last.left, last.right, 600));
       for (int s : watch) {
         if (out.visible_tick != 0) break;

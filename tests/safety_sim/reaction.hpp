@@ -36,12 +36,16 @@ struct ReactionResult {
   std::uint64_t appear_tick = 0;   // first tick the body was within the safety distance (teleport: the placement)
   std::uint64_t visible_tick = 0;  // first tick a watch-dog sensor's ideal reading (no noise) was under the limit
   std::uint64_t read_tick = 0;     // UltrasonicRanges.read_tick of that reading
+  std::uint64_t seen_tick = 0;     // first read at or after appear_tick of an echo from the box, any sensor
   std::uint64_t stop_tick = 0;     // tick in which SimDrive::commanded became zero
   bool contact = false;            // the bumper was pressed at some point
   double clearance_at_rest_mm = 0; // true body-to-obstacle distance once at rest, mm
 
   std::int64_t reaction_ticks() const { return static_cast<std::int64_t>(stop_tick) - static_cast<std::int64_t>(read_tick); }
   std::int64_t detection_ticks() const { return static_cast<std::int64_t>(read_tick) - static_cast<std::int64_t>(appear_tick); }
+  // Body within the safety distance to a reading that sees the box (issue #13's ring criterion:
+  // the envelope judges every echo against the body, whatever its range).
+  std::int64_t sighting_ticks() const { return static_cast<std::int64_t>(seen_tick) - static_cast<std::int64_t>(appear_tick); }
   // The ring's own part: from when a watch-dog sensor could read it under the limit to the read.
   std::int64_t ring_ticks() const { return static_cast<std::int64_t>(read_tick) - static_cast<std::int64_t>(visible_tick); }
 };

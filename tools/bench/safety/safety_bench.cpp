@@ -51,8 +51,8 @@ void print_distribution(const std::string& what, std::vector<std::int64_t> v) {
 // One configuration's trials; true when every trial ran, tripped, was measured and reacted
 // within a tick of the read.
 bool run_set(const char* name, const Config& cfg, int trials, bool verbose) {
-  std::vector<std::int64_t> reaction, detection, ring, reaction_by_kind[2], by_band[std::size(kBands)],
-      ring_by_band[std::size(kBands)];
+  std::vector<std::int64_t> reaction, detection, ring, sighting, reaction_by_kind[2], by_band[std::size(kBands)],
+      ring_by_band[std::size(kBands)], sighting_by_band[std::size(kBands)];
   std::vector<double> clearance;
   int not_tripped = 0, not_measured = 0, contacts = 0, failed = 0;
   for (int i = 0; i < trials; ++i) {
@@ -80,11 +80,13 @@ bool run_set(const char* name, const Config& cfg, int trials, bool verbose) {
     reaction_by_kind[teleport ? 1 : 0].push_back(r.reaction_ticks());
     detection.push_back(r.detection_ticks());
     ring.push_back(r.ring_ticks());
+    if (r.seen_tick != 0) sighting.push_back(r.sighting_ticks());
     const int speed = std::abs(t.left);
     for (std::size_t b = 0; b < std::size(kBands); ++b) {
       if (speed < kBands[b].lo || speed > kBands[b].hi) continue;
       by_band[b].push_back(r.detection_ticks());
       ring_by_band[b].push_back(r.ring_ticks());
+      if (r.seen_tick != 0) sighting_by_band[b].push_back(r.sighting_ticks());
     }
     clearance.push_back(r.clearance_at_rest_mm);
   }
@@ -95,6 +97,9 @@ bool run_set(const char* name, const Config& cfg, int trials, bool verbose) {
   print_distribution("body within the limit -> a reading under it", detection);
   for (std::size_t b = 0; b < std::size(kBands); ++b)
     print_distribution(fmt::format("  {}-{} cm/s", kBands[b].lo, kBands[b].hi), by_band[b]);
+  print_distribution("body within the limit -> a reading that sees it", sighting);
+  for (std::size_t b = 0; b < std::size(kBands); ++b)
+    print_distribution(fmt::format("  {}-{} cm/s", kBands[b].lo, kBands[b].hi), sighting_by_band[b]);
   print_distribution("a sensor could read it under -> it did", ring);
   for (std::size_t b = 0; b < std::size(kBands); ++b)
     print_distribution(fmt::format("  {}-{} cm/s", kBands[b].lo, kBands[b].hi), ring_by_band[b]);
