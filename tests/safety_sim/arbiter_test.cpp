@@ -6,6 +6,8 @@
 
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "tests/safety_sim/support.hpp"
@@ -153,6 +155,69 @@ TEST(Arbiter, ThePlannersNavigationEndsOnAmZero) {
   const std::string xp = fw.ask("XP").value_or("");
   EXPECT_NE(xp.find("operator"), std::string::npos) << xp;
 }
+
+// The other automatic modes under issue #13's four interruptions (AM 0 0, ASF, AW, the stop byte):
+// the passage finder (AG), the door crossing (Ad) and the planner (XG), each driving when the
+// command comes; it ends within one tick, its status says `operator`, and nothing of it drives
+// again — not after XR and ASN either — until its own start.
+struct Mode {
+  const char* name;            // for the test's name
+  std::string world;           // where it runs
+  bool pan_tilt;               // with the simulated pan-tilt unit
+  std::vector<std::string> start;  // the commands that start it (acked)
+  MotionSource source;         // whose requests it makes
+  int status_word;             // XD's reason word of the mode (-1: XP's text instead)
+};
+const Mode kModes[] = {
+    {"PassageFinder", kDoor, true, {"ASN", "AG"}, MotionSource::gate, 4},
+    {"DoorCrossing", kDoor, true, {"ASN", "Ap", "Ad"}, MotionSource::doors, 6},
+    {"Planner", ROBUTER_SHIPPED_WORLDS "/seed000_lab.toml", false, {"ASN", "XG 25000 0"}, MotionSource::planner, -1},
+};
+
+class ModeEndsOn : public ::testing::TestWithParam<std::tuple<Mode, Interruption>> {};
+
+TEST_P(ModeEndsOn, TheOperatorsCommand) {
+  const auto& [m, c] = GetParam();
+  Config cfg;
+  cfg.emergency.comm_limit_ticks = 1'000'000;
+  SimFirmware fw(m.world, cfg, {}, m.pan_tilt);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  for (const std::string& l : m.start) ASSERT_EQ(fw.ask(l), "ack") << l;
+  ASSERT_TRUE(until_driving(fw, m.source, 20'000)) << m.name << " drives";
+  const int ticks = ticks_to_end(fw, m.source, c.bytes);
+  EXPECT_GE(ticks, 0);
+  EXPECT_LE(ticks, 1) << "ended within one tick of the command";
+  EXPECT_EQ(driving_ticks(fw, m.source, 20), 0);  // (the mode reports at its next activation)
+  if (m.status_word >= 0) {
+    const auto w = xd(fw);
+    ASSERT_GT(w.size(), static_cast<std::size_t>(m.status_word));
+    EXPECT_EQ(w[static_cast<std::size_t>(m.status_word)], "operator") << fw.ask("XD").value_or("");
+  } else {
+    const std::string xp = fw.ask("XP").value_or("");
+    EXPECT_NE(xp.find("operator"), std::string::npos) << xp;
+  }
+  if (c.stop_byte) {
+    EXPECT_EQ(driving_ticks(fw, m.source, 100), 0);
+    fw.run_until([&] { return fw.ask("XR") == "ack"; }, 2000);
+  }
+  EXPECT_EQ(driving_ticks(fw, m.source, 1500), 0) << "nothing of the mode resumes";
+  ASSERT_EQ(fw.ask("ASN"), "ack");
+  EXPECT_EQ(driving_ticks(fw, m.source, 300), 0) << "not even with the servo back on";
+}
+
+// The case's name: the mode and the command.
+std::string mode_case_name(const ::testing::TestParamInfo<std::tuple<Mode, Interruption>>& info) {
+  static const char* const kWhat[] = {"AmZero", "Asf", "Aw", "StopByte"};
+  const Mode& mode = std::get<0>(info.param);
+  const std::string_view bytes = std::get<1>(info.param).bytes;
+  std::size_t k = 0;
+  while (k < 4 && bytes != kOperator[k].bytes) ++k;
+  return std::string(mode.name) + "_" + (k < 4 ? kWhat[k] : "Other");
+}
+
+INSTANTIATE_TEST_SUITE_P(Arbiter, ModeEndsOn,
+                         ::testing::Combine(::testing::ValuesIn(kModes), ::testing::ValuesIn(kOperator, kOperator + 4)),
+                         mode_case_name);
 
 }  // namespace
 }  // namespace robuter::test::safety_sim
