@@ -753,9 +753,28 @@ void bench_cspace_layers() {
                 sum / placements, worst, placements);
   }
 }
+
+// Why: what the bench takes, for --help and for an argument it does not know.
+void usage(std::FILE* to) {
+  std::fprintf(to,
+               "usage: robuter-plan-bench [MOVINGAI_DIR [SOURCE_DIR]]   everything (default %s)\n"
+               "       robuter-plan-bench --firmware [SOURCE_DIR]        the firmware planner's figures\n"
+               "       robuter-plan-bench --layers                       the C-space layers' figures\n"
+               "environment: ROBUTER_BENCH_STRIDE=n (every n-th scenario), ROBUTER_BENCH_REPS=n\n",
+               ROBUTER_MOVINGAI_DIR);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    usage(stdout);
+    return 0;
+  }
+  if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "--firmware" && std::string(argv[1]) != "--layers") {
+    std::fprintf(stderr, "robuter-plan-bench: unknown option '%s'\n", argv[1]);
+    usage(stderr);
+    return 2;
+  }
   if (argc > 1 && std::string(argv[1]) == "--firmware") {  // the firmware planner's figures alone
     bench_firmware_all(argc > 2 ? argv[2] : ROBUTER_SOURCE_DIR);
     return 0;
@@ -766,6 +785,11 @@ int main(int argc, char** argv) {
   }
   const std::string dir = argc > 1 ? argv[1] : ROBUTER_MOVINGAI_DIR;
   const std::string root = argc > 2 ? argv[2] : ROBUTER_SOURCE_DIR;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {  // before minutes of firmware figures
+    std::fprintf(stderr, "robuter-plan-bench: %s: not a folder of MovingAI maps\n", dir.c_str());
+    return 2;
+  }
   // ROBUTER_BENCH_STRIDE=n runs every n-th scenario (default 1: all), ROBUTER_BENCH_REPS the
   // repetitions per engine (default 3, best kept).
   const char* st = std::getenv("ROBUTER_BENCH_STRIDE");
