@@ -86,6 +86,27 @@ TEST(Pictures, RobuterSimRefusesBadArguments) {
   EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld), 0);
 }
 
+// Issue #17: the building floor with its place graph and a route drawn over it; the graph's
+// ink is there (the same picture without it has fewer coloured pixels); bad --places/--route refused.
+TEST(Pictures, RobuterSimDrawsThePlaceGraphAndARoute) {
+  const std::string floor = std::string(ROBUTER_WORLDS_DIR) + "/building_floor.toml";
+  const std::string graph = std::string(ROBUTER_WORLDS_DIR) + "/building_floor.places.toml";
+  const std::string bare = kOut + "/floor_bare.png", drawn = kOut + "/floor_places.png";
+  std::filesystem::remove(drawn);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + floor + " -o " + bare), 0);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + floor + " --places " + graph +
+                " --route corridor-ew-1,room-16 -o " + drawn), 0);
+  int w = 0, h = 0, w2 = 0, h2 = 0;
+  const double without = ink(bare, w, h), with = ink(drawn, w2, h2);
+  EXPECT_EQ(w, w2);
+  EXPECT_GT(with, without + 0.02) << "places, doors, centres and the route add ink";
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + floor + " --route corridor-ew-1,room-16 -o " + drawn), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + floor + " --places " + graph + " --route corridor-ew-1 -o " + drawn), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + floor + " --places " + graph + " --route a,b -o " + drawn), 0);
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + floor + " --places " + floor + " -o " + drawn), 0)
+      << "a world is not a place graph";
+}
+
 TEST(Pictures, RobuterdWritesAPictureAtExit) {
   const std::string out = kOut + "/robuterd_exit.png";
   std::filesystem::remove(out);

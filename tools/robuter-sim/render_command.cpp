@@ -7,10 +7,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 
 #include "hal/sim/render.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world_io.hpp"
+#include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_picture.hpp"
 #include "picture/page.hpp"
 
 namespace robuter::simtool {
@@ -105,7 +108,34 @@ int run_render(const RenderRequest& r) {
     const sim::PanTiltReading reading = sim::measure_pan_tilt(model, pose, mount, direction);
     scene.pan_tilt = sim::pan_tilt_beams(pose, mount, direction, reading, params);
   }
+  std::optional<places::PlaceGraph> graph;
+  places::PlaceRoute route;
+  if (!r.route.empty() && r.places.empty()) return fail("--route needs --places (the place graph it runs over)");
+  if (!r.places.empty()) {
+    auto g = places::load_place_graph(r.places);
+    if (!g) return fail(g.error().describe());
+    graph = std::move(g).value();
+    if (!r.route.empty()) {
+      const auto comma = r.route.find(',');
+      const auto from = comma == std::string::npos ? std::nullopt : graph->find(r.route.substr(0, comma));
+      const auto to = comma == std::string::npos ? std::nullopt : graph->find(r.route.substr(comma + 1));
+      if (!from || !to) return fail("--route '" + r.route + "': expected FROM,TO, two place names of " + r.places);
+      route = places::shortest_route(*graph, *from, *to);
+      if (!route.found) return fail("--route '" + r.route + "': no chain of doors joins these places");
+    }
+    scene.overlay = places::place_graph_overlay(*graph, r.route.empty() ? nullptr : &route);
+    scene.keys = places::place_graph_keys(!r.route.empty());
+  }
   scene.title = r.title.empty() ? default_title(world.name, pose, scene) : r.title;
+  if (graph && r.title.empty()) {
+    char extra[160];
+    std::snprintf(extra, sizeof extra, "; %zu places, %zu doors", graph->places().size(), graph->doors().size());
+    scene.title += extra;
+    if (route.found) {
+      std::snprintf(extra, sizeof extra, "; route %s: %zu doors, %.1f m", r.route.c_str(), route.legs.size(), route.length);
+      scene.title += extra;
+    }
+  }
   sim::RenderOptions options;
   options.pixels_per_metre = r.scale;
   const auto s = sim::render_file(scene, options, r.output);

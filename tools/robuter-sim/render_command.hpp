@@ -15,6 +15,8 @@ struct RenderRequest {
   std::optional<double> pan_tilt_deg;  // draw the pan-tilt pair at this pan angle, degrees
   std::string output;                  // .png, .svg or .pdf
   double scale = 0.0;                  // pixels (points) per metre; 0 = a 1000 px wide picture
+  std::string places;                  // place graph file to draw over the world; empty = none
+  std::string route;                   // "FROM,TO" place names: the route to draw (needs places)
   std::string title;                   // title; empty = world, pose, date and the sonars' report
 };
 
