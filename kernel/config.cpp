@@ -392,11 +392,20 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
                       fmt::format("{} must be longer than can.heartbeat_ms {}", c.heartbeat_timeout_ms, c.heartbeat_ms));
 }
 
+// Why: [places] file, relative to the configuration's folder like planner.map_file.
+void bind_places(Binder& b, PlacesConfig& p) {
+  b.string("places.file", p.file);
+  if (b.error() || p.file.empty()) return;
+  p.file_line = b.line_of("places.file");
+  const std::filesystem::path f(p.file);
+  if (f.is_relative()) p.file = (std::filesystem::path(b.file()).parent_path() / f).lexically_normal().string();
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "demo", "process", "modules", "links", "hardware", "can"})
+                        "demo", "process", "modules", "links", "hardware", "can", "places"})
     b.table(t);
 
   b.foreign("sim");  // the simulated robot's own parameters: hal/sitl checks them
@@ -447,6 +456,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.boolean("permissions.shutdown", c.permissions.shutdown);
 
   bind_planner(b, c.planner);
+  bind_places(b, c.places);
   bind_doors(b, c.ptu, c.gate, c.doors);
   bind_links(b, c.links);
   bind_gpio(b, root, c.gpio);

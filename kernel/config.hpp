@@ -173,6 +173,12 @@ struct PlannerModuleConfig {
 long long planner_cell_limit(const PlannerModuleConfig& p);
 
 // A serial command link ([links.serial]; docs/HARDWARE.md).
+// [places]: seed 003's topological map (docs/PLACES.md).
+struct PlacesConfig {
+  std::string file;   // place graph ("robuter-places 1", odometry frame), resolved against the configuration's folder; empty = none
+  int file_line = 0;  // line of places.file in the configuration (0: not written)
+};
+
 struct SerialLinkConfig {
   std::string device;                        // its device, empty = none (robuterd --serial overrides)
   std::uint32_t baud = 9600;                 // line rate, bit/s (robuterd --baud overrides)
@@ -252,6 +258,7 @@ struct Config {
   EmergencyConfig emergency;
   PermissionsConfig permissions;
   PlannerModuleConfig planner;
+  PlacesConfig places;                       // [places]
   PanTiltConfig ptu;
   GateConfig gate;
   DoorsConfig doors;

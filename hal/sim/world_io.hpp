@@ -11,6 +11,10 @@
 
 namespace robuter::sim {
 
+// Why: which files of a worlds folder are worlds: ".toml" and ".env", but not a place graph
+// kept beside its world ("NAME.places.toml", docs/PLACES.md).
+bool is_world_file(const std::filesystem::path& path);
+
 // Loads a world by extension: ".toml" (project format) or anything else as a seed-000
 // environment file. Errors name the file and line; nothing throws.
 Result<World> load_world(const std::filesystem::path& path, const RobotGeometry& robot = {});

@@ -359,4 +359,10 @@ Result<World> load_world(const std::filesystem::path& path, const RobotGeometry&
   return w;
 }
 
+bool is_world_file(const std::filesystem::path& path) {
+  const auto ext = path.extension();
+  if (ext == ".env") return true;
+  return ext == ".toml" && path.stem().extension() != ".places";
+}
+
 }  // namespace robuter::sim

@@ -31,6 +31,7 @@
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "modules/planner/prior_map.hpp"
+#include "modules/places/place_graph_file.hpp"
 #include "modules/firmware/prior_structure.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
@@ -157,6 +158,12 @@ std::optional<std::string> Firmware::setup() {
     if (!loaded) return "configuration error: planner.map_file: " + loaded.error().text();
     planner_map_note_ = std::move(loaded->note);
     prior_map = std::move(loaded->map);
+  }
+  if (!cfg_.places.file.empty()) {
+    auto graph = places::load_place_graph(cfg_.places.file);
+    if (!graph) return "configuration error: places.file: " + graph.error().describe();
+    places_ = std::make_unique<const places::PlaceGraph>(std::move(graph).value());
+    places_note_ = fmt::format("{}: {} places, {} doors", cfg_.places.file, places_->places().size(), places_->doors().size());
   }
   if (opt_.speed == 0.0) clock_ = std::make_unique<VirtualClock>();
   else if (opt_.speed == 1.0) clock_ = std::make_unique<RealClock>();
@@ -293,6 +300,7 @@ std::optional<std::string> Firmware::setup() {
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
   serial->set_executor(executor.get());  // read-your-writes: ASN, AC then BO
+  serial->set_places(places_.get());
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"can", can_},
                                   {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},

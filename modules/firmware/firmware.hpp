@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "modules/places/place_graph.hpp"
 #include "hal/api/byte_stream.hpp"
 #include "hal/sitl/sim_robot.hpp"
 #include "kernel/clock.hpp"
@@ -91,11 +92,14 @@ class Firmware {
   planner::PictureWriter* planner_pictures() { return picture_writer_.get(); }
   // What setup() made of [planner] map_file (one line for --check-config), empty without one.
   const std::string& planner_map_note() const { return planner_map_note_; }
+  const std::string& places_note() const { return places_note_; }
 
  private:
   Config cfg_;
   FirmwareOptions opt_;
   std::string planner_map_note_;  // [planner] map_file as loaded, for --check-config
+  std::unique_ptr<const places::PlaceGraph> places_;  // [places] file as loaded (XN, XI); null = none
+  std::string places_note_;       // [places] file as loaded, for --check-config
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
   std::unique_ptr<safety::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded

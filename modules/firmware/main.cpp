@@ -125,8 +125,9 @@ int main(int argc, char** argv) {
   }
   if (check_only) {
     const std::string& map = fw.planner_map_note();
-    fmt::print("robuterd: configuration {} is valid ({} processes){}{}\n", cfg.source, fw.kernel().process_count(),
-               map.empty() ? "" : "; ", map);
+    const std::string& places = fw.places_note();
+    fmt::print("robuterd: configuration {} is valid ({} processes){}{}{}{}\n", cfg.source, fw.kernel().process_count(),
+               map.empty() ? "" : "; ", map, places.empty() ? "" : "; place graph ", places);
     return kExitOk;
   }
   for (std::size_t i = 0; i < opt.ptys.size(); ++i) {

@@ -23,6 +23,8 @@ class Reader {
   Reader(std::string_view text, std::string_view file) : file_(file), root_(sim::detail::parse_toml(text, file)) {}
 
   PlaceGraph read() {
+    // First: a world or a configuration given for a place graph is told so, not its first table.
+    if (!root_.contains("places")) fail(1, "missing [places] table (format = \"robuter-places 1\"): not a place graph");
     for (const auto& [k, v] : root_) {
       const std::string key(k.str());
       const bool array = key == "place" || key == "door";

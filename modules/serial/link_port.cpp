@@ -3,6 +3,7 @@
 #include "modules/serial/link_port.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "kernel/kernel.hpp"
@@ -396,6 +397,42 @@ PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept
   out.scans = s.scans;
   out.plan_us = s.plan_us;
   out.max_us = s.run_us_max;
+  return PortResult::ok;
+}
+
+// Why: one place's report, numbers 1-based in the file's order; positions to 0.1 mm.
+static void fill_place(const places::PlaceGraph& g, std::size_t i, protocol::PlaceReport& out) {
+  const places::Place& p = g.places()[i];
+  out.count = static_cast<std::int32_t>(g.places().size());
+  out.number = static_cast<std::int32_t>(i + 1);
+  out.name = p.name;
+  out.centre_x = static_cast<std::int32_t>(std::lround(p.centre.x() * 1e4));
+  out.centre_y = static_cast<std::int32_t>(std::lround(p.centre.y() * 1e4));
+  const auto& doors = g.doors_of(i);
+  out.neighbours = static_cast<std::int32_t>(doors.size());
+  for (std::size_t k = 0; k < doors.size() && k < protocol::PlaceReport::kMaxNeighbours; ++k) {
+    const places::Door& d = g.doors()[doors[k]];
+    out.neighbour[k] = static_cast<std::int32_t>((d.a == i ? d.b : d.a) + 1);
+  }
+}
+
+PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
+  if (places_ == nullptr) return PortResult::unavailable;
+  const Posture& p = posture_.peek();
+  const auto at = places_->place_at(places::Vec2(p.x * 1e-4, p.y * 1e-4));
+  if (!at) {
+    out = protocol::PlaceReport{};
+    out.count = static_cast<std::int32_t>(places_->places().size());
+    return PortResult::ok;
+  }
+  fill_place(*places_, *at, out);
+  return PortResult::ok;
+}
+
+PortResult LinkPort::place_info(std::int32_t number, protocol::PlaceReport& out) const noexcept {
+  if (places_ == nullptr) return PortResult::unavailable;
+  if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
+  fill_place(*places_, static_cast<std::size_t>(number - 1), out);
   return PortResult::ok;
 }
 

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "modules/places/place_graph.hpp"
 #include "kernel/config.hpp"
 #include "modules/topics.hpp"
 #include "protocol/codec/robot_port.hpp"
@@ -90,6 +91,10 @@ class LinkPort final : public protocol::RobotPort {
   protocol::PortResult set_goal(const protocol::Posture& goal, bool with_theta) noexcept override;
   protocol::PortResult cancel_goal() noexcept override;
   protocol::PortResult planner_status(protocol::PlannerReport& out) const noexcept override;
+  protocol::PortResult place_here(protocol::PlaceReport& out) const noexcept override;
+  protocol::PortResult place_info(std::int32_t number, protocol::PlaceReport& out) const noexcept override;
+  // Why: the place graph XN and XI answer from (immutable, owned by the firmware); null = none.
+  void set_places(const places::PlaceGraph* graph) { places_ = graph; }
   protocol::PortResult planner_map(protocol::MapWindow& out) const noexcept override;
   // pan-tilt, passage finder, door crossing, demonstration (XD)
   protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
@@ -110,6 +115,7 @@ class LinkPort final : public protocol::RobotPort {
   Reader<UltrasonicTiming> timing_;
   Reader<EmergencyState> emergency_;
   Reader<PlannerStatus> planner_status_;
+  const places::PlaceGraph* places_ = nullptr;  // [places] file, loaded at start-up; null = none
   Reader<PlannerMapWindow> planner_map_;
   Reader<PanTiltScan> pan_tilt_scan_;
   Reader<ModeStatus> pan_tilt_status_;

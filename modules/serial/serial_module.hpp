@@ -32,6 +32,7 @@ class SerialModule final : public Process {
   void set_emergency(Process* p) { port_.set_emergency(p); }
   // The executor, run before the next line after a servo or odometry request (read-your-writes).
   void set_executor(Process* p) { port_.set_executor(p); }
+  void set_places(const places::PlaceGraph* graph) { port_.set_places(graph); }  // XN, XI
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
   void close(Kernel& k) override;

@@ -53,6 +53,8 @@ enum class CommandId : std::uint8_t {
   get_planner_map,         // XM
   get_modes,               // XD (pan-tilt, gate, doors, demo)
   set_demo,                // XT0 / XT1 (demonstration course)
+  get_place,               // XN (the place the robot is in; docs/PLACES.md)
+  get_place_info,          // XI <n> (one place of the place graph)
 };
 
 }  // namespace robuter::protocol

@@ -11,7 +11,8 @@ namespace {
 
 // Parameter ranges, in the units of docs/PROTOCOL.md. The port may refuse narrower ranges.
 constexpr IntRange kAny{};                   // any 32-bit value (x, y in 0.1 mm)
-constexpr IntRange kTheta{-17999, 18000};    // 0.01 degree, (-180, 180]
+constexpr IntRange kTheta{-17999, 18000};
+constexpr IntRange kPlaceNumber{1, 9999};   // a place's number, 1-based in the file's order    // 0.01 degree, (-180, 180]
 constexpr IntRange kSpeed{-1000, 1000};      // cm/s: far beyond any Robuter, a sanity bound
 constexpr IntRange kNodeDelay{0, 1000};      // ticks
 constexpr IntRange kUsTimeout{1, 1000};      // ms
@@ -90,6 +91,9 @@ constexpr std::array kTable = {
                "planner map around the robot"},
     CommandRow{'X', 'D', C::get_modes, no_params(), handle_get_modes, "pan-tilt, gate, door-crossing and demonstration states"},
     CommandRow{'X', 'T', C::set_demo, one_of("01"), handle_set_demo, "demonstration course stop/start"},
+    CommandRow{'X', 'N', C::get_place, no_params(), handle_get_place, "the place the robot is in (place graph)"},
+    CommandRow{'X', 'I', C::get_place_info, integers(kPlaceNumber), handle_get_place_info,
+               "place n: name, centre, neighbours"},
 };
 
 }  // namespace

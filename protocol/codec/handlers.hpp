@@ -62,6 +62,8 @@ void handle_set_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;        
 void handle_cancel_goal(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XH
 void handle_get_planner_status(const Command&, RobotPort&, ReplyWriter&) noexcept;  // XP
 void handle_get_planner_map(const Command&, RobotPort&, ReplyWriter&) noexcept;     // XM
+void handle_get_place(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XN
+void handle_get_place_info(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XI
 
 // X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD

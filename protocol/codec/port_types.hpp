@@ -4,6 +4,7 @@
 
 #include <array>
 #include <bitset>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -109,6 +110,18 @@ struct PlannerReport {
   std::int64_t scans = 0;         // stops to scan for this goal
   std::int64_t plan_us = 0;       // execution time of the last plan's search, microseconds
   std::int64_t max_us = 0;        // longest activation of the planner since start, microseconds
+};
+
+// One place of the place graph, for XN (the robot's place) and XI (any place).
+struct PlaceReport {
+  static constexpr std::size_t kMaxNeighbours = 16;  // listed in XI (more are cut)
+  std::int32_t count = 0;            // places in the graph
+  std::int32_t number = 0;           // this place, 1-based in the file's order; 0: none (XN outside every place)
+  std::string_view name{};           // its name (valid while the line is handled); empty when none
+  std::int32_t centre_x = 0;         // its centre, 0.1 mm (the odometry frame)
+  std::int32_t centre_y = 0;         // 0.1 mm
+  std::int32_t neighbours = 0;       // places one door away (may exceed what is listed)
+  std::array<std::int32_t, kMaxNeighbours> neighbour{};  // their numbers, in the order of the doors
 };
 
 // The planner's map around the robot for XM: seed 003's characters, top row first.

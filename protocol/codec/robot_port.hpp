@@ -77,6 +77,17 @@ class RobotPort {
     (void)out;
     return PortResult::unavailable;
   }
+  // ---- extensions (X): the place graph ([places] file); without one: unavailable ----
+  virtual PortResult place_here(PlaceReport& out) const noexcept {               // XN
+    (void)out;
+    return PortResult::unavailable;
+  }
+  // XI: place `number` (1-based); out_of_range past the last.
+  virtual PortResult place_info(std::int32_t number, PlaceReport& out) const noexcept {
+    (void)number;
+    (void)out;
+    return PortResult::unavailable;
+  }
 
   // ---- extensions (X): pan-tilt, passage finder and door crossing states (XD) ----
   virtual PortResult modes(ModesReport& out) const noexcept {

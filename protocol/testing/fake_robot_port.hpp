@@ -38,6 +38,9 @@ class FakeRobotPort final : public RobotPort {
   bool has_planner = true;                   // planner calls answer unavailable when false
   PlannerReport planner{PlannerState::moving, 150000, 55000, 13950, 1480, 3, 4, 812, 4650};
   std::array<char, kMapWindowSide * kMapWindowSide> map_cells{};  // XM window, filled by the constructor
+  std::int32_t place_count = 0;              // places in the graph; 0: no place graph (XN, XI unavailable)
+  PlaceReport here{};                        // XN answer (count filled in)
+  PlaceReport info{};                        // XI answer (count and number filled in)
 
   // ---- what requests return ----
   PortResult result = PortResult::ok;          // default answer of every request
@@ -164,6 +167,20 @@ class FakeRobotPort final : public RobotPort {
   PortResult planner_map(MapWindow& out) const noexcept override {
     if (!has_planner) return PortResult::unavailable;
     out = MapWindow{kMapWindowSide, 50, -12345, 67890, std::string_view(map_cells.data(), map_cells.size())};
+    return PortResult::ok;
+  }
+  PortResult place_here(PlaceReport& out) const noexcept override {
+    if (place_count == 0) return PortResult::unavailable;
+    out = here;
+    out.count = place_count;
+    return PortResult::ok;
+  }
+  PortResult place_info(std::int32_t number, PlaceReport& out) const noexcept override {
+    if (place_count == 0) return PortResult::unavailable;
+    if (number > place_count) return PortResult::out_of_range;
+    out = info;
+    out.count = place_count;
+    out.number = number;
     return PortResult::ok;
   }
 

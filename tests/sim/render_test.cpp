@@ -104,7 +104,7 @@ TEST(Render, DefaultWorldToSvg) {
 TEST(Render, EveryShippedWorld) {
   for (const auto& e : std::filesystem::directory_iterator(ROBUTER_WORLDS_DIR)) {
     const auto ext = e.path().extension();
-    if (ext != ".toml" && ext != ".env") continue;
+    if (!is_world_file(e.path())) continue;
     SCOPED_TRACE(e.path().string());
     auto w = load_world(e.path());
     ASSERT_TRUE(w.ok());

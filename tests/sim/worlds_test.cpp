@@ -30,11 +30,18 @@ const Marker* marker(const World& w, const std::string& name) {
   return nullptr;
 }
 
+TEST(ShippedWorlds, APlaceGraphBesideItsWorldIsNotAWorld) {
+  EXPECT_TRUE(is_world_file("worlds/building_floor.toml"));
+  EXPECT_TRUE(is_world_file("seed000_lab.env"));
+  EXPECT_FALSE(is_world_file("worlds/building_floor.places.toml"));
+  EXPECT_FALSE(is_world_file("notes.txt"));
+}
+
 TEST(ShippedWorlds, AllLoad) {
   std::set<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(ROBUTER_WORLDS_DIR)) {
     const auto ext = e.path().extension();
-    if (ext != ".toml" && ext != ".env") continue;
+    if (!is_world_file(e.path())) continue;
     SCOPED_TRACE(e.path().string());
     auto r = load_world(e.path());
     ASSERT_TRUE(r.ok()) << r.error().describe();
@@ -45,7 +52,7 @@ TEST(ShippedWorlds, AllLoad) {
     names.insert(e.path().filename().string());
   }
   for (const char* n : {"default.toml", "empty.toml", "seed002_course.toml", "seed000_lab.toml",
-                        "seed000_lab.env", "door90.toml", "door100.toml", "gap70.toml"}) {
+                        "seed000_lab.env", "door90.toml", "door100.toml", "gap70.toml", "building_floor.toml"}) {
     EXPECT_TRUE(names.count(n)) << n;
   }
 }

@@ -9,7 +9,7 @@
 namespace robuter::ctl {
 
 namespace {
-constexpr std::array<CommandHelp, 54> kTable{{
+constexpr std::array<CommandHelp, 56> kTable{{
     {"BO", "BO", "S <x> <y> <theta> <servo> <clock>", "posture: x, y in 0.1 mm, theta in 0.01 deg"},
     {"BU", "BU", "U <u1>…<u24> <servo> <clock>", "the 24 ultrasonic ranges, mm (0 = inactive or no echo yet)"},
     {"BV", "BV", "V <x> <y> <theta> <servo> <u1>…<u24> <clock>", "posture and ranges"},
@@ -60,6 +60,8 @@ constexpr std::array<CommandHelp, 54> kTable{{
     {"XP", "XP", "P <state> <goal-x> <goal-y> <path-mm> <prefix-mm> <replans> <scans> <plan-us> <max-us> <clock>",
      "grid planner status"},
     {"XM", "XM", "M <w> <h> <cell-mm> <x> <y> <row1>|…|<rowh>", "the planner's map around the robot, drawn"},
+    {"XN", "XN", "N <count> <number> <name>", "the place the robot is in (place graph; 0 - outside every place)"},
+    {"XI", "XI <n>", "I <n> <name> <centre-x> <centre-y> <k> <neighbour>…", "place n of the place graph: centre (0.1 mm), neighbours by door"},
     {"help", "help [command]", "", "this list, or one command's syntax and reply", true},
     {"stop", "stop", "", "send the stop byte 0x18 now (as Ctrl-X): the robot stops and latches; XR re-enables", true},
     {"status", "status", "", "the latest status-stream line, decoded", true},

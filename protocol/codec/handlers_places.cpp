@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Handlers of the place graph's X extensions: the robot's place (XN) and one place (XI).
+#include "protocol/codec/handlers.hpp"
+
+#include <algorithm>
+
+namespace robuter::protocol {
+
+// XN → `N <count> <number> <name>`: the place holding the robot's odometry position (0 and `-`
+// outside every place).
+void handle_get_place(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
+  PlaceReport r;
+  const PortResult res = port.place_here(r);
+  if (res != PortResult::ok) {
+    out.error(error_for(res));
+    return;
+  }
+  out.open("N");
+  out.field(r.count);
+  out.field(r.number);
+  out.word(r.number > 0 ? r.name : std::string_view("-"));
+}
+
+// XI <n> → `I <n> <name> <centre-x> <centre-y> <k> <neighbour>…`: centre in 0.1 mm, k places
+// one door away and (at most 16 of) their numbers.
+void handle_get_place_info(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
+  PlaceReport r;
+  const PortResult res = port.place_info(cmd.ints[0], r);
+  if (res != PortResult::ok) {
+    out.error(error_for(res));
+    return;
+  }
+  out.open("I");
+  out.field(r.number);
+  out.word(r.name);
+  out.field(r.centre_x);
+  out.field(r.centre_y);
+  out.field(r.neighbours);
+  const auto listed = static_cast<std::size_t>(std::clamp<std::int32_t>(r.neighbours, 0, static_cast<std::int32_t>(PlaceReport::kMaxNeighbours)));
+  out.fields(std::span<const std::int32_t>(r.neighbour.data(), listed));
+}
+
+}  // namespace robuter::protocol

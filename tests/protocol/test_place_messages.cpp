@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The place graph's X extensions: XN (the robot's place) and XI <n> (one place), on a fake port.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/protocol/codec_harness.hpp"
+
+namespace robuter::protocol::testing {
+namespace {
+
+TEST(PlaceMessages, WithoutAPlaceGraphBothAreUnavailable) {
+  Harness h;
+  h.codec.session().verbose_errors = true;
+  EXPECT_EQ(h.ask("XN"), "error 12 unavailable");
+  EXPECT_EQ(h.ask("XI 1"), "error 12 unavailable");
+}
+
+TEST(PlaceMessages, XNNamesThePlaceOrADash) {
+  Harness h;
+  h.port.place_count = 32;
+  h.port.here.number = 3;
+  h.port.here.name = "corridor-ew-1";
+  EXPECT_EQ(h.ask("XN"), "N 32 3 corridor-ew-1");
+  h.port.here = PlaceReport{};
+  EXPECT_EQ(h.ask("XN"), "N 32 0 -") << "outside every place";
+  h.codec.session().verbose_errors = true;
+  EXPECT_EQ(h.ask("XN 1"), "error 2 bad-parameter-count");
+}
+
+TEST(PlaceMessages, XIGivesNameCentreAndNeighbours) {
+  Harness h;
+  h.port.place_count = 32;
+  h.port.info.name = "room-16";
+  h.port.info.centre_x = 541000;
+  h.port.info.centre_y = -306500;
+  h.port.info.neighbours = 2;
+  h.port.info.neighbour = {5, 31};
+  EXPECT_EQ(h.ask("XI 16"), "I 16 room-16 541000 -306500 2 5 31");
+  h.port.info.neighbours = 20;  // more than are listed
+  for (std::size_t k = 0; k < PlaceReport::kMaxNeighbours; ++k) h.port.info.neighbour[k] = static_cast<std::int32_t>(k + 1);
+  EXPECT_EQ(h.ask("XI 16"), "I 16 room-16 541000 -306500 20 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16");
+  h.codec.session().verbose_errors = true;
+  EXPECT_EQ(h.ask("XI 33"), "error 4 out-of-range") << "past the last place: the port";
+  EXPECT_EQ(h.ask("XI 0"), "error 4 out-of-range") << "numbers start at 1: the decoder";
+  EXPECT_EQ(h.ask("XI"), "error 2 bad-parameter-count");
+  EXPECT_EQ(h.ask("XI x"), "error 3 not-a-number");
+}
+
+}  // namespace
+}  // namespace robuter::protocol::testing
