@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "hal/sim/geometry.hpp"
+
 namespace robuter::places {
 
 namespace {
@@ -16,13 +18,6 @@ constexpr double kOnEdge = 1e-3;  // m: a point this close to an edge is on it
 double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 u = b - a, v = c - a;
   return u.x() * v.y() - u.y() * v.x();
-}
-
-double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
 }
 
 }  // namespace
@@ -50,21 +45,13 @@ std::optional<std::size_t> PlaceGraph::place_at(const Vec2& point) const {
 bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
   if (polygon.size() < 3) return false;
   if (distance_to_boundary(polygon, p) <= kOnEdge) return true;
-  bool in = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2& a = polygon[i];
-    const Vec2& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
+  return sim::point_in_polygon(p, polygon);  // even-odd; the boundary was decided above
 }
 
 double distance_to_boundary(const std::vector<Vec2>& polygon, const Vec2& p) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-    best = std::min(best, distance_to_segment(p, polygon[j], polygon[i]));
+    best = std::min(best, sim::point_segment_distance(p, polygon[j], polygon[i]));
   return best;
 }
 

@@ -5,18 +5,13 @@
 
 #include <limits>
 
+#include "hal/sim/geometry.hpp"
 #include "hal/sim/world_io.hpp"
 #include "modules/places/place_graph_file.hpp"
 #include "modules/places/place_route.hpp"
 
 namespace robuter::places {
 namespace {
-
-double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
 
 struct Floor {
   sim::World world;
@@ -53,7 +48,7 @@ TEST(BuildingFloor, EveryCentreIsClearOfWallsAndFurniture) {
   const Floor& f = floor_plan();
   for (const Place& p : f.graph.places()) {
     double clear = std::numeric_limits<double>::infinity();
-    for (const sim::Segment& s : f.world.segments()) clear = std::min(clear, distance_to_segment(p.centre, s.a, s.b));
+    for (const sim::Segment& s : f.world.segments()) clear = std::min(clear, sim::point_segment_distance(p.centre, s.a, s.b));
     EXPECT_GE(clear, 1.0) << p.name;
     EXPECT_EQ(f.world.obstacle_containing(p.centre), -1) << p.name;
   }
