@@ -69,6 +69,14 @@ Vec2 Fields::as_point(const toml::node& node, std::string_view key) const {
   return {as_number(*arr->get(0), key) * scale_, as_number(*arr->get(1), key) * scale_};
 }
 
+double Fields::units() {
+  const auto u = opt_string("units");
+  if (!u || *u == "m") return 1.0;
+  if (*u == "cm") return 0.01;
+  if (*u == "mm") return 0.001;
+  fail_at(*get("units"), "units: expected \"m\", \"cm\" or \"mm\", found \"" + *u + "\"");
+}
+
 // Required keys fail at the table's own line when missing.
 double Fields::number(std::string_view key) {
   const auto* n = get(key);

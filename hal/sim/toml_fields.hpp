@@ -49,6 +49,10 @@ class Fields {
   Vec2 point(std::string_view key);                          // required [x, y], m
   std::vector<Vec2> points(std::string_view key);            // required [[x, y], ...], m
 
+  // Why: a file's length unit, one rule for every project TOML file: the key `units` ("m", "cm"
+  // or "mm"), in metres per unit; 1 when absent.
+  double units();
+
   // Throws for the first key (in file order) that no getter asked for.
   void finish() const;
 

@@ -104,17 +104,7 @@ class TomlWorldReader {
     if (t == nullptr) return;
     Fields f(*t, file_, "[world]");
     if (const auto n = f.opt_string("name")) world_.name = *n;
-    if (const auto u = f.opt_string("units")) {
-      if (*u == "m") {
-        scale_ = 1.0;
-      } else if (*u == "cm") {
-        scale_ = 0.01;
-      } else if (*u == "mm") {
-        scale_ = 0.001;
-      } else {
-        f.fail_at(*f.get("units"), "units: expected \"m\", \"cm\" or \"mm\", found \"" + *u + "\"");
-      }
-    }
+    scale_ = f.units();
     Fields g(*t, file_, "[world]", scale_);
     g.get("name");
     g.get("units");

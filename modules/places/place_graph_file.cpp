@@ -52,12 +52,7 @@ class Reader {
     const auto format = f.opt_string("format");
     if (!format) f.fail(f.line(), "missing key 'format' (\"robuter-places 1\")");
     if (*format != kFormat) f.fail_at(*f.get("format"), "format: expected \"robuter-places 1\", found \"" + *format + "\"");
-    if (const auto u = f.opt_string("units")) {
-      if (*u == "m") scale_ = 1.0;
-      else if (*u == "cm") scale_ = 0.01;
-      else if (*u == "mm") scale_ = 0.001;
-      else f.fail_at(*f.get("units"), "units: expected \"m\", \"cm\" or \"mm\", found \"" + *u + "\"");
-    }
+    scale_ = f.units();
     f.opt_string("world");
     f.finish();
   }
