@@ -2,6 +2,7 @@
 // Tests of footprints and the (x, y, heading) search: the Robuter passes a 90 cm door, a disc does not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "modules/planner/lib/cost_field.hpp"
@@ -236,6 +237,53 @@ TEST(HeadingSearch, GoalOutsideAndBlockedStart) {
   planner.set_map(m);
   EXPECT_EQ(planner.plan({1.5, 1.5, 0.0}, {10.0, 1.0}).status, PlanStatus::GoalOutside);
   EXPECT_EQ(planner.plan({1.52, 1.52, 0.0}, {0.6, 0.6}).status, PlanStatus::StartBlocked);
+}
+
+// Why: the row-bitset build (span table, shifted word ORs) must equal brute force on maps
+// several words wide, for runs wider than one 64-cell piece and offsets past a word either side
+// of the robot's cell, for class layers and bit layers alike.
+TEST(CSpaceLayer, WideMasksOnWideMapsEqualBruteForce) {
+  std::mt19937 rng(11);
+  for (int round = 0; round < 6; ++round) {
+    const int w = 70 + 37 * round, h = 9 + 3 * round;
+    OccupancyMap map(MapGeometry{w, h, 0.05, {}});
+    std::uniform_int_distribution<int> pick(0, 59);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int v = pick(rng);
+        if (v == 0) map.mark_occupied({x, y});
+        else if (v < 30) map.mark_free({x, y});
+      }
+    map.clear_changes();
+    // Runs of 1..200 cells at offsets from -150 to +150, a row or two each.
+    FootprintMask mask;
+    std::uniform_int_distribution<int> lo(-150, 100), len(0, 199), dy(-3, 3);
+    for (int k = 0; k < 7; ++k) {
+      const int a = lo(rng);
+      mask.runs.push_back({dy(rng), a, a + len(rng)});
+    }
+    std::sort(mask.runs.begin(), mask.runs.end(),
+              [](const MaskRun& a, const MaskRun& b) { return a.dy != b.dy ? a.dy < b.dy : a.lo < b.lo; });
+    CSpaceLayer layer;
+    layer.build(map, mask);
+    SliceBits bits;
+    bits.resize(w, h, 3);
+    CSpaceLayer bit_layer;
+    bit_layer.build_bits(map, mask, bits, 2);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        bool hit = map.state({x, y}) == CellState::Occupied;
+        for (const MaskRun& r : mask.runs)
+          for (int dx = r.lo; dx <= r.hi && !hit; ++dx) {
+            const Cell o{x + dx, y + r.dy};
+            hit = map.contains(o) && map.state(o) == CellState::Occupied;
+          }
+        const std::uint8_t want = hit ? kBlocked : map.state({x, y}) == CellState::Unknown ? kUnknown : kFree;
+        ASSERT_EQ(layer.grid().at({x, y}), want) << "round " << round << " at " << x << "," << y;
+        ASSERT_EQ(bits.blocked({x, y}, 2), hit) << "round " << round << " at " << x << "," << y;
+        ASSERT_TRUE(bits.blocked({x, y}, 0) && bits.blocked({x, y}, 1));  // other slices untouched
+      }
+  }
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include "modules/planner/lib/cspace.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 namespace robuter::plan {
 namespace {
@@ -21,6 +23,13 @@ struct ClassStore {
 
   std::uint32_t index(Cell c) const { return grid.index(c); }
   bool blocked(std::uint32_t g) const { return grid.cls[g] == kBlocked; }
+  // Why: a full build's row: the cells' own classes, then blocked where `bits` are set.
+  void put_row(int y, const std::uint64_t* bits, const std::uint8_t* base, int w) {
+    std::uint8_t* dst = grid.cls.data() + grid.index({0, y});
+    std::memcpy(dst, base, static_cast<std::size_t>(w));
+    for (int j = 0; j * 64 < w; ++j)
+      for (std::uint64_t v = bits[j]; v != 0; v &= v - 1) dst[j * 64 + std::countr_zero(v)] = kBlocked;
+  }
   void put(std::uint32_t g, std::uint8_t now) { grid.cls[g] = now; }
   // Why: write one cell's class and report it (once per update) if it changed.
   void set(CSpaceStack& stack, std::uint32_t i, std::uint32_t g, std::uint8_t now,
@@ -52,6 +61,15 @@ struct BitStore {
     std::uint32_t& w = data[g * words + word];
     w = (w & ~bit) | (now == kBlocked ? bit : 0u);
   }
+  // Why: as ClassStore::put_row: the slice's bit of each cell of row y (blocked by the
+  // footprint, or by the cell's own obstacle).
+  void put_row(int y, const std::uint64_t* bits, const std::uint8_t* base, int w) {
+    std::uint32_t* cell = data + (static_cast<std::size_t>((y + 1) * stride + 1)) * words + word;
+    for (int x = 0; x < w; ++x, cell += words) {
+      const bool b = ((bits[x >> 6] >> (x & 63)) & 1u) != 0 || base[x] == kBlocked;
+      *cell = (*cell & ~bit) | (b ? bit : 0u);
+    }
+  }
   // Why: as ClassStore::set, without classes or reports.
   void set(CSpaceStack&, std::uint32_t, std::uint32_t g, std::uint8_t now, std::vector<ClassChange>*) {
     put(g, now);
@@ -67,72 +85,54 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid) {
 }
 
 void CSpaceLayer::build(const OccupancyMap& map, FootprintMask mask) {
+  CSpaceStack stack;
+  stack.reset(map);
+  build(stack, map, std::move(mask));
+}
+
+void CSpaceLayer::build(const CSpaceStack& stack, const OccupancyMap& map, FootprintMask mask) {
   mask_ = std::move(mask);
   index_mask();
   grid_.resize(map.width(), map.height());
-  ClassStore store{grid_};
-  fill(map, store);
+  rebuild(stack, map);
 }
 
 void CSpaceLayer::build_bits(const OccupancyMap& map, FootprintMask mask, SliceBits& bits, int slice) {
+  CSpaceStack stack;
+  stack.reset(map);
+  build_bits(stack, map, std::move(mask), bits, slice);
+}
+
+void CSpaceLayer::build_bits(const CSpaceStack& stack, const OccupancyMap& map, FootprintMask mask,
+                             SliceBits& bits, int slice) {
   mask_ = std::move(mask);
   index_mask();
   grid_ = PassGrid{};
-  BitStore store{bits, slice};
-  fill(map, store);
+  rebuild_bits(stack, map, bits, slice);
 }
 
-// Why: the full build, written through `store` (every cell of the map once).
+// Why: every cell of the map once, a row at a time: the row's dilation by the mask from the
+// stack's span table (two shifted word ORs per mask run), then the row written through `store`.
 template <class Store>
-void CSpaceLayer::fill(const OccupancyMap& map, Store& store) const {
+void CSpaceLayer::fill(const CSpaceStack& stack, const OccupancyMap& map, Store& store) const {
   const int w = map.width();
-  const int h = map.height();
-  // A temporary table (set_map allocates): prefix[y * (w + 1) + x] = occupied cells in row y with column < x.
-  std::vector<std::uint32_t> prefix(static_cast<std::size_t>(w + 1) * static_cast<std::size_t>(h), 0);
-  for (int y = 0; y < h; ++y) {
-    std::uint32_t* row = prefix.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(w + 1);
-    for (int x = 0; x < w; ++x) {
-      const bool occ = map.state({x, y}) == CellState::Occupied;
-      row[x + 1] = row[x] + (occ ? 1u : 0u);
-    }
-  }
-  // Per output row, add each mask run's count of occupied cells (prefix differences); the
-  // columns where the run lies fully inside the map need no clamping (a vectorisable loop).
-  std::vector<std::uint32_t> acc(static_cast<std::size_t>(w));
-  for (int y = 0; y < h; ++y) {
-    std::fill(acc.begin(), acc.end(), 0u);
-    for (const MaskRun& r : mask_.runs) {
-      const int yy = y + r.dy;
-      if (yy < 0 || yy >= h) continue;
-      const std::uint32_t* row = prefix.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(w + 1);
-      if (row[w] == 0) continue;  // no obstacle in that row (a fresh, unknown map: every row)
-      const int x_in = std::max(0, -r.lo);            // first x with x + lo >= 0
-      const int x_out = std::min(w - 1, w - 1 - r.hi);  // last x with x + hi <= w - 1
-      auto clamped = [&](int x) {
-        const int lo = std::max(x + r.lo, 0);
-        const int hi = std::min(x + r.hi, w - 1);
-        if (lo <= hi) acc[static_cast<std::size_t>(x)] += row[hi + 1] - row[lo];
-      };
-      for (int x = 0; x < std::min(x_in, w); ++x) clamped(x);
-      for (int x = x_in; x <= x_out; ++x)
-        acc[static_cast<std::size_t>(x)] += row[x + r.hi + 1] - row[x + r.lo];
-      for (int x = std::max(x_out + 1, x_in); x < w; ++x) clamped(x);
-    }
-    for (int x = 0; x < w; ++x)
-      store.put(store.index({x, y}), class_of(acc[static_cast<std::size_t>(x)] > 0 ? 1 : 0, map.state_at(map.index({x, y}))));
+  const int words = stack.row_words();
+  std::uint64_t* row = stack.scratch();
+  for (int y = 0; y < map.height(); ++y) {
+    std::fill(row, row + words, std::uint64_t{0});
+    stack.dilate_row(mask_.runs, y, row);
+    store.put_row(y, row, stack.base_row(y), w);
   }
 }
 
 void CSpaceLayer::rebuild(const CSpaceStack& stack, const OccupancyMap& map) {
-  for (int y = 0; y < map.height(); ++y)
-    for (int x = 0; x < map.width(); ++x)
-      grid_.set({x, y}, class_of(meets(stack, x, y) ? 1 : 0, map.state_at(map.index({x, y}))));
+  ClassStore store{grid_};
+  fill(stack, map, store);
 }
 
 void CSpaceLayer::rebuild_bits(const CSpaceStack& stack, const OccupancyMap& map, SliceBits& bits, int slice) const {
   BitStore store{bits, slice};
-  for (int y = 0; y < map.height(); ++y)
-    for (int x = 0; x < map.width(); ++x) store.put(store.index({x, y}), meets(stack, x, y) ? kBlocked : kFree);
+  fill(stack, map, store);
 }
 
 // Why: the bounding box of the mask and of each band of kBandRuns runs, for meets().

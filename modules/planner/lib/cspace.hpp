@@ -27,8 +27,9 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid);
 // footprint placed there meets an occupied cell, else free or unknown as the map says. The layer
 // keeps only its classes (one byte per cell); the occupancy it tests against, and the per-cell
 // marks its update needs, are the CSpaceStack shared by every layer of a planner.
-// A full build sums each mask run's occupied cells with per-row prefix sums (O(cells x mask
-// rows)). An update after a sync (CSpaceStack::begin_sync) keeps no counts: a newly occupied
+// A full build dilates each row of the stack's occupancy bitsets by the mask's runs (two shifted
+// ORs of 64-bit words per run, CSpaceStack::dilate_row: O(cells / 64 x mask rows)), then copies
+// the row's own classes and marks the blocked cells. An update after a sync (CSpaceStack::begin_sync) keeps no counts: a newly occupied
 // map cell blocks every cell whose footprint covers it (a run of them along a row by one span
 // per mask row); a freed one re-tests only the blocked
 // cells whose footprint covered it, each once per update, against the table (the mask's bounding
@@ -39,7 +40,9 @@ void pass_grid_from_map(const OccupancyMap& map, PassGrid& grid);
 // by the same steps, so each bit says exactly whether the class layer would be blocked.
 class CSpaceLayer {
  public:
-  // Why: size for the map and compute everything once.
+  // Why: size for the map and compute everything once, from `stack` (reset for `map`).
+  void build(const CSpaceStack& stack, const OccupancyMap& map, FootprintMask mask);
+  // Why: build() for a caller without a stack (tests): one is made for the map.
   void build(const OccupancyMap& map, FootprintMask mask);
 
   // Why: the map moved under the layer (Planner::shift_map): recompute every class from the
@@ -55,6 +58,8 @@ class CSpaceLayer {
 
   // Why: a turn-clearance layer: the same footprint test, kept as bit `slice` of `bits` (sized
   // by the caller for the map and every slice); grid() stays empty.
+  void build_bits(const CSpaceStack& stack, const OccupancyMap& map, FootprintMask mask, SliceBits& bits,
+                  int slice);
   void build_bits(const OccupancyMap& map, FootprintMask mask, SliceBits& bits, int slice);
   void update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                    SliceBits& bits, int slice);
@@ -79,7 +84,7 @@ class CSpaceLayer {
   bool meets(const CSpaceStack& stack, int x, int y) const;
   // Where a build or an update writes (cspace.cpp: the layer's classes, or one slice's bits).
   template <class Store>
-  void fill(const OccupancyMap& map, Store& store) const;
+  void fill(const CSpaceStack& stack, const OccupancyMap& map, Store& store) const;
   template <class Store>
   void update_in(Store& store, CSpaceStack& stack, const OccupancyMap& map,
                  std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;

@@ -3,8 +3,33 @@
 #include "modules/planner/lib/cspace_stack.hpp"
 
 #include <algorithm>
+#include <bit>
+
+#include "modules/planner/lib/pass_grid.hpp"
 
 namespace robuter::plan {
+namespace {
+
+// Why: out[p] |= r[p + s] for the bits p of `nout` words; r holds `nr` words and its bits
+// outside [0, 64 nr) read as 0.
+void or_shifted(std::uint64_t* out, int nout, const std::uint64_t* r, int nr, int s) {
+  const int q = s >= 0 ? s >> 6 : -((-s + 63) >> 6);  // floor(s / 64)
+  const int b = s - q * 64;                            // 0..63
+  for (int j = 0; j < nout; ++j) {
+    const int i = j + q;
+    if (i + 1 < 0) continue;
+    if (i >= nr) break;
+    std::uint64_t v = i >= 0 ? r[i] >> b : 0;
+    if (b != 0 && i + 1 < nr) v |= r[i + 1] << (64 - b);
+    out[j] |= v;
+  }
+}
+
+std::uint8_t base_class(CellState s) {
+  return s == CellState::Occupied ? kBlocked : s == CellState::Unknown ? kUnknown : kFree;
+}
+
+}  // namespace
 
 void CSpaceStack::reset(const OccupancyMap& map) {
   w_ = map.width();
@@ -12,6 +37,11 @@ void CSpaceStack::reset(const OccupancyMap& map) {
   stride_ = static_cast<std::size_t>(w_) + 1;
   sat_.assign(stride_ * (static_cast<std::size_t>(h_) + 1), 0);
   marks_.assign(map.cell_count(), 0);
+  wpr_ = std::max(1, (w_ + 63) / 64);
+  spans_.assign(static_cast<std::size_t>(kLevels) * static_cast<std::size_t>(h_) * static_cast<std::size_t>(wpr_ + 1), 0);
+  row_any_.assign(static_cast<std::size_t>(h_), 0);
+  base_.assign(map.cell_count(), kFree);
+  scratch_.assign(static_cast<std::size_t>(wpr_), 0);
   rebuild(map);
 }
 
@@ -27,6 +57,59 @@ void CSpaceStack::rebuild(const OccupancyMap& map) {
       row[x + 1] = static_cast<std::uint16_t>(above[x + 1] + run);
     }
   }
+  // The row bitsets and their span levels: level k = level k-1 OR level k-1 shifted by 2^(k-1).
+  // A row is stored with one word of empty cells on its left, so that a span starting up to 64
+  // cells left of the map still reads the cells it covers inside.
+  const int n = wpr_ + 1;
+  const std::size_t level = static_cast<std::size_t>(h_) * static_cast<std::size_t>(n);
+  std::fill(spans_.begin(), spans_.end(), 0);
+  for (int y = 0; y < h_; ++y) {
+    std::uint64_t* bits = spans_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(n);
+    const std::uint32_t base = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_);
+    bool any = false;
+    for (int x = 0; x < w_; ++x) {
+      const CellState s = map.state_at(base + static_cast<std::uint32_t>(x));
+      base_[base + static_cast<std::uint32_t>(x)] = base_class(s);
+      if (s == CellState::Occupied) {
+        bits[1 + (x >> 6)] |= std::uint64_t{1} << (x & 63);
+        any = true;
+      }
+    }
+    row_any_[static_cast<std::size_t>(y)] = any ? 1 : 0;
+    if (!any) continue;
+    for (int k = 1; k < kLevels; ++k) {
+      const std::uint64_t* prev = bits + static_cast<std::size_t>(k - 1) * level;
+      std::uint64_t* cur = bits + static_cast<std::size_t>(k) * level;
+      for (int j = 0; j < n; ++j) cur[j] = prev[j];
+      or_shifted(cur, n, prev, n, 1 << (k - 1));
+    }
+  }
+}
+
+void CSpaceStack::dilate_row(std::span<const MaskRun> runs, int y, std::uint64_t* out) const {
+  const int n = wpr_ + 1;
+  const std::size_t level = static_cast<std::size_t>(h_) * static_cast<std::size_t>(n);
+  constexpr int kPiece = 1 << (kLevels - 1);  // widest run piece covered by two spans (64 cells)
+  for (const MaskRun& r : runs) {
+    const int yy = y + r.dy;
+    if (yy < 0 || yy >= h_ || !row_any_[static_cast<std::size_t>(yy)]) continue;
+    const std::uint64_t* row = spans_.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(n);
+    // Cell p meets the run when an occupied cell lies in [p + lo, p + hi]: cover the run by
+    // pieces of at most kPiece cells, each by two overlapping spans of 2^k cells. A span that
+    // starts more than 64 cells left of the map ends left of it too (a piece is at most 64
+    // cells), so reading it as empty is exact.
+    for (int s = r.lo; s <= r.hi; s += kPiece) {
+      const int e = std::min(s + kPiece - 1, r.hi);
+      const int k = std::bit_width(static_cast<unsigned>(e - s + 1)) - 1;
+      const std::uint64_t* lv = row + static_cast<std::size_t>(k) * level;
+      or_shifted(out, wpr_, lv, n, s + 64);
+      const int s2 = e - (1 << k) + 1;
+      if (s2 != s) or_shifted(out, wpr_, lv, n, s2 + 64);
+    }
+  }
+  // Spans read past the width only hold empty cells, but a shift can bring the last word's
+  // unused bits in from the padding: clear them.
+  if ((w_ & 63) != 0) out[wpr_ - 1] &= (std::uint64_t{1} << (w_ & 63)) - 1;
 }
 
 void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells) {
@@ -37,6 +120,7 @@ void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint3
     const bool was = occupied(c.x, c.y);
     const CellChange k = occ == was ? kRelabelled : occ ? kRaised : kLowered;
     marks_[o] = static_cast<std::uint8_t>((marks_[o] & ~kKindBits) | k);
+    base_[o] = base_class(map.state_at(o));
     moved = moved || occ != was;
   }
   if (moved) rebuild(map);

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "modules/planner/lib/footprint.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 
 namespace robuter::plan {
@@ -23,6 +24,10 @@ enum CellChange : std::uint8_t {
 // fewer than 65,536 cells), and one byte per cell of marks for the layers' updates (the change
 // kind of the current sync, and a layer's "already reported" and "already re-tested"). The layers hold only their
 // classes; a layer asks here whether any occupied cell lies under its mask at a cell.
+// For full builds the occupancy is also kept as row bitsets with a sparse table of spans (bit x
+// of level k: an occupied cell in columns [x, x + 2^k)), so that a mask run's dilation of a row
+// is two shifted ORs of 64-bit words (dilate_row), and each cell's class without any footprint
+// (free, unknown or blocked by its own obstacle) is kept for the layers to copy.
 class CSpaceStack {
  public:
   // Why: size for the map and take its occupancy (set_map; allocates).
@@ -56,6 +61,17 @@ class CSpaceStack {
   bool any_in_row(int y, int x0, int x1) const { return count(x0, y, x1, y) != 0; }
   bool occupied(int x, int y) const { return any_in_row(y, x, x); }
 
+  // Why: a layer's full build (CSpaceLayer::fill): ORs into `out` (row_words() words, zeroed by
+  // the caller) bit x for each cell (x, y) whose footprint `runs` meets an occupied cell. Bits
+  // past the map's width stay clear.
+  void dilate_row(std::span<const MaskRun> runs, int y, std::uint64_t* out) const;
+  int row_words() const { return wpr_; }
+  // Why: the class of each cell of row y with no footprint (what a layer copies where its
+  // footprint meets nothing): kBlocked on an obstacle, else kFree or kUnknown.
+  const std::uint8_t* base_row(int y) const { return base_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_); }
+  // Why: a build's row of bits without allocating (one row; not reentrant).
+  std::uint64_t* scratch() const { return scratch_.data(); }
+
   // Why: a layer's update marks a cell reported once (bit kReported of the per-cell byte).
   bool mark_reported(std::uint32_t map_index) {
     if (marks_[map_index] & kReported) return false;
@@ -87,6 +103,12 @@ class CSpaceStack {
   std::size_t stride_ = 1;           // table entries per row (w_ + 1)
   std::vector<std::uint16_t> sat_;   // (h_ + 1) x (w_ + 1): occupied cells in [0, x) x [0, y), mod 2^16
   std::vector<std::uint8_t> marks_;  // per map cell: CellChange | kReported | kChecked
+  static constexpr int kLevels = 7;  // span levels: runs up to 2^(kLevels-1) = 64 cells in two ORs
+  int wpr_ = 1;                      // 64-bit words per bitset row: (w_ + 63) / 64
+  std::vector<std::uint64_t> spans_; // kLevels x h_ x wpr_: level k, row y, bit x = occupied in [x, x + 2^k)
+  std::vector<std::uint8_t> row_any_;  // per row: 1 when it holds an occupied cell
+  std::vector<std::uint8_t> base_;   // per map cell: CellClass with no footprint
+  mutable std::vector<std::uint64_t> scratch_;  // wpr_ words for a build's row
 };
 
 }  // namespace robuter::plan

@@ -31,15 +31,15 @@ void Planner::set_map(const OccupancyMap& map) {
   }
   cspace_.reset(map_);
   layers_.resize(masks_.size());
-  for (std::size_t k = 0; k < masks_.size(); ++k) layers_[k].build(map_, masks_[k]);
-  if (cfg_.footprint == FootprintKind::Rectangle) relaxation_.build(map_, relaxation_mask_);
+  for (std::size_t k = 0; k < masks_.size(); ++k) layers_[k].build(cspace_, map_, masks_[k]);
+  if (cfg_.footprint == FootprintKind::Rectangle) relaxation_.build(cspace_, map_, relaxation_mask_);
   slice_grids_.clear();
   for (const CSpaceLayer& l : layers_) slice_grids_.push_back(&l.grid());
   turn_layers_.resize(turn_masks_.size());
   turn_room_.resize(turn_masks_.empty() ? 0 : map_.width(), turn_masks_.empty() ? 0 : map_.height(),
                     static_cast<int>(turn_masks_.size()));
   for (std::size_t k = 0; k < turn_masks_.size(); ++k)
-    turn_layers_[k].build_bits(map_, turn_masks_[k], turn_room_, static_cast<int>(k));
+    turn_layers_[k].build_bits(cspace_, map_, turn_masks_[k], turn_room_, static_cast<int>(k));
   const int w = map_.width(), h = map_.height();
   field_changes_.clear();
   field_changes_.reserve(map_.cell_count());
