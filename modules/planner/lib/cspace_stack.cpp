@@ -40,14 +40,21 @@ void CSpaceStack::reset(const OccupancyMap& map) {
   wpr_ = std::max(1, (w_ + 63) / 64);
   spans_.assign(static_cast<std::size_t>(kLevels) * static_cast<std::size_t>(h_) * static_cast<std::size_t>(wpr_ + 1), 0);
   row_any_.assign(static_cast<std::size_t>(h_), 0);
+  row_dirty_.assign(static_cast<std::size_t>(h_), 0);
   base_.assign(map.cell_count(), kFree);
   scratch_.assign(static_cast<std::size_t>(wpr_), 0);
   rebuild(map);
 }
 
-// Why: O(cells) additions, cheaper than any per-cell upkeep once a sync changed a few hundred.
 void CSpaceStack::rebuild(const OccupancyMap& map) {
-  for (int y = 0; y < h_; ++y) {
+  rebuild_table(map, 0);
+  for (int y = 0; y < h_; ++y) rebuild_row(map, y);
+}
+
+// Why: O(cells) additions from row y0 down (the rows above keep their counts), cheaper than any
+// per-cell upkeep once a sync changed a few hundred.
+void CSpaceStack::rebuild_table(const OccupancyMap& map, int y0) {
+  for (int y = y0; y < h_; ++y) {
     const std::uint16_t* above = sat_.data() + static_cast<std::size_t>(y) * stride_;
     std::uint16_t* row = sat_.data() + static_cast<std::size_t>(y + 1) * stride_;
     std::uint16_t run = 0;  // occupied cells of this row left of x, mod 2^16
@@ -57,32 +64,33 @@ void CSpaceStack::rebuild(const OccupancyMap& map) {
       row[x + 1] = static_cast<std::uint16_t>(above[x + 1] + run);
     }
   }
-  // The row bitsets and their span levels: level k = level k-1 OR level k-1 shifted by 2^(k-1).
-  // A row is stored with one word of empty cells on its left, so that a span starting up to 64
-  // cells left of the map still reads the cells it covers inside.
+}
+
+// Why: one row's bitset, its span levels (level k = level k-1 OR level k-1 shifted by 2^(k-1))
+// and its cells' own classes. A row is stored with one word of empty cells on its left, so
+// that a span starting up to 64 cells left of the map still reads the cells it covers inside.
+void CSpaceStack::rebuild_row(const OccupancyMap& map, int y) {
   const int n = wpr_ + 1;
   const std::size_t level = static_cast<std::size_t>(h_) * static_cast<std::size_t>(n);
-  std::fill(spans_.begin(), spans_.end(), 0);
-  for (int y = 0; y < h_; ++y) {
-    std::uint64_t* bits = spans_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(n);
-    const std::uint32_t base = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_);
-    bool any = false;
-    for (int x = 0; x < w_; ++x) {
-      const CellState s = map.state_at(base + static_cast<std::uint32_t>(x));
-      base_[base + static_cast<std::uint32_t>(x)] = base_class(s);
-      if (s == CellState::Occupied) {
-        bits[1 + (x >> 6)] |= std::uint64_t{1} << (x & 63);
-        any = true;
-      }
+  std::uint64_t* bits = spans_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(n);
+  for (int k = 0; k < kLevels; ++k) std::fill(bits + static_cast<std::size_t>(k) * level, bits + static_cast<std::size_t>(k) * level + n, 0);
+  const std::uint32_t base = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w_);
+  bool any = false;
+  for (int x = 0; x < w_; ++x) {
+    const CellState s = map.state_at(base + static_cast<std::uint32_t>(x));
+    base_[base + static_cast<std::uint32_t>(x)] = base_class(s);
+    if (s == CellState::Occupied) {
+      bits[1 + (x >> 6)] |= std::uint64_t{1} << (x & 63);
+      any = true;
     }
-    row_any_[static_cast<std::size_t>(y)] = any ? 1 : 0;
-    if (!any) continue;
-    for (int k = 1; k < kLevels; ++k) {
-      const std::uint64_t* prev = bits + static_cast<std::size_t>(k - 1) * level;
-      std::uint64_t* cur = bits + static_cast<std::size_t>(k) * level;
-      for (int j = 0; j < n; ++j) cur[j] = prev[j];
-      or_shifted(cur, n, prev, n, 1 << (k - 1));
-    }
+  }
+  row_any_[static_cast<std::size_t>(y)] = any ? 1 : 0;
+  if (!any) return;
+  for (int k = 1; k < kLevels; ++k) {
+    const std::uint64_t* prev = bits + static_cast<std::size_t>(k - 1) * level;
+    std::uint64_t* cur = bits + static_cast<std::size_t>(k) * level;
+    for (int j = 0; j < n; ++j) cur[j] = prev[j];
+    or_shifted(cur, n, prev, n, 1 << (k - 1));
   }
 }
 
@@ -113,17 +121,26 @@ void CSpaceStack::dilate_row(std::span<const MaskRun> runs, int y, std::uint64_t
 }
 
 void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells) {
-  bool moved = false;
+  // Only the rows holding a changed cell are retaken (their bits, spans and classes), and the
+  // table from the first row whose occupancy changed.
+  int first_moved = h_, y_lo = h_, y_hi = -1;
   for (std::uint32_t o : cells) {
     const Cell c = map.cell_of_index(o);
     const bool occ = map.state_at(o) == CellState::Occupied;
     const bool was = occupied(c.x, c.y);
     const CellChange k = occ == was ? kRelabelled : occ ? kRaised : kLowered;
     marks_[o] = static_cast<std::uint8_t>((marks_[o] & ~kKindBits) | k);
-    base_[o] = base_class(map.state_at(o));
-    moved = moved || occ != was;
+    row_dirty_[static_cast<std::size_t>(c.y)] = 1;
+    y_lo = std::min(y_lo, c.y);
+    y_hi = std::max(y_hi, c.y);
+    if (occ != was) first_moved = std::min(first_moved, c.y);
   }
-  if (moved) rebuild(map);
+  if (first_moved < h_) rebuild_table(map, first_moved);
+  for (int y = y_lo; y <= y_hi; ++y) {
+    if (!row_dirty_[static_cast<std::size_t>(y)]) continue;
+    row_dirty_[static_cast<std::size_t>(y)] = 0;
+    rebuild_row(map, y);
+  }
 }
 
 void CSpaceStack::end_sync(std::span<const std::uint32_t> cells) {

@@ -97,6 +97,8 @@ class CSpaceStack {
   static constexpr std::uint8_t kReported = 4;
   static constexpr std::uint8_t kChecked = 8;
   void rebuild(const OccupancyMap& map);
+  void rebuild_table(const OccupancyMap& map, int y0);
+  void rebuild_row(const OccupancyMap& map, int y);
 
   int w_ = 0;                        // cells
   int h_ = 0;                        // cells
@@ -107,6 +109,7 @@ class CSpaceStack {
   int wpr_ = 1;                      // 64-bit words per bitset row: (w_ + 63) / 64
   std::vector<std::uint64_t> spans_; // kLevels x h_ x wpr_: level k, row y, bit x = occupied in [x, x + 2^k)
   std::vector<std::uint8_t> row_any_;  // per row: 1 when it holds an occupied cell
+  std::vector<std::uint8_t> row_dirty_;  // per row: holds a cell of the current begin_sync (cleared by it)
   std::vector<std::uint8_t> base_;   // per map cell: CellClass with no footprint
   mutable std::vector<std::uint64_t> scratch_;  // wpr_ words for a build's row
 };
