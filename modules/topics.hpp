@@ -215,12 +215,21 @@ struct ModeStatus {
 
 // A navigation goal for the grid planner (XG / XH), in the odometry frame.
 struct PlannerGoal {
+  static constexpr std::size_t kMaxVias = 63;  // points before the goal (a route over places, XQ)
+  // A point the navigation passes through before the goal (the route's doors, docs/PLACES.md).
+  struct Via {
+    std::int32_t x = 0;         // 0.1 mm
+    std::int32_t y = 0;         // 0.1 mm
+  };
   std::int32_t x = 0;           // 0.1 mm
   std::int32_t y = 0;           // 0.1 mm
   std::int32_t theta = 0;       // 0.01 degree, final heading when has_theta
   bool has_theta = false;       // turn to theta once at (x, y)
   bool active = false;          // false cancels (XH)
   std::uint32_t seq = 0;        // bumped on every request
+  std::uint8_t vias = 0;        // points in `via` driven through, in order, before (x, y) (XG: 0)
+  std::uint16_t place = 0;      // XQ: the goal place's number (1-based); 0 for XG
+  std::array<Via, kMaxVias> via{};  // the first `vias` are used
 };
 
 // The grid planner's report (XP).
@@ -235,6 +244,9 @@ struct PlannerStatus {
   std::uint32_t plan_us = 0;    // execution time of the last plan's search, µs (thread CPU time)
   std::uint32_t run_us_max = 0; // longest activation of the planner since start, µs (thread CPU time)
   std::uint32_t goal_seq = 0;   // PlannerGoal.seq being served
+  std::uint8_t vias = 0;        // the goal's via points (a route over places, XQ; 0 for XG)
+  std::uint8_t via_next = 0;    // via points passed so far (== vias: driving to the goal itself)
+  std::uint16_t goal_place = 0; // XQ: the goal place's number; 0 for XG
   std::int32_t map_x0_mm = 0;   // lower-left corner of the planner's map window, odometry frame, mm
   std::int32_t map_y0_mm = 0;   // mm (the window moves for a goal off it: docs/PLANNER.md)
   std::uint64_t tick = 0;       // tick of the report

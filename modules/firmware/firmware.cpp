@@ -32,6 +32,7 @@
 #include "modules/planner/planner_module.hpp"
 #include "modules/planner/prior_map.hpp"
 #include "modules/places/place_graph_file.hpp"
+#include "modules/places/wall_raster.hpp"
 #include "modules/firmware/prior_structure.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
@@ -163,6 +164,7 @@ std::optional<std::string> Firmware::setup() {
     auto graph = places::load_place_graph(cfg_.places.file);
     if (!graph) return "configuration error: places.file: " + graph.error().describe();
     places_ = std::make_unique<const places::PlaceGraph>(std::move(graph).value());
+    routes_ = std::make_unique<const places::RouteTable>(*places_);
     places_note_ = fmt::format("{}: {} places, {} doors", cfg_.places.file, places_->places().size(), places_->doors().size());
   }
   if (opt_.speed == 0.0) clock_ = std::make_unique<VirtualClock>();
@@ -252,10 +254,23 @@ std::optional<std::string> Firmware::setup() {
     // The map's walls explain the ring's echoes where they meet them (docs/SAFETY.md §13, "Narrowing").
     known_ = std::make_unique<PriorMapStructure>(*prior_map);
     emergency->set_known_structure(known_.get());
+  } else if (places_) {
+    // No a-priori map, a place graph: the walls it implies (its places' edges but the doors) are
+    // the known structure, for the safety core's narrowing and the planner's moving window
+    // (docs/PLACES.md, "Walls from the place graph").
+    walls_ = std::make_unique<const plan::OccupancyMap>(
+        places::wall_raster(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3));
+    known_ = std::make_unique<PriorMapStructure>(*walls_);
+    emergency->set_known_structure(known_.get());
   }
   auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
   if (prior_map) planner->set_prior_map(std::move(*prior_map));
+  if (walls_) {
+    planner->set_structure(walls_.get());
+    openings_ = places::door_openings(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3);
+    planner->set_openings(openings_);
+  }
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));
   auto gate = std::make_unique<GateModule>(bb_, cfg_);
   auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());
@@ -300,7 +315,7 @@ std::optional<std::string> Firmware::setup() {
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
   serial->set_executor(executor.get());  // read-your-writes: ASN, AC then BO
-  serial->set_places(places_.get());
+  serial->set_places(places_.get(), routes_.get());
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"can", can_},
                                   {"heartbeat", heartbeat.get()},
                                   {"serial", serial.get()},        {"us", us.get()},

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "modules/places/place_graph.hpp"
+#include "modules/places/route_table.hpp"
+#include "modules/planner/lib/occupancy_map.hpp"
 #include "hal/api/byte_stream.hpp"
 #include "hal/sitl/sim_robot.hpp"
 #include "kernel/clock.hpp"
@@ -99,9 +101,12 @@ class Firmware {
   FirmwareOptions opt_;
   std::string planner_map_note_;  // [planner] map_file as loaded, for --check-config
   std::unique_ptr<const places::PlaceGraph> places_;  // [places] file as loaded (XN, XI); null = none
+  std::unique_ptr<const places::RouteTable> routes_;  // its routes as via points (XQ)
   std::string places_note_;       // [places] file as loaded, for --check-config
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
+  std::unique_ptr<const plan::OccupancyMap> walls_;  // the place graph's walls, when no a-priori map (planner, narrowing)
+  std::vector<plan::Point2> openings_;  // the place graph's door openings, kept free in the planner's map
   std::unique_ptr<safety::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded
   // The robot's hardware without --sim: [hardware] backends (docs/CAN.md).
   std::optional<std::string> setup_hardware();

@@ -74,6 +74,8 @@ bool PlannerModule::init(Kernel& k) {
   const bool prior = prior_.has_value();
   planner_.set_map(prior ? std::move(*prior_) : plan::OccupancyMap(s_.map, s_.hit_threshold, s_.initial_count));
   prior_.reset();
+  planner_.stamp_structure();
+  planner_.sync();
   if (pictures_) pictures_->reserve(planner_, kMaxPicturePath);
   goal_in_.copy();  // goals from before the start are not served
   for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];
@@ -120,6 +122,11 @@ void PlannerModule::integrate_ranges(const plan::Pose2& pose) {
   }
   integrate_pan_tilt();
   planner::mark_body_free(map, pose, s_.robot.body);
+  // A door's opening stays open: the ring's echoes off its jambs fall in it (docs/PLACES.md).
+  for (const plan::Point2& p : openings_) {
+    const plan::Cell c = map.cell_of(p);
+    if (map.contains(c) && map.state(c) == plan::CellState::Occupied) map.mark_free(c);
+  }
 }
 
 // At most 72 beams per activation (one per sector; the unit fires a sector every 30 ms or so,
@@ -151,8 +158,9 @@ void PlannerModule::skip_readings() {
 void PlannerModule::place_window(std::uint64_t tick) {
   const planner::MapWindow now = planner::window_at(cfg_.planner, map_x0_mm_, map_y0_mm_);
   const Posture& at = posture_.peek();
-  if (planner::on_window(now, goal_.x, goal_.y)) return;
-  const auto shift = planner::window_shift(cfg_, now, at.x, at.y, goal_.x, goal_.y);
+  const PlannerGoal::Via t = target();
+  if (planner::on_window(now, t.x, t.y)) return;
+  const auto shift = planner::window_shift(cfg_, now, at.x, at.y, t.x, t.y);
   if (!shift) return;  // the plan then reports the goal off the map: unreachable
   planner_.shift_map(shift->dx, shift->dy);
   map_x0_mm_ += std::int64_t{shift->dx} * cfg_.planner.cell_mm;
@@ -201,12 +209,14 @@ void PlannerModule::serve_goal(std::uint64_t tick) {
   const PlannerGoal g = goal_in_.copy();
   goal_ = g;
   plans_ = scans_ = 0;
+  via_next_ = 0;
   paused_replans_ = 0;
   paused_since_ = 0;
   path_m_ = prefix_m_ = 0.0;
   prefix_len_ = leg_count_ = 0;
   final_turn_ = false;
-  log::info("planner: goal {} {}{}", g.x, g.y, g.has_theta ? " with heading" : "");
+  if (g.vias > 0) log::info("planner: goal place {} at {} {} through {} route points", g.place, g.x, g.y, g.vias);
+  else log::info("planner: goal {} {}{}", g.x, g.y, g.has_theta ? " with heading" : "");
   begin_scan(tick);
   place_window(tick);
 }
@@ -285,8 +295,19 @@ bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
   return true;
 }
 
+// A route's point passed (or passed over): stop, scan and plan to the next one, the window
+// following it.
+void PlannerModule::next_via(std::uint64_t tick, const char* why) {
+  log::info("planner: route point {} of {} {}", via_next_ + 1, goal_.vias, why);
+  ++via_next_;
+  prepared_seq_ = 0;  // the next point's cost field is to be made
+  begin_scan(tick);
+  place_window(tick);
+}
+
 void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
-  const plan::Point2 goal{goal_.x * kTenthMm, goal_.y * kTenthMm};
+  const plan::Point2 goal = target_point();
+  if (at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) return next_via(tick, "reached");
   if (std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) {
       state_ = PlannerState::moving;
@@ -323,6 +344,10 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
       if (r.status == plan::PlanStatus::SearchLimit)  // reported as unreachable; the log says why
         log::warn("planner: plan {}: no path: search memory exhausted ({} states expanded)", plans_,
                   r.expanded);
+      if (at_via()) {  // a route's helper point: on to the next one (the goal itself ends it)
+        picture(tick, r, pose, goal);
+        return next_via(tick, "unreachable, passed over");
+      }
       path_m_ = prefix_m_ = 0.0;
       prefix_len_ = leg_count_ = 0;
       picture(tick, r, pose, goal);
@@ -385,7 +410,9 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   }
   const planner::Wheels w = follower_.step(pose);
   if (follower_.active()) return request(tick, w.left, w.right);
-  const plan::Point2 goal{goal_.x * kTenthMm, goal_.y * kTenthMm};
+  const plan::Point2 goal = target_point();
+  if (final_prefix_ && at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance())
+    return next_via(tick, "reached");
   if (final_prefix_ && std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) return request(tick, 0, 0);
     return finish(tick, PlannerState::reached, true);
@@ -447,6 +474,9 @@ void PlannerModule::publish_status(std::uint64_t tick) {
   s.plan_us = plan_us_;
   s.run_us_max = run_us_max_;
   s.goal_seq = goal_.seq;
+  s.vias = goal_.vias;
+  s.via_next = via_next_;
+  s.goal_place = goal_.place;
   s.map_x0_mm = static_cast<std::int32_t>(map_x0_mm_);
   s.map_y0_mm = static_cast<std::int32_t>(map_y0_mm_);
   s.tick = tick;

@@ -2,6 +2,7 @@
 // The grid planner as a kernel process: map from the ring, plan, follow the visible prefix, scan, replan.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -29,6 +30,7 @@ class PlannerModule final : public Process {
  public:
   static constexpr std::size_t kMaxPrefix = 512;  // waypoints of the followed prefix kept
   static constexpr std::size_t kMaxPicturePath = 8192;  // waypoints of a plan kept for its picture
+  static constexpr double kViaTolerance = 0.30;  // m: a route's via point is passed this close
 
   PlannerModule(Blackboard& bb, const Config& cfg);
   // The emergency module, triggered when the requested speeds change so a stop acts this tick.
@@ -39,6 +41,12 @@ class PlannerModule final : public Process {
   // The a-priori map ([planner] map_file, planner/prior_map.hpp), of the configured geometry:
   // init() starts from it instead of an unknown map. Set before init().
   void set_prior_map(plan::OccupancyMap map) { prior_ = std::move(map); }
+  // Known structure the moving window takes (a place graph's walls: places/wall_raster.hpp),
+  // at init and after each move. It must outlive the module. Set before init().
+  void set_structure(const plan::OccupancyMap* structure) { planner_.set_structure(structure); }
+  // Cells kept free whatever the ring says (a place graph's door openings, m, odometry frame:
+  // places/wall_raster.hpp), re-freed after each activation's readings. Must outlive the module.
+  void set_openings(std::span<const plan::Point2> cells) { openings_ = cells; }
 
   // Sizes the planner for the configured map (the only allocation) and publishes "idle".
   bool init(Kernel& k) override;
@@ -76,6 +84,13 @@ class PlannerModule final : public Process {
   bool scan_done(std::uint64_t tick);
   // Plans from here, takes the visible prefix, starts following it (or ends the navigation).
   void plan_step(std::uint64_t tick, const plan::Pose2& pose);
+  // A route (XQ): the point being driven to, a via point before the goal or the goal itself.
+  PlannerGoal::Via target() const { return at_via() ? goal_.via[via_next_] : PlannerGoal::Via{goal_.x, goal_.y}; }
+  plan::Point2 target_point() const { const PlannerGoal::Via t = target(); return {t.x * 1e-4, t.y * 1e-4}; }
+  bool at_via() const { return via_next_ < goal_.vias; }
+  // m: a via point counts as passed this close (looser than the goal's: only a way point).
+  double via_tolerance() const { return std::max(s_.goal_tolerance, kViaTolerance); }
+  void next_via(std::uint64_t tick, const char* why);
   // One control step; a new obstacle on the prefix or its end leads to a scan.
   void move_step(std::uint64_t tick, const plan::Pose2& pose);
   // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.
@@ -106,6 +121,7 @@ class PlannerModule final : public Process {
   Writer<PlannerStatus> status_out_;
   Writer<PlannerMapWindow> map_out_;
   Process* emergency_process_ = nullptr;
+  std::span<const plan::Point2> openings_;  // cells kept free (door openings), m
   planner::PictureMailbox* pictures_ = nullptr;  // where plans go for pictures (null: off)
   Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
 
@@ -126,6 +142,7 @@ class PlannerModule final : public Process {
   double last_theta_ = 0.0;                // rad, wrapped heading of the previous activation
   bool have_heading_ = false;
   std::uint32_t plans_ = 0, scans_ = 0;    // for this goal
+  std::uint8_t via_next_ = 0;              // the route's next via point (goal_.vias: the goal itself)
   std::uint64_t paused_since_ = 0;         // tick our motion was first seen paused by a protective stop (0: not)
   std::uint32_t paused_replans_ = 0;       // replans in a row after such pauses, with no prefix driven since
   std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search (all its steps)

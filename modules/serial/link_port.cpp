@@ -368,6 +368,8 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
     p.theta = with_theta ? g.theta : 0;
     p.has_theta = with_theta;
     p.active = true;
+    p.vias = 0;
+    p.place = 0;
     ++p.seq;
   });
   act(OperatorAction::start_planner);
@@ -426,6 +428,45 @@ PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
     return PortResult::ok;
   }
   fill_place(*places_, *at, out);
+  return PortResult::ok;
+}
+
+// XQ: the route from the robot's place (its odometry position) to place `number`, as the
+// planner's goal with the route's via points; checked here so that a refusal changes nothing:
+// the place exists, the robot is in a place, a route joins them, the planner's window can hold
+// each of its legs (planner::goal_acceptable, leg by leg), no emergency is latched (as XG).
+PortResult LinkPort::go_to_place(std::int32_t number) noexcept {
+  if (places_ == nullptr || routes_ == nullptr || !planner_running()) return PortResult::unavailable;
+  if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
+  const Posture& at = posture_.peek();
+  const auto here = places_->place_at(places::Vec2(at.x * 1e-4, at.y * 1e-4));
+  const std::size_t to = static_cast<std::size_t>(number - 1);
+  if (!here || !routes_->found(*here, to)) return PortResult::out_of_range;
+  const std::span<const places::ViaPoint> pts = routes_->points(*here, to);
+  if (pts.empty() || pts.size() > PlannerGoal::kMaxVias + 1) return PortResult::out_of_range;
+  const planner::MapWindow now =
+      planner_status_.generation() > 0
+          ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
+          : planner::configured_window(cfg_.planner);
+  std::int64_t fx = at.x, fy = at.y;
+  for (const places::ViaPoint& p : pts) {
+    if (!planner::goal_acceptable(cfg_, now, fx, fy, p.x, p.y)) return PortResult::out_of_range;
+    fx = p.x;
+    fy = p.y;
+  }
+  if (latched()) return PortResult::refused_emergency;
+  w_.goal.modify([&](PlannerGoal& g) {
+    g.x = pts.back().x;
+    g.y = pts.back().y;
+    g.theta = 0;
+    g.has_theta = false;
+    g.active = true;
+    g.vias = static_cast<std::uint8_t>(pts.size() - 1);
+    g.place = static_cast<std::uint16_t>(number);
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) g.via[k] = {pts[k].x, pts[k].y};
+    ++g.seq;
+  });
+  act(OperatorAction::start_planner);
   return PortResult::ok;
 }
 

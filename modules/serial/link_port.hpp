@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "modules/places/place_graph.hpp"
+#include "modules/places/route_table.hpp"
 #include "kernel/config.hpp"
 #include "modules/topics.hpp"
 #include "protocol/codec/robot_port.hpp"
@@ -93,8 +94,13 @@ class LinkPort final : public protocol::RobotPort {
   protocol::PortResult planner_status(protocol::PlannerReport& out) const noexcept override;
   protocol::PortResult place_here(protocol::PlaceReport& out) const noexcept override;
   protocol::PortResult place_info(std::int32_t number, protocol::PlaceReport& out) const noexcept override;
-  // Why: the place graph XN and XI answer from (immutable, owned by the firmware); null = none.
-  void set_places(const places::PlaceGraph* graph) { places_ = graph; }
+  protocol::PortResult go_to_place(std::int32_t number) noexcept override;
+  // Why: the place graph XN, XI and XQ answer from, and its routes (immutable, owned by the
+  // firmware); null = none.
+  void set_places(const places::PlaceGraph* graph, const places::RouteTable* routes) {
+    places_ = graph;
+    routes_ = routes;
+  }
   protocol::PortResult planner_map(protocol::MapWindow& out) const noexcept override;
   // pan-tilt, passage finder, door crossing, demonstration (XD)
   protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
@@ -116,6 +122,7 @@ class LinkPort final : public protocol::RobotPort {
   Reader<EmergencyState> emergency_;
   Reader<PlannerStatus> planner_status_;
   const places::PlaceGraph* places_ = nullptr;  // [places] file, loaded at start-up; null = none
+  const places::RouteTable* routes_ = nullptr;  // its routes as via points (XQ); null = none
   Reader<PlannerMapWindow> planner_map_;
   Reader<PanTiltScan> pan_tilt_scan_;
   Reader<ModeStatus> pan_tilt_status_;

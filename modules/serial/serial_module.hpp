@@ -32,7 +32,9 @@ class SerialModule final : public Process {
   void set_emergency(Process* p) { port_.set_emergency(p); }
   // The executor, run before the next line after a servo or odometry request (read-your-writes).
   void set_executor(Process* p) { port_.set_executor(p); }
-  void set_places(const places::PlaceGraph* graph) { port_.set_places(graph); }  // XN, XI
+  void set_places(const places::PlaceGraph* graph, const places::RouteTable* routes) {  // XN, XI, XQ
+    port_.set_places(graph, routes);
+  }
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
   void close(Kernel& k) override;

@@ -55,6 +55,7 @@ enum class CommandId : std::uint8_t {
   set_demo,                // XT0 / XT1 (demonstration course)
   get_place,               // XN (the place the robot is in; docs/PLACES.md)
   get_place_info,          // XI <n> (one place of the place graph)
+  go_to_place,             // XQ <n> (drive to a place over the place graph's route)
 };
 
 }  // namespace robuter::protocol

@@ -94,6 +94,8 @@ constexpr std::array kTable = {
     CommandRow{'X', 'N', C::get_place, no_params(), handle_get_place, "the place the robot is in (place graph)"},
     CommandRow{'X', 'I', C::get_place_info, integers(kPlaceNumber), handle_get_place_info,
                "place n: name, centre, neighbours"},
+    CommandRow{'X', 'Q', C::go_to_place, integers(kPlaceNumber), handle_go_to_place,
+               "go to place n (route over the place graph)"},
 };
 
 }  // namespace

@@ -64,6 +64,7 @@ void handle_get_planner_status(const Command&, RobotPort&, ReplyWriter&) noexcep
 void handle_get_planner_map(const Command&, RobotPort&, ReplyWriter&) noexcept;     // XM
 void handle_get_place(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XN
 void handle_get_place_info(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XI
+void handle_go_to_place(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XQ
 
 // X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Handlers of the place graph's X extensions: the robot's place (XN) and one place (XI).
+// Handlers of the place graph's X extensions: the robot's place (XN), one place (XI), go to a place (XQ).
 #include "protocol/codec/handlers.hpp"
 
 #include <algorithm>
@@ -38,6 +38,12 @@ void handle_get_place_info(const Command& cmd, RobotPort& port, ReplyWriter& out
   out.field(r.neighbours);
   const auto listed = static_cast<std::size_t>(std::clamp<std::int32_t>(r.neighbours, 0, static_cast<std::int32_t>(PlaceReport::kMaxNeighbours)));
   out.fields(std::span<const std::int32_t>(r.neighbour.data(), listed));
+}
+
+// XQ <n> → `ack`, or an error changing nothing: the port checks the place, the robot's place,
+// the route and the emergency (RobotPort::go_to_place).
+void handle_go_to_place(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
+  reply_result(port.go_to_place(cmd.ints[0]), out);
 }
 
 }  // namespace robuter::protocol

@@ -89,6 +89,14 @@ class RobotPort {
     return PortResult::unavailable;
   }
 
+  // XQ: go to place `number` (1-based) over the place graph's route, through the planner;
+  // out_of_range for no such place, the robot outside every place, or no route that the
+  // planner's window can follow; refused_emergency while latched (as XG).
+  virtual PortResult go_to_place(std::int32_t number) noexcept {
+    (void)number;
+    return PortResult::unavailable;
+  }
+
   // ---- extensions (X): pan-tilt, passage finder and door crossing states (XD) ----
   virtual PortResult modes(ModesReport& out) const noexcept {
     (void)out;

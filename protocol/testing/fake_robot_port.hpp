@@ -40,11 +40,13 @@ class FakeRobotPort final : public RobotPort {
   std::array<char, kMapWindowSide * kMapWindowSide> map_cells{};  // XM window, filled by the constructor
   std::int32_t place_count = 0;              // places in the graph; 0: no place graph (XN, XI unavailable)
   PlaceReport here{};                        // XN answer (count filled in)
+  std::int32_t last_place_goal = 0;          // last XQ accepted by the checks above
   PlaceReport info{};                        // XI answer (count and number filled in)
 
   // ---- what requests return ----
   PortResult result = PortResult::ok;          // default answer of every request
   PortResult motion_result = PortResult::ok;   // answer of request_motion
+  PortResult place_goal_result = PortResult::ok;  // answer of go_to_place past its checks
   PortResult pass_result = PortResult::not_permitted;  // answer of pass_through
 
   // ---- what requests recorded ----
@@ -174,6 +176,12 @@ class FakeRobotPort final : public RobotPort {
     out = here;
     out.count = place_count;
     return PortResult::ok;
+  }
+  PortResult go_to_place(std::int32_t number) noexcept override {
+    if (place_count == 0) return PortResult::unavailable;
+    if (number > place_count) return PortResult::out_of_range;
+    if (place_goal_result == PortResult::ok) last_place_goal = number;
+    return place_goal_result;
   }
   PortResult place_info(std::int32_t number, PlaceReport& out) const noexcept override {
     if (place_count == 0) return PortResult::unavailable;

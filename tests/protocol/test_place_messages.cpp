@@ -14,6 +14,24 @@ TEST(PlaceMessages, WithoutAPlaceGraphBothAreUnavailable) {
   h.codec.session().verbose_errors = true;
   EXPECT_EQ(h.ask("XN"), "error 12 unavailable");
   EXPECT_EQ(h.ask("XI 1"), "error 12 unavailable");
+  EXPECT_EQ(h.ask("XQ 1"), "error 12 unavailable");
+}
+
+// Why: XQ's decoding and the port's refusals, each changing nothing.
+TEST(PlaceMessages, XQAcksOrSaysWhyNot) {
+  Harness h;
+  h.port.place_count = 32;
+  h.codec.session().verbose_errors = true;
+  EXPECT_EQ(h.ask("XQ 16"), "ack");
+  EXPECT_EQ(h.port.last_place_goal, 16);
+  EXPECT_EQ(h.ask("XQ 33"), "error 4 out-of-range") << "past the last place: the port";
+  EXPECT_EQ(h.ask("XQ 0"), "error 4 out-of-range") << "numbers start at 1: the decoder";
+  EXPECT_EQ(h.ask("XQ"), "error 2 bad-parameter-count");
+  EXPECT_EQ(h.ask("XQ 1 2"), "error 2 bad-parameter-count");
+  EXPECT_EQ(h.ask("XQ room-16"), "error 3 not-a-number");
+  h.port.place_goal_result = PortResult::refused_emergency;
+  EXPECT_EQ(h.ask("XQ 5"), "error 7 refused-emergency") << "latched: as XG";
+  EXPECT_EQ(h.port.last_place_goal, 16) << "nothing changed by the refusals";
 }
 
 TEST(PlaceMessages, XNNamesThePlaceOrADash) {

@@ -73,8 +73,21 @@ void Planner::sync() {
   map_.clear_changes();
 }
 
+void Planner::stamp_structure() {
+  if (structure_ == nullptr) return;
+  for (int y = 0; y < map_.height(); ++y)
+    for (int x = 0; x < map_.width(); ++x) {
+      const Cell c{x, y};
+      if (map_.state(c) != CellState::Unknown) continue;
+      const Cell s = structure_->cell_of(map_.center(c));
+      if (structure_->contains(s) && structure_->state(s) == CellState::Occupied) map_.mark_occupied(c);
+    }
+}
+
 void Planner::shift_map(int dx, int dy) {
   map_.shift(dx, dy);
+  stamp_structure();
+  map_.clear_changes();  // the layers are retaken from the map as it now is
   cspace_.reset(map_);  // same size: the table and marks are refilled, not reallocated
   cancel_steps();
   field_ready_ = false;

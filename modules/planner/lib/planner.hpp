@@ -70,6 +70,14 @@ class Planner {
   // layers are then stale until rebuild_step() has returned true. No allocation. Between the two,
   // the map must not change and nothing may sync, prepare or plan.
   void shift_map(int dx, int dy);
+  // Why: known structure (a place graph's walls, places/wall_raster.hpp) the window takes as it
+  // moves: after a shift (before the layers are retaken) and at stamp time, every unknown cell of
+  // the window that `structure` holds occupied becomes occupied (as a known obstacle). Null: none.
+  // `structure` must outlive the planner and have the window's resolution and cell alignment.
+  void set_structure(const OccupancyMap* structure) { structure_ = structure; }
+  // Why: stamps the structure on the current map now (at start-up, before set_map's layers are
+  // used); the changes are folded at the next sync.
+  void stamp_structure();
   // Why: rebuilds at most `layers` C-space layers after shift_map() (the turn layers and the
   // relaxation count as layers), so that a caller with a time budget spreads the rebuild over
   // several steps; true once every layer is rebuilt (at once when none is pending).
@@ -145,6 +153,7 @@ class Planner {
   HeadingSearch heading_search_;        // (x, y, slice) search
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
+  const OccupancyMap* structure_ = nullptr;  // known structure the window takes as it moves
   int rebuild_next_ = -1;               // next layer to rebuild after shift_map (-1: none)
   CellPose step_start_{};               // cells, slice: the start of a plan_step() search
   Cell step_goal_{};                    // cells: its goal

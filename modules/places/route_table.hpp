@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every place-to-place route as the points the planner drives through, computed once at start-up.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "modules/places/place_graph.hpp"
+
+namespace robuter::places {
+
+// A point a route passes through, in the place graph's frame.
+struct ViaPoint {
+  std::int32_t x = 0;  // 0.1 mm
+  std::int32_t y = 0;  // 0.1 mm
+};
+
+// How a route is turned into points (docs/PLACES.md, "Going to a place").
+struct ViaRules {
+  double depth = 0.9;       // m: a narrow door's points, this far before and after it along the
+                            // door's normal (the whole body clear of the opening)
+  double wide_door = 1.5;   // m: a door at least this wide is passed through one point, its middle
+};
+
+// The routes between every two places of a graph: for each (from, to) whether one exists, the
+// doors it crosses, and its points: per narrow door one point before and one after it, per wide
+// door its middle, then the goal place's centre. Built (and allocated) once; lookups only read.
+class RouteTable {
+ public:
+  static constexpr std::size_t kMaxPoints = 64;  // points of one route the planner's goal holds
+
+  RouteTable() = default;
+  RouteTable(const PlaceGraph& graph, const ViaRules& rules = {});
+
+  std::size_t places() const { return n_; }
+  // Why: false when no chain of doors joins them, or the route needs more than kMaxPoints points.
+  bool found(std::size_t from, std::size_t to) const { return entry(from, to).found; }
+  // Why: the route's points, the goal's centre last (from == to: the centre alone).
+  std::span<const ViaPoint> points(std::size_t from, std::size_t to) const;
+  // Why: the doors the route crosses, and the route's length (m, centre to centre through the doors).
+  std::size_t doors(std::size_t from, std::size_t to) const { return entry(from, to).doors; }
+  double length(std::size_t from, std::size_t to) const { return entry(from, to).length; }
+
+ private:
+  struct Entry {
+    bool found = false;      // a route exists and fits kMaxPoints
+    std::size_t first = 0;   // index of its first point in points_
+    std::size_t count = 0;   // points
+    std::size_t doors = 0;   // doors crossed
+    double length = 0.0;     // m
+  };
+  const Entry& entry(std::size_t from, std::size_t to) const { return entries_[from * n_ + to]; }
+
+  std::size_t n_ = 0;              // places
+  std::vector<Entry> entries_;     // n_ x n_, row = from
+  std::vector<ViaPoint> points_;   // every route's points, one after the other
+};
+
+// Why: the unit normal at a door of `place`'s boundary, pointing into the place (from the edge
+// nearest the door's middle; the polygon is counter-clockwise, so inwards is to the left).
+Vec2 door_normal_into(const Place& place, const Door& door);
+
+}  // namespace robuter::places

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The route table: every pair's route as via points (before and after a narrow door, the middle of a wide one).
+#include <gtest/gtest.h>
+
+#include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_route.hpp"
+#include "modules/places/route_table.hpp"
+
+namespace robuter::places {
+namespace {
+
+// Three 4 m squares along x, a 0.9 m door between the first two, a 2 m one between the last two,
+// and a fourth square apart (no door).
+PlaceGraph three_and_one() {
+  std::vector<Place> p;
+  for (int i = 0; i < 3; ++i) {
+    const double x = 4.0 * i;
+    p.push_back({"p" + std::to_string(i), {{x, 0}, {x + 4, 0}, {x + 4, 4}, {x, 4}}, {x + 2, 2}});
+  }
+  p.push_back({"alone", {{20, 0}, {24, 0}, {24, 4}, {20, 4}}, {22, 2}});
+  std::vector<Door> d{{"narrow", 0, 1, {4, 1}, 0.9}, {"wide", 1, 2, {8, 3}, 2.0}};
+  return PlaceGraph(std::move(p), std::move(d));
+}
+
+TEST(RouteTable, NarrowDoorsTwoPointsWideDoorsOneThenTheCentre) {
+  const PlaceGraph g = three_and_one();
+  const RouteTable t(g);
+  ASSERT_EQ(t.places(), 4u);
+  ASSERT_TRUE(t.found(0, 2));
+  const auto pts = t.points(0, 2);
+  ASSERT_EQ(pts.size(), 4u);
+  // 0.9 m before and after the narrow door along its normal (into p1: +x), the wide door's middle, p2's centre.
+  EXPECT_EQ(pts[0].x, 31000);
+  EXPECT_EQ(pts[0].y, 10000);
+  EXPECT_EQ(pts[1].x, 49000);
+  EXPECT_EQ(pts[1].y, 10000);
+  EXPECT_EQ(pts[2].x, 80000);
+  EXPECT_EQ(pts[2].y, 30000);
+  EXPECT_EQ(pts[3].x, 100000);
+  EXPECT_EQ(pts[3].y, 20000);
+  EXPECT_EQ(t.doors(0, 2), 2u);
+  EXPECT_DOUBLE_EQ(t.length(0, 2), shortest_route(g, 0, 2).length);
+  // Backwards the narrow door's points swap sides: the normal points into p0 (-x).
+  const auto back = t.points(2, 0);
+  ASSERT_EQ(back.size(), 4u);
+  EXPECT_EQ(back[1].x, 49000);
+  EXPECT_EQ(back[2].x, 31000);
+  // A place to itself: its centre alone; no door to "alone": not found.
+  ASSERT_TRUE(t.found(1, 1));
+  ASSERT_EQ(t.points(1, 1).size(), 1u);
+  EXPECT_EQ(t.points(1, 1)[0].x, 60000);
+  EXPECT_FALSE(t.found(0, 3));
+  EXPECT_FALSE(t.found(3, 2));
+  EXPECT_TRUE(t.points(0, 3).empty());
+}
+
+// Why: on the shipped floor every pair is joined, within the planner goal's 64 points, and
+// every via point lies inside a place of the route (never in a wall).
+TEST(RouteTable, EveryPairOfTheBuildingFloor) {
+  auto loaded = load_place_graph(ROBUTER_SHIPPED_WORLDS "/building_floor.places.toml");
+  ASSERT_TRUE(loaded.ok());
+  const PlaceGraph& g = loaded.value();
+  const RouteTable t(g);
+  for (std::size_t a = 0; a < g.places().size(); ++a)
+    for (std::size_t b = 0; b < g.places().size(); ++b) {
+      ASSERT_TRUE(t.found(a, b)) << g.places()[a].name << " -> " << g.places()[b].name;
+      ASSERT_LE(t.points(a, b).size(), RouteTable::kMaxPoints);
+      for (const ViaPoint& p : t.points(a, b))
+        EXPECT_TRUE(g.place_at({p.x * 1e-4, p.y * 1e-4}).has_value())
+            << g.places()[a].name << " -> " << g.places()[b].name << ": (" << p.x << ", " << p.y << ")";
+    }
+}
+
+}  // namespace
+}  // namespace robuter::places
