@@ -220,6 +220,8 @@ struct PlannerGoal {
   struct Via {
     std::int32_t x = 0;         // 0.1 mm
     std::int32_t y = 0;         // 0.1 mm
+    std::int32_t theta = 0;     // 0.01 degree: turn to it there when has_theta (facing a door)
+    bool has_theta = false;
   };
   std::int32_t x = 0;           // 0.1 mm
   std::int32_t y = 0;           // 0.1 mm

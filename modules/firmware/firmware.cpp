@@ -268,7 +268,7 @@ std::optional<std::string> Firmware::setup() {
   if (prior_map) planner->set_prior_map(std::move(*prior_map));
   if (walls_) {
     planner->set_structure(walls_.get());
-    openings_ = places::door_openings(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3);
+    openings_ = places::door_openings(*places_, *walls_);
     planner->set_openings(openings_);
   }
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));

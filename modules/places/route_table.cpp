@@ -49,8 +49,12 @@ RouteTable::RouteTable(const PlaceGraph& graph, const ViaRules& rules) : n_(grap
           continue;
         }
         const Vec2 n = door_normal_into(graph.places()[leg.place], d);
-        pts.push_back(to_via(d.at - rules.depth * n));
-        pts.push_back(to_via(d.at + rules.depth * n));
+        ViaPoint before = to_via(d.at - rules.before * n);
+        before.has_theta = true;
+        before.theta = static_cast<std::int32_t>(std::lround(std::atan2(n.y(), n.x()) * 18000.0 / M_PI));
+        if (before.theta <= -18000) before.theta += 36000;
+        pts.push_back(before);
+        pts.push_back(to_via(d.at + rules.after * n));
       }
       pts.push_back(to_via(graph.places()[to].centre));
       if (pts.size() > kMaxPoints) continue;

@@ -13,14 +13,19 @@ namespace robuter::places {
 
 // A point a route passes through, in the place graph's frame.
 struct ViaPoint {
-  std::int32_t x = 0;  // 0.1 mm
-  std::int32_t y = 0;  // 0.1 mm
+  std::int32_t x = 0;        // 0.1 mm
+  std::int32_t y = 0;        // 0.1 mm
+  std::int32_t theta = 0;    // 0.01 degree, (-18000, 18000]: the heading to turn to there, when has_theta
+  bool has_theta = false;    // the point before a narrow door: face the door (drive through forwards)
 };
 
 // How a route is turned into points (docs/PLACES.md, "Going to a place").
 struct ViaRules {
-  double depth = 0.9;       // m: a narrow door's points, this far before and after it along the
-                            // door's normal (the whole body clear of the opening)
+  double before = 1.1;      // m: a narrow door's first point, this far before it along the door's
+                            // normal: room to turn in place to face it (the body's turning
+                            // circle, 0.62 m, and the 0.25 m turn clearance, from the wall)
+  double after = 0.9;       // m: its second point, this far beyond it (the body, 0.33 m behind
+                            // the axle, clear of the opening)
   double wide_door = 1.5;   // m: a door at least this wide is passed through one point, its middle
 };
 

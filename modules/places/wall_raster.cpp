@@ -47,7 +47,9 @@ plan::OccupancyMap wall_raster(const PlaceGraph& graph, double resolution, doubl
         }
       for (double t = 0.0; t <= len; t += step) {
         bool opened = false;
-        for (const auto& [t0, t1] : open) opened = opened || (t > t0 && t < t1);
+        // A sample on the opening's edge would mark the cell inside it (the edge is a cell
+        // boundary when the door is aligned on the grid): the edges count as open.
+        for (const auto& [t0, t1] : open) opened = opened || (t > t0 - 1e-6 && t < t1 + 1e-6);
         if (opened) continue;
         const Vec2 q = a + t * dir + outward * out;
         const plan::Cell c = map.cell_of({q.x(), q.y()});
@@ -59,7 +61,8 @@ plan::OccupancyMap wall_raster(const PlaceGraph& graph, double resolution, doubl
   return map;
 }
 
-std::vector<plan::Point2> door_openings(const PlaceGraph& graph, double resolution, double reach) {
+std::vector<plan::Point2> door_openings(const PlaceGraph& graph, const plan::OccupancyMap& walls, double reach) {
+  const double resolution = walls.resolution();
   std::vector<plan::Point2> out;
   for (const Door& d : graph.doors()) {
     const Vec2 n = door_normal_into(graph.places()[d.b], d);
@@ -75,7 +78,10 @@ std::vector<plan::Point2> door_openings(const PlaceGraph& graph, double resoluti
       for (int i = i0; i <= i1; ++i) {
         const Vec2 c((i + 0.5) * resolution, (j + 0.5) * resolution);
         const Vec2 v = c - d.at;
-        if (std::abs(v.dot(along)) <= half && std::abs(v.dot(n)) <= reach) out.push_back({c.x(), c.y()});
+        if (std::abs(v.dot(along)) > half || std::abs(v.dot(n)) > reach) continue;
+        const plan::Cell w = walls.cell_of({c.x(), c.y()});
+        if (walls.contains(w) && walls.state(w) == plan::CellState::Occupied) continue;
+        out.push_back({c.x(), c.y()});
       }
   }
   return out;

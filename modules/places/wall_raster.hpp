@@ -21,7 +21,10 @@ plan::OccupancyMap wall_raster(const PlaceGraph& graph, double resolution, doubl
 // Why: the cells a door keeps open for the planner (docs/PLACES.md, "Walls from the place graph"):
 // the centres, on a grid of `resolution` (m) aligned on multiples of it, of the cells whose centre
 // lies within the opening (width / 2 along the door's edge, less half a cell) and within `reach`
-// (m) of the wall's line on either side. The ring's echoes off the jambs would otherwise close it.
-std::vector<plan::Point2> door_openings(const PlaceGraph& graph, double resolution, double reach = 0.35);
+// (m) of the wall's line on either side, less the cells `walls` (wall_raster of the same graph
+// and resolution) holds occupied: where a corridor's open door meets a wall corner, the corner
+// stays. The ring's echoes off the jambs would otherwise close the opening.
+std::vector<plan::Point2> door_openings(const PlaceGraph& graph, const plan::OccupancyMap& walls,
+                                        double reach = 0.35);
 
 }  // namespace robuter::places

@@ -271,9 +271,20 @@ bool PlannerModule::scan_done(std::uint64_t tick) {
 }
 
 bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
-  if (!goal_.has_theta || final_turn_) return false;
+  if (!goal_.has_theta) return false;
+  return add_turn(pose, goal_.theta);
+}
+
+// A via point with a heading (the point before a narrow door): turn to face the door there.
+bool PlannerModule::add_via_turn(const plan::Pose2& pose) {
+  if (!at_via() || !goal_.via[via_next_].has_theta) return false;
+  return add_turn(pose, goal_.via[via_next_].theta);
+}
+
+bool PlannerModule::add_turn(const plan::Pose2& pose, std::int32_t theta) {
+  if (final_turn_) return false;
   final_turn_ = true;
-  const double target = pose.heading + std::remainder(goal_.theta * kCentideg - pose.heading, 2.0 * plan::kPi);
+  const double target = pose.heading + std::remainder(theta * kCentideg - pose.heading, 2.0 * plan::kPi);
   if (s_.planner.footprint == plan::FootprintKind::Rectangle) {
     // The turn sweeps the slices between the two headings: each must leave room to turn.
     const int k = planner_.slices();
@@ -284,7 +295,7 @@ bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
     for (double h = lo; h < hi + step; h += step) {
       const int slice = plan::slice_of_heading(std::min(h, hi), k);
       if (!planner_.can_turn(c, slice)) {
-        log::info("planner: no room to turn to the goal's heading");
+        log::info("planner: no room to turn to the heading asked");
         return false;
       }
     }
@@ -300,6 +311,7 @@ bool PlannerModule::add_final_turn(const plan::Pose2& pose) {
 void PlannerModule::next_via(std::uint64_t tick, const char* why) {
   log::info("planner: route point {} of {} {}", via_next_ + 1, goal_.vias, why);
   ++via_next_;
+  final_turn_ = false;  // the next point's (or the goal's) turn is still to come
   prepared_seq_ = 0;  // the next point's cost field is to be made
   begin_scan(tick);
   place_window(tick);
@@ -307,7 +319,14 @@ void PlannerModule::next_via(std::uint64_t tick, const char* why) {
 
 void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   const plan::Point2 goal = target_point();
-  if (at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) return next_via(tick, "reached");
+  if (at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) {
+    if (add_via_turn(pose)) {
+      state_ = PlannerState::moving;
+      final_prefix_ = true;
+      return;
+    }
+    return next_via(tick, "reached");
+  }
   if (std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) {
       state_ = PlannerState::moving;
@@ -411,8 +430,10 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   const planner::Wheels w = follower_.step(pose);
   if (follower_.active()) return request(tick, w.left, w.right);
   const plan::Point2 goal = target_point();
-  if (final_prefix_ && at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance())
+  if (final_prefix_ && at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) {
+    if (add_via_turn(pose)) return request(tick, 0, 0);
     return next_via(tick, "reached");
+  }
   if (final_prefix_ && std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) return request(tick, 0, 0);
     return finish(tick, PlannerState::reached, true);

@@ -91,6 +91,9 @@ class PlannerModule final : public Process {
   // m: a via point counts as passed this close (looser than the goal's: only a way point).
   double via_tolerance() const { return std::max(s_.goal_tolerance, kViaTolerance); }
   void next_via(std::uint64_t tick, const char* why);
+  bool add_via_turn(const plan::Pose2& pose);
+  // Adds a turn in place to `theta` (0.01 degree) when free and not yet added for this point.
+  bool add_turn(const plan::Pose2& pose, std::int32_t theta);
   // One control step; a new obstacle on the prefix or its end leads to a scan.
   void move_step(std::uint64_t tick, const plan::Pose2& pose);
   // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.

@@ -463,7 +463,7 @@ PortResult LinkPort::go_to_place(std::int32_t number) noexcept {
     g.active = true;
     g.vias = static_cast<std::uint8_t>(pts.size() - 1);
     g.place = static_cast<std::uint16_t>(number);
-    for (std::size_t k = 0; k + 1 < pts.size(); ++k) g.via[k] = {pts[k].x, pts[k].y};
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) g.via[k] = {pts[k].x, pts[k].y, pts[k].theta, pts[k].has_theta};
     ++g.seq;
   });
   act(OperatorAction::start_planner);

@@ -29,9 +29,13 @@ TEST(RouteTable, NarrowDoorsTwoPointsWideDoorsOneThenTheCentre) {
   ASSERT_TRUE(t.found(0, 2));
   const auto pts = t.points(0, 2);
   ASSERT_EQ(pts.size(), 4u);
-  // 0.9 m before and after the narrow door along its normal (into p1: +x), the wide door's middle, p2's centre.
-  EXPECT_EQ(pts[0].x, 31000);
+  // 1.1 m before the narrow door facing it (its normal into p1: +x, heading 0), 0.9 m after it,
+  // the wide door's middle, p2's centre.
+  EXPECT_EQ(pts[0].x, 29000);
   EXPECT_EQ(pts[0].y, 10000);
+  EXPECT_TRUE(pts[0].has_theta);
+  EXPECT_EQ(pts[0].theta, 0);
+  EXPECT_FALSE(pts[1].has_theta);
   EXPECT_EQ(pts[1].x, 49000);
   EXPECT_EQ(pts[1].y, 10000);
   EXPECT_EQ(pts[2].x, 80000);
@@ -43,7 +47,8 @@ TEST(RouteTable, NarrowDoorsTwoPointsWideDoorsOneThenTheCentre) {
   // Backwards the narrow door's points swap sides: the normal points into p0 (-x).
   const auto back = t.points(2, 0);
   ASSERT_EQ(back.size(), 4u);
-  EXPECT_EQ(back[1].x, 49000);
+  EXPECT_EQ(back[1].x, 51000);
+  EXPECT_EQ(back[1].theta, 18000) << "facing -x";
   EXPECT_EQ(back[2].x, 31000);
   // A place to itself: its centre alone; no door to "alone": not found.
   ASSERT_TRUE(t.found(1, 1));

@@ -73,15 +73,21 @@ void Planner::sync() {
   map_.clear_changes();
 }
 
+// Known structure takes the most hits a cell holds (OccupancyMap::kMaxCount), so that the ring's
+// misses through a wall's face cells (an echo just behind them) do not wear it away. The grids
+// share cell boundaries (same resolution, origins on multiples of it): a whole-cell offset.
 void Planner::stamp_structure() {
   if (structure_ == nullptr) return;
-  for (int y = 0; y < map_.height(); ++y)
+  const Cell o = structure_->cell_of(map_.center({0, 0}));  // the structure's cell under the map's (0, 0)
+  for (int y = 0; y < map_.height(); ++y) {
+    const int sy = y + o.y;
+    if (sy < 0 || sy >= structure_->height()) continue;
     for (int x = 0; x < map_.width(); ++x) {
-      const Cell c{x, y};
-      if (map_.state(c) != CellState::Unknown) continue;
-      const Cell s = structure_->cell_of(map_.center(c));
-      if (structure_->contains(s) && structure_->state(s) == CellState::Occupied) map_.mark_occupied(c);
+      const Cell s{x + o.x, sy};
+      if (s.x < 0 || s.x >= structure_->width() || structure_->state(s) != CellState::Occupied) continue;
+      if (map_.state({x, y}) == CellState::Unknown) map_.set_count({x, y}, OccupancyMap::kMaxCount);
     }
+  }
 }
 
 void Planner::shift_map(int dx, int dy) {
