@@ -74,6 +74,8 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks) {
   for (int i = 0; i < max_ticks; ++i) {
     fw.step();
     if (logs && i % 50 == 0) log::flush();
+    // An operator's client polls (XP every 10 s): a link silent for 3 min trips (comm_limit_ticks).
+    if (i % 1000 == 999) (void)fw.ask("XP");
     if (logs) {  // where each protective stop starts
       static bool was = false;
       const bool now = fw.bb().emergency.reader().peek().protective;
@@ -183,6 +185,22 @@ TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
   const PlannerState s = fw.bb().planner_status.reader().peek().state;
   EXPECT_TRUE(s == PlannerState::scanning || s == PlannerState::planning) << "on to the next point";
   EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
+}
+
+// Why: a route of 53 m with no prior grid, only the place graph: the whole east-west corridor,
+// six pieces joined by open doors (five via points, the window moving with them), reached with
+// the ultrasonic detection on, no trip, no contact. Measured 2026-12-03: 404.6 s of robot time,
+// 39 replans, 0 protective stops, closest 500 mm, worst planner activation 2.5-3.1 ms, 2 s of
+// this machine's time.
+TEST(GoToPlace, FiftyThreeMetresOfCorridorWithNoPriorGrid) {
+  const PlaceRun r = go(place("corridor-ew-1"), place("corridor-ew-6"), 60'000);
+  EXPECT_EQ(r.state, PlannerState::reached);
+  EXPECT_EQ(r.in_place, "corridor-ew-6");
+  EXPECT_LT(r.error, 0.10);
+  EXPECT_EQ(r.trips, 0u);
+  EXPECT_EQ(r.contacts, 0u);
+  RecordProperty("replans", static_cast<int>(r.replans));
+  RecordProperty("robot_seconds", static_cast<int>(r.seconds));
 }
 
 // Why: experiments (ROBUTER_XQ_FROM, ROBUTER_XQ_TO: place names; ROBUTER_XQ_LOG=1 the log), run with
