@@ -179,13 +179,15 @@ bool CSpaceLayer::meets(const CSpaceStack& stack, int x, int y) const {
   return false;
 }
 
-void CSpaceLayer::update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
+[[gnu::flatten]] void CSpaceLayer::update(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                          std::vector<ClassChange>* out) {
   ClassStore store{grid_};
   update_in(store, stack, map, cells, out);
 }
 
-void CSpaceLayer::update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
+// Flattened: the update's inner loop (the visit lambda, the store's writes) inlined into one
+// function, as the compiler chose before the row builds were added (2.6x slower when it did not).
+[[gnu::flatten]] void CSpaceLayer::update_bits(CSpaceStack& stack, const OccupancyMap& map, std::span<const std::uint32_t> cells,
                               SliceBits& bits, int slice) {
   BitStore store{bits, slice};
   update_in(store, stack, map, cells, nullptr);
