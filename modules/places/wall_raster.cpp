@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hal/sim/geometry.hpp"
+#include "modules/places/place_graph_file.hpp"
 #include "modules/places/route_table.hpp"
 
 namespace robuter::places {
@@ -27,7 +28,6 @@ plan::OccupancyMap wall_raster(const PlaceGraph& graph, double resolution, doubl
   const int w = static_cast<int>(std::ceil((x1 + margin - ox) / resolution));
   const int h = static_cast<int>(std::ceil((y1 + margin - oy) / resolution));
   plan::OccupancyMap map(plan::MapGeometry{w, h, resolution, {ox, oy}});
-  constexpr double kDoorReach = 0.15;  // m: a door this close to an edge opens it (as the file's check)
   const double step = resolution / 4.0;
   const double outward = std::min(0.01, resolution / 4.0);  // m: a sample pushed to the wall's side
   for (const Place& p : graph.places()) {
@@ -41,7 +41,7 @@ plan::OccupancyMap wall_raster(const PlaceGraph& graph, double resolution, doubl
       // The edge's stretches opened by doors, as [t0, t1] along it (m).
       std::vector<std::pair<double, double>> open;
       for (const Door& d : graph.doors())
-        if (sim::point_segment_distance(d.at, a, b) <= kDoorReach) {
+        if (sim::point_segment_distance(d.at, a, b) <= kDoorOnBoundary) {  // the file's own rule
           const double t = (d.at - a).dot(dir);
           open.emplace_back(t - d.width / 2.0, t + d.width / 2.0);
         }

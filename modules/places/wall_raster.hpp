@@ -12,7 +12,7 @@ namespace robuter::places {
 // Why: the place graph as known structure (docs/PLACES.md, "Walls from the place graph"): a
 // place's edges are the faces of the walls around it, except where a door opens them. Every
 // cell just outside an edge (its wall side) is occupied, apart from each door's opening (a door
-// within 0.15 m of the edge removes the edge's stretch within width / 2 of it); every other cell
+// within kDoorOnBoundary (0.15 m) of the edge removes the edge's stretch within width / 2 of it); every other cell
 // is unknown. The grid covers the graph's bounding box plus `margin` (m), cells of `resolution`
 // (m) aligned on multiples of it (so that a planner window whose origin is a multiple of the
 // same resolution shares its cell boundaries).

@@ -74,8 +74,6 @@ bool PlannerModule::init(Kernel& k) {
   const bool prior = prior_.has_value();
   planner_.set_map(prior ? std::move(*prior_) : plan::OccupancyMap(s_.map, s_.hit_threshold, s_.initial_count));
   prior_.reset();
-  planner_.stamp_structure();
-  planner_.sync();
   if (pictures_) pictures_->reserve(planner_, kMaxPicturePath);
   goal_in_.copy();  // goals from before the start are not served
   for (int i = 0; i < robot::kRingSensors; ++i) read_tick_[i] = ranges_.peek().read_tick[i];

@@ -42,7 +42,7 @@ class PlannerModule final : public Process {
   // init() starts from it instead of an unknown map. Set before init().
   void set_prior_map(plan::OccupancyMap map) { prior_ = std::move(map); }
   // Known structure the moving window takes (a place graph's walls: places/wall_raster.hpp),
-  // at init and after each move. It must outlive the module. Set before init().
+  // at init (set_map) and after each move. It must outlive the module. Set before init().
   void set_structure(const plan::OccupancyMap* structure) { planner_.set_structure(structure); }
   // Cells kept free whatever the ring says (a place graph's door openings, m, odometry frame:
   // places/wall_raster.hpp), re-freed after each activation's readings. Must outlive the module.

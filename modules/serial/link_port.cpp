@@ -443,7 +443,7 @@ PortResult LinkPort::go_to_place(std::int32_t number) noexcept {
   const std::size_t to = static_cast<std::size_t>(number - 1);
   if (!here || !routes_->found(*here, to)) return PortResult::out_of_range;
   const std::span<const places::ViaPoint> pts = routes_->points(*here, to);
-  if (pts.empty() || pts.size() > PlannerGoal::kMaxVias + 1) return PortResult::out_of_range;
+  static_assert(places::RouteTable::kMaxPoints <= PlannerGoal::kMaxVias + 1, "a route's points fit the goal");
   const planner::MapWindow now =
       planner_status_.generation() > 0
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)

@@ -54,6 +54,11 @@ std::string floor_starting_at(const places::Vec2& at) {
   return std::regex_replace(text.str(), std::regex("\\[start\\]\nx = [^\n]*\ny = [^\n]*\nheading_deg = [^\n]*\n"), start);
 }
 
+// Why: the odometry set to a point of the floor (AC, 0.1 mm): odometry = the floor's frame.
+std::string set_odometry_at(const places::Vec2& c) {
+  return "AC " + std::to_string(std::lround(c.x() * 1e4)) + " " + std::to_string(std::lround(c.y() * 1e4)) + " 0";
+}
+
 // Why: the robot started at `from`'s centre (odometry = the floor's frame), then XQ to `to`.
 PlaceRun go(std::size_t from, std::size_t to, int max_ticks) {
   const places::PlaceGraph& g = floor_graph();
@@ -65,21 +70,21 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks) {
   SafetyMonitor mon;
   mon.attach(fw);
   const places::Vec2 c = g.places()[from].centre;
-  EXPECT_EQ(fw.ask("AC " + std::to_string(std::lround(c.x() * 1e4)) + " " + std::to_string(std::lround(c.y() * 1e4)) + " 0"), "ack");
+  EXPECT_EQ(fw.ask(set_odometry_at(c)), "ack");
   fw.run_ticks(5);
   EXPECT_EQ(fw.ask("XQ " + std::to_string(to + 1)), "ack");
   const double t0 = fw.seconds();
   const bool logs = std::getenv("ROBUTER_XQ_LOG") != nullptr;  // the planner's log, for experiments
   if (logs) log::set_level(log::Level::info);
+  bool was_protective = false;  // the last tick's protective stop (logs only)
   for (int i = 0; i < max_ticks; ++i) {
     fw.step();
     if (logs && i % 50 == 0) log::flush();
     // An operator's client polls (XP every 10 s): a link silent for 3 min trips (comm_limit_ticks).
     if (i % 1000 == 999) (void)fw.ask("XP");
     if (logs) {  // where each protective stop starts
-      static bool was = false;
       const bool now = fw.bb().emergency.reader().peek().protective;
-      if (now && !was) {
+      if (now && !was_protective) {
         const auto& rp = fw.sim().robot().pose();
         long narrowed = -1, unexplained = -1;
         if (const auto row = fw.kernel().find("emergency"))
@@ -99,7 +104,7 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks) {
         std::printf("protective stop at (%.3f, %.3f, %.1f deg), body clearance %.3f m, narrowed %ld, unexplained %ld\n",
                     rp.x, rp.y, rp.theta * 57.29578, body_clearance(fw.sim().world(), geometry(), rp), narrowed, unexplained);
       }
-      was = now;
+      was_protective = now;
     }
     out.state = fw.bb().planner_status.reader().peek().state;
     if (i > 50 && out.state != PlannerState::scanning && out.state != PlannerState::planning &&
@@ -157,6 +162,26 @@ TEST(GoToPlace, RefusalsChangeNothingAndXHEndsTheRoute) {
   EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::cancelled);
 }
 
+// Why: the operator's command ends a route as it ends any goal (the arbiter), mid-route, and
+// nothing resumes by itself: the robot stays stopped.
+TEST(GoToPlace, TheOperatorsCommandEndsTheRouteForGood) {
+  const places::PlaceGraph& g = floor_graph();
+  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
+  SimFirmware fw(world.path(), floor_config());
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask(set_odometry_at(g.places()[place("corridor-ew-1")].centre)), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XQ " + std::to_string(place("corridor-ew-6") + 1)), "ack");
+  fw.run_ticks(1500);  // under way toward the first point
+  ASSERT_EQ(fw.ask("AM 0 0"), "ack");
+  fw.run_ticks(30);
+  EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::operator_ended);
+  const double x = fw.sim().robot().pose().x;
+  fw.run_ticks(3000);
+  EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::operator_ended);
+  EXPECT_NEAR(fw.sim().robot().pose().x, x, 0.02) << "nothing resumed";
+}
+
 // Why: the route is driven point by point: from the corridor's west end toward room-01, the
 // planner reaches the point 1.1 m before the office's 0.90 m door, turns to face the door and
 // goes on to the next point, with no contact. (Through the door itself the run does not get yet: docs/PLACES.md, "Going to a
@@ -169,7 +194,7 @@ TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
   SafetyMonitor mon;
   mon.attach(fw);
   const places::Vec2 c = g.places()[place("corridor-ew-1")].centre;
-  ASSERT_EQ(fw.ask("AC " + std::to_string(std::lround(c.x() * 1e4)) + " " + std::to_string(std::lround(c.y() * 1e4)) + " 0"), "ack");
+  ASSERT_EQ(fw.ask(set_odometry_at(c)), "ack");
   fw.run_ticks(5);
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   std::uint8_t passed = 0;

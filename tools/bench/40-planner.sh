@@ -17,4 +17,6 @@ if [[ -x "$bin/planner_tests" ]]; then
   ROBUTER_FOOTPRINT_POSES=100000 "$bin/planner_tests" --gtest_filter='FullTurnFootprint.NeverFree*' |
     grep -E 'poses:|OK|FAILED'
 fi
+# One sync's parts after a 10 x 10 block (begin_sync, the 32 class and 32 bit layers), min of 30.
+if [[ -x "$bin/robuter-layer-sync-bench" ]]; then "$bin/robuter-layer-sync-bench"; fi
 exec "$bin/robuter-plan-bench" "$data" "$root"

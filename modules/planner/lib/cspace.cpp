@@ -11,8 +11,7 @@ namespace {
 
 // Why: the class a searchable cell takes from its cover count and the map.
 std::uint8_t class_of(std::uint16_t cover, CellState s) {
-  if (cover > 0 || s == CellState::Occupied) return kBlocked;
-  return s == CellState::Unknown ? kUnknown : kFree;
+  return cover > 0 ? std::uint8_t{kBlocked} : own_class(s);
 }
 
 // A class layer's own PassGrid: writes report each changed cell (once per update) with its

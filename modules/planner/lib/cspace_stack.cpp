@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <bit>
 
-#include "modules/planner/lib/pass_grid.hpp"
-
 namespace robuter::plan {
 namespace {
 
@@ -23,10 +21,6 @@ void or_shifted(std::uint64_t* out, int nout, const std::uint64_t* r, int nr, in
     if (b != 0 && i + 1 < nr) v |= r[i + 1] << (64 - b);
     out[j] |= v;
   }
-}
-
-std::uint8_t base_class(CellState s) {
-  return s == CellState::Occupied ? kBlocked : s == CellState::Unknown ? kUnknown : kFree;
 }
 
 }  // namespace
@@ -78,7 +72,7 @@ void CSpaceStack::rebuild_row(const OccupancyMap& map, int y) {
   bool any = false;
   for (int x = 0; x < w_; ++x) {
     const CellState s = map.state_at(base + static_cast<std::uint32_t>(x));
-    base_[base + static_cast<std::uint32_t>(x)] = base_class(s);
+    base_[base + static_cast<std::uint32_t>(x)] = own_class(s);
     if (s == CellState::Occupied) {
       bits[1 + (x >> 6)] |= std::uint64_t{1} << (x & 63);
       any = true;

@@ -8,8 +8,15 @@
 
 #include "modules/planner/lib/footprint.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
+#include "modules/planner/lib/pass_grid.hpp"
 
 namespace robuter::plan {
+
+// Why: the class a cell takes with no footprint over it (one rule for the stack's copies and
+// the layers' writes): kBlocked on an obstacle, else kFree or kUnknown as the map says.
+inline std::uint8_t own_class(CellState s) {
+  return s == CellState::Occupied ? kBlocked : s == CellState::Unknown ? kUnknown : kFree;
+}
 
 // How a logged map cell changed for the layers in one sync (CSpaceStack::kind()).
 enum CellChange : std::uint8_t {

@@ -14,6 +14,7 @@ Planner::Planner(const PlannerConfig& config) : cfg_(config) {
 
 void Planner::set_map(const OccupancyMap& map) {
   map_ = map;
+  stamp_structure();
   map_.clear_changes();
   const double res = map_.resolution();
   if (res != masks_resolution_) {  // masks depend on the resolution only: made once

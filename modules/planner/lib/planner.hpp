@@ -70,14 +70,11 @@ class Planner {
   // layers are then stale until rebuild_step() has returned true. No allocation. Between the two,
   // the map must not change and nothing may sync, prepare or plan.
   void shift_map(int dx, int dy);
-  // Why: known structure (a place graph's walls, places/wall_raster.hpp) the window takes as it
-  // moves: after a shift (before the layers are retaken) and at stamp time, every unknown cell of
-  // the window that `structure` holds occupied becomes occupied (as a known obstacle). Null: none.
-  // `structure` must outlive the planner and have the window's resolution and cell alignment.
+  // Why: known structure (a place graph's walls, places/wall_raster.hpp) the map takes in
+  // set_map() and after each shift, before the layers are built from it: every unknown cell the
+  // structure holds occupied becomes occupied (at the most hits). Null: none. Set before
+  // set_map(); `structure` must outlive the planner and have the map's resolution and cell alignment.
   void set_structure(const OccupancyMap* structure) { structure_ = structure; }
-  // Why: stamps the structure on the current map now (at start-up, before set_map's layers are
-  // used); the changes are folded at the next sync.
-  void stamp_structure();
   // Why: rebuilds at most `layers` C-space layers after shift_map() (the turn layers and the
   // relaxation count as layers), so that a caller with a time budget spreads the rebuild over
   // several steps; true once every layer is rebuilt (at once when none is pending).
@@ -132,6 +129,7 @@ class Planner {
   HeadingOptions heading_options() const;       // the rectangle search's options
   void fill_waypoints_2d(const std::vector<Cell>& cells);
   void fill_waypoints_3d(const std::vector<CellPose>& cells);
+  void stamp_structure();  // set_structure()'s cells onto map_ (no layer follows: callers rebuild)
 
   PlannerConfig cfg_;
   CostModel costs_;                     // from cfg_.unknown_cost
