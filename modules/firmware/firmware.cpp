@@ -360,7 +360,12 @@ std::optional<std::string> Firmware::setup() {
 int Firmware::run() {
   if (picture_writer_) picture_writer_->start();
   int status = kernel_->run();
-  if (picture_writer_) picture_writer_->stop();
+  if (picture_writer_) {
+    picture_writer_->stop();
+    // Every plan is accounted for: written, failed, or dropped (each drop was also logged).
+    std::fprintf(stderr, "robuterd: planner pictures: %u written, %u failed, %u dropped (writer busy) in %s\n",
+                 picture_writer_->written(), picture_writer_->failed(), picture_writer_->dropped(), picture_writer_->dir().c_str());
+  }
   const bool picture = !opt_.picture.empty() && sim_;
   if (picture) {
     const auto& ranges = bb_.ranges.reader().peek();  // what the firmware last read

@@ -38,6 +38,8 @@ class PictureWriter {
   bool running() const { return thread_.joinable(); }
   std::uint32_t written() const { return written_.load(); }
   std::uint32_t failed() const { return failed_.load(); }
+  // Why: plans whose picture was dropped because the writer was still drawing (each one logged).
+  std::uint32_t dropped() const { return box_.dropped(); }
   const std::string& dir() const { return dir_; }
 
  private:

@@ -471,7 +471,11 @@ void PlannerModule::run(Kernel& k) {
 void PlannerModule::picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal) {
   if (pictures_ == nullptr) return;
   plan::PlanSnapshot* snap = pictures_->try_fill();
-  if (snap == nullptr) return;  // the writer still draws the previous plan: this one is dropped
+  if (snap == nullptr) {  // the writer still draws the previous picture: this plan's is dropped, and said so
+    log::warn("planner: picture of plan {} for goal {} dropped (the writer is still drawing; {} dropped so far)",
+              plans_, goal_.seq, pictures_->dropped());
+    return;
+  }
   if (snap->capture(planner_, r, pose, goal)) {
     snap->prefix_len = std::min(prefix_len_, snap->path_len);
     snap->goal_seq = goal_.seq;

@@ -8,6 +8,7 @@
 #include "modules/planner/lib/text_render.hpp"
 #include "modules/planner/map_window.hpp"
 #include "modules/planner/path_follower.hpp"
+#include "modules/planner/picture_mailbox.hpp"
 #include "modules/planner/route.hpp"
 #include "modules/planner/sonar_mapping.hpp"
 #include "robot/robot_model.hpp"
@@ -214,6 +215,23 @@ TEST(PathFollower, TurnsThenDrivesForwardAndBackward) {
   EXPECT_NEAR(end.y, 0.5, 0.03);
   EXPECT_NEAR(end.heading, -plan::kPi / 2, 0.04);  // turned clockwise, as the leg asks
   EXPECT_EQ(f.step(end).left, 0);
+}
+
+// Why (issue #22: seed 000 wrote one picture per plan): a plan whose picture cannot be handed
+// over while the writer still holds the last one is counted, never lost without a word (the
+// planner logs each drop; robuterd prints the totals at exit).
+TEST(PictureMailbox, ABusySlotDropsThePictureAndCountsIt) {
+  planner::PictureMailbox box;
+  ASSERT_NE(box.try_fill(), nullptr);
+  box.publish();
+  EXPECT_EQ(box.try_fill(), nullptr);  // ready, not yet taken: dropped
+  ASSERT_NE(box.take(), nullptr);
+  EXPECT_EQ(box.try_fill(), nullptr);  // being drawn: dropped
+  box.release();
+  ASSERT_NE(box.try_fill(), nullptr);  // free again
+  box.publish();
+  EXPECT_EQ(box.published(), 2u);
+  EXPECT_EQ(box.dropped(), 2u);
 }
 
 }  // namespace
