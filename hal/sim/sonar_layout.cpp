@@ -30,7 +30,8 @@ double trajectory_radius(const SonarMount& mount) {
   return (a * a + b * b) / (2.0 * a);
 }
 
-// Seed 002 ptu.h/ptu.c: PAN_TIME_OUT 15 ms, SOUND_SPEED 335 m/s, fitted Y = 0.96 X + 43 mm.
+// Seed 002 ptu.h: PAN_TIME_OUT 15 ms, SOUND_SPEED 335 m/s; its text's fit Y = 0.96 X + 43 mm (its
+// ptu.c corrects with 46, as the firmware does: docs/DOORS.md PT-2).
 SonarParams default_pan_tilt_params() {
   SonarParams p;
   p.timeout = 0.015;

@@ -19,6 +19,20 @@ TEST(RangeCorrection, SeedCalibrationLine) {
   EXPECT_EQ(correct_range(30), 0);       // never negative
 }
 
+// Why (issue #22): the seed's two numbers. Its `read_pt()` corrects with offset 46 (kept here),
+// its text fits Y = 0.96 X + 43 (what the simulator's transducer follows, docs/DOORS.md PT-2):
+// a wall 1.000 m from the face reads 0.96 * 1000 + 43 = 1003 raw, which the firmware reports as
+// 996 (3.1 mm short, before truncation); the text's own line would report 1000. The seed's table
+// shows a no-echo sector as 2491, the raw cap: its code, like ours, reports 2546 (PT-1).
+TEST(RangeCorrection, TheSeedsCodeAgainstItsTextAndTable) {
+  EXPECT_EQ(correct_range(1003), 996);   // the simulated wall at 1.000 m, through the seed's code
+  RangeCalibration text;
+  text.offset_mm = 43;
+  EXPECT_EQ(correct_range(1003, text), 1000);  // the text's line: exact
+  EXPECT_EQ(correct_range(2491, text), 2550);  // and the cap: 15 ms of sound at 340 m/s, 2.550 m
+  EXPECT_EQ(correct_range(0), 2546);     // the table's "2491" is the raw cap, not what P sends
+}
+
 TEST(RangeCorrection, OtherCalibration) {
   RangeCalibration c;
   c.cap_mm = 5000;
