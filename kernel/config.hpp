@@ -122,7 +122,7 @@ struct GateConfig {
   std::uint32_t lateral_tolerance_mm = 30;   // aligned when the axle is this close to the centre line, mm
   std::uint32_t heading_tolerance_centideg = 200;  // and the heading this close to the passage's normal, 0.01°
   std::uint32_t max_manoeuvres = 6;          // manoeuvres allowed before giving up
-  bool hand_over = false;                    // start the door crossing when aligned (the seed's door = ON)
+  bool hand_over = false;                    // start the door crossing when aligned (the seed's door = ON); off: it lowers the sonar without a 2nd command (SAFETY.md §1)
 };
 
 // The door crossing (seed doors.c, doors.h; docs/DOORS.md). The body and the pan-tilt's place on

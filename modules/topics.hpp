@@ -154,7 +154,7 @@ struct MotionCommand {
 
 // Life of the command links (serial).
 struct LinkStatus {
-  std::uint64_t last_message_tick = 0;  // tick of the last well-formed command
+  std::uint64_t last_message_tick = 0;  // tick of the last complete line, valid or not (the seed's stamp: SAFETY.md SAF-2)
   std::uint32_t stop_seq = 0;           // immediate stop bytes received
   std::uint32_t reenable_seq = 0;       // re-enable requests (XR)
   std::uint32_t links_open = 0;         // links with a client attached

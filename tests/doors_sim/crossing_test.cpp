@@ -115,6 +115,24 @@ TEST(Crossing, Door90FromTheCornersOfTheStartBox) {
     }
 }
 
+// Why (issue #22, seed 002 §4: the finder hands over to the door crossing): with `[gate]
+// hand_over = true` the crossing starts by itself once the finder is aligned — no Ad — lowers
+// the detections to the bumper only while it is in the door, and gives them back. Off by default:
+// that lowering without a second operator command is a safety decision (SAFETY.md §1, DOORS.md DR-1).
+TEST(Crossing, TheSeedsHandOverCrossesWithoutAdWhenConfigured) {
+  CrossingSetup s = seeded_start(kWorlds + "door90.toml", 1);
+  s.send_ad = false;
+  s.config.gate.hand_over = true;
+  const CrossingResult r = run_crossing(s);
+  ASSERT_TRUE(r.started) << r.log;
+  EXPECT_EQ(r.gate, "aligned") << r.log;
+  EXPECT_EQ(r.doors, "crossed") << r.log;
+  EXPECT_EQ(r.mask_during, 1) << r.log;
+  EXPECT_EQ(r.mask_after, 7) << r.log;
+  EXPECT_FALSE(r.contact) << r.log;
+  EXPECT_TRUE(r.body_through) << r.log;
+}
+
 // 70 cm is the robot's own width: the finder cannot see through it from 1.5 m, and sent in
 // anyway the crossing stops in front of it, blocked on both sides, and gives up — no contact.
 TEST(Crossing, Gap70EndsInCantCrossWithoutContact) {

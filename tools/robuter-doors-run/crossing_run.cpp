@@ -114,9 +114,11 @@ CrossingResult run_crossing(const CrossingSetup& s) {
     r.gate_s = fw.seconds() - t0;
     r.log += *fw.ask("XD") + "\n";
     if (gate().state == ModeState::failed) r.log += *fw.ask("BP") + "\n";
-    if (s.send_ad && (gate().state == ModeState::aligned || s.ad_even_if_gate_failed)) {
+    // With [gate] hand_over the crossing starts by itself once aligned (the seed's hand-over): no Ad.
+    const bool hand_over = s.config.gate.hand_over && gate().state == ModeState::aligned;
+    if (hand_over || (s.send_ad && (gate().state == ModeState::aligned || s.ad_even_if_gate_failed))) {
       const double t1 = fw.seconds();
-      fw.ask("Ad");
+      if (!hand_over) fw.ask("Ad");
       const std::uint64_t ad_tick = fw.kernel().tick();
       auto ended = [&] { return doors().state == ModeState::crossed || doors().state == ModeState::failed; };
       for (int i = 0; i < 60000 && !ended(); ++i) {
