@@ -28,6 +28,7 @@ const auto* const kPictureCaches = ::testing::AddGlobalTestEnvironment(new Pictu
 // ROBUTER_EMERGENCY_RULE=seed|envelope picks the obstacle rule (the comparison of docs/SAFETY.md §13).
 // Measurements by hand (docs/PLANNER.md "Seed 003's numbers"): ROBUTER_PLANNER_COUNTS=INITIAL,THRESHOLD
 // sets [planner] initial_count and hit_threshold, ROBUTER_PLANNER_BEAM_RANGE_MM its beam_range_mm,
+// ROBUTER_PLANNER_FOLLOW_RANGE_MM its follow_range_mm (seed 000's 21 steps: 1050),
 // ROBUTER_COMM_LIMIT_TICKS [emergency] comm_limit_ticks (the test says nothing for the whole run:
 // past 3 min the link watchdog ends it, "stopped").
 Config lab_config() {
@@ -36,6 +37,7 @@ Config lab_config() {
   if (const char* counts = std::getenv("ROBUTER_PLANNER_COUNTS"))
     std::sscanf(counts, "%u,%u", &cfg.planner.initial_count, &cfg.planner.hit_threshold);
   if (const char* range = std::getenv("ROBUTER_PLANNER_BEAM_RANGE_MM")) cfg.planner.beam_range_mm = std::atoi(range);
+  if (const char* follow = std::getenv("ROBUTER_PLANNER_FOLLOW_RANGE_MM")) cfg.planner.follow_range_mm = std::atoi(follow);
   if (const char* limit = std::getenv("ROBUTER_COMM_LIMIT_TICKS")) cfg.emergency.comm_limit_ticks = std::atoi(limit);
   cfg.planner.map_origin_x_mm = -500;
   cfg.planner.map_origin_y_mm = -500;
