@@ -38,8 +38,9 @@ CourseOutput Course::out(std::int32_t l, std::int32_t r) const {
   return o;
 }
 
-// Why closed loop: the seed set fixed wheel ratios, whose whole cm/s leave a 1 m half-circle 3 %
-// off (20 and 11 cm/s turn on 1.03 m); following the path on odometry removes that error.
+// Why closed loop: the seed set fixed wheel ratios (its one visible arc, a left quarter circle of
+// 1 m at 20 : 10.77, docs/DOORS.md DM-1), whose whole cm/s leave a 1 m circle 3 % off (20 and
+// 11 cm/s turn on 1.03 m); following the path on odometry removes that error.
 CourseOutput Course::follow_line(double x0, double y0, double h, const Local& at, std::int32_t speed) const {
   const double left_of = -(at.x - x0) * std::sin(h) + (at.y - y0) * std::cos(h);  // mm
   const double w = kHeadingGain * wrap(h - at.th) - std::clamp(kLateralGain * left_of, -kMaxLateralTerm, kMaxLateralTerm);
