@@ -103,5 +103,16 @@ TEST(TextRender, SeedCharacters) {
   EXPECT_EQ(around, " ..\n.P.\n  #\n");
 }
 
+// Why (issue #22): seed 000's gt.log marks: O the start (M on an obstacle), D the goal, X blocked.
+TEST(TextRender, TheThesisLogMarksStartGoalAndObstacles) {
+  PassGrid g(4, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) g.set({x, y}, kFree);
+  g.set({2, 0}, kBlocked);
+  g.set({2, 1}, kBlocked);
+  EXPECT_EQ(render_thesis_log(g, {0, 0}, {3, 1}), "  XD\nO X \n");
+  EXPECT_EQ(render_thesis_log(g, {2, 0}, {3, 1}), "  XD\n  M \n");
+}
+
 }  // namespace
 }  // namespace robuter::plan

@@ -45,6 +45,7 @@ struct Options {
   double unknown_cost = 1.0;              // multiplier on unknown cells
   double rotation_cost = 0.30;            // m per rad turned
   bool text = false;                      // print seed 003's text picture around the start
+  bool thesis_log = false;                // print seed 000's gt.log: the expanded map with O, D, X
   bool waypoints = false;                 // print the path
 };
 
@@ -132,6 +133,11 @@ int run_thesis(const Options& o) {
   if (o.text) {
     std::fputs(render_around(map, map.cell_of({start.x, start.y}), 30).c_str(), stdout);
   }
+  if (o.thesis_log) {
+    const Cell s = map.cell_of({start.x, start.y});
+    // The thesis's robot is a disc (its expansion has one slice); a rectangle shows its slice 0.
+    std::fputs(render_thesis_log(planner.expanded(0), s, map.cell_of(goal_point)).c_str(), stdout);
+  }
   if (r.found()) {
     std::printf("path found: length %.3f m, cost %.3f, %zu waypoints, %u nodes expanded\n",
                 r.length * res, r.cost * res, planner.waypoints().size(), r.expanded);
@@ -180,6 +186,8 @@ int main(int argc, char** argv) {
   app.add_option("--unknown-cost", o.unknown_cost, "cost multiplier of unknown cells (>= 1)")->check(CLI::Range(1.0, 1e6));
   app.add_option("--rotation-cost", o.rotation_cost, "m of path per rad turned in place")->check(CLI::NonNegativeNumber);
   app.add_flag("--text", o.text, "print the map around the start in seed 003's characters");
+  app.add_flag("--thesis-log", o.thesis_log,
+               "print the whole expanded map as seed 000's gt.log: O start (M on an obstacle), D goal, X obstacle (a rectangle: slice 0)");
   app.add_flag("--waypoints", o.waypoints, "print the path: x y (m) heading (degrees)");
   // Usage errors keep CLI11's own codes (105..114): 2 is "no path" here, 1 a broken input file.
   if (const auto status = robuter::cli::parse_or_usage(app, argc, argv, robuter::cli::UsageStatus::cli11)) return *status;

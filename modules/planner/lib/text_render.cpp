@@ -35,4 +35,20 @@ std::string render_around(const OccupancyMap& map, Cell robot, int half) {
   return render_text(map, robot.x - half, robot.y - half, 2 * half + 1, 2 * half + 1, robot);
 }
 
+std::string render_thesis_log(const PassGrid& expanded, Cell start, Cell goal) {
+  std::string out;
+  out.reserve(static_cast<std::size_t>(expanded.width + 1) * static_cast<std::size_t>(expanded.height));
+  for (int y = expanded.height - 1; y >= 0; --y) {
+    for (int x = 0; x < expanded.width; ++x) {
+      const Cell c{x, y};
+      const bool blocked = expanded.at(c) == kBlocked;
+      if (c == start) out += blocked ? 'M' : 'O';
+      else if (c == goal) out += 'D';
+      else out += blocked ? 'X' : ' ';
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 }  // namespace robuter::plan

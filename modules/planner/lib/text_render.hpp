@@ -7,6 +7,7 @@
 
 #include "modules/planner/lib/geometry.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
+#include "modules/planner/lib/pass_grid.hpp"
 
 namespace robuter::plan {
 
@@ -18,5 +19,10 @@ std::string render_text(const OccupancyMap& map, int x0, int y0, int width, int 
 
 // Why: the seed's view: a square window of (2 * half + 1) cells centred on the robot.
 std::string render_around(const OccupancyMap& map, Cell robot, int half);
+
+// Why: seed 000's `gt.log` (docs/PLANNER.md PL-10): the whole expanded map, top row first, 'X'
+// where the grid is blocked, ' ' elsewhere, 'O' the start ('M' when the start itself is
+// blocked), 'D' the goal; the thesis's map had no unknown cells, so none are shown.
+std::string render_thesis_log(const PassGrid& expanded, Cell start, Cell goal);
 
 }  // namespace robuter::plan
