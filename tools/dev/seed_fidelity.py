@@ -26,59 +26,48 @@ ROW_ID = re.compile(r"\b([A-Z]{2,4}-\d+)\b")
 VERDICT = re.compile(r"^(same\b.*|adopted\b.*|kept\b.*)$", re.IGNORECASE)
 
 
-def tables(path):
-    """Rows of the fidelity tables of one doc: {id: (line, cells)} and the number of tables."""
-    rows, count, inside = {}, 0, False
+def scan(path):
+    """One doc in one pass: its fidelity rows [(line, id, cells)], its number of fidelity tables,
+    and its mentions [(line, text)] outside those tables."""
+    rows, mentions, count, inside = [], [], 0, False
     for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
         if line.startswith("#"):
             inside = "fidelity to the seeds" in line.lower()
             count += 1 if inside else 0
-            continue
         if inside and line.startswith("|"):
             cells = [c.strip() for c in line.strip().strip("|").split("|")]
-            m = ROW_ID.fullmatch(cells[0]) if cells else None
-            if m:
-                rows[m.group(1)] = (n, cells)
-    return rows, count
+            if ROW_ID.fullmatch(cells[0]):
+                rows.append((n, cells[0], cells))
+            continue  # the tables' own cells are not mentions
+        mentions += [(n, m.group(0)) for m in MENTION.finditer(line)]
+    return rows, count, mentions
 
 
 def main(argv):
     check = "--check" in argv
-    global DOCS
-    if "--docs" in argv:
-        DOCS = pathlib.Path(argv[argv.index("--docs") + 1])
-    errors = []
-    rows = {}
-    for path in sorted(DOCS.glob("*.md")):
-        found, count = tables(path)
-        for rid, (n, cells) in found.items():
+    docs = pathlib.Path(argv[argv.index("--docs") + 1]) if "--docs" in argv else DOCS
+    errors, rows, mentions = [], {}, []
+    for path in sorted(docs.glob("*.md")):
+        found, count, said = scan(path)
+        mentions += [(f"{path.name}:{n}", text) for n, text in said]
+        for n, rid, cells in found:
+            where = f"{path.name}:{n}"
             if rid in rows:
-                errors.append(f"{path.name}:{n}: row {rid} also in {rows[rid][0]}")
-            rows[rid] = (f"{path.name}:{n}", cells)
+                errors.append(f"{where}: row {rid} also in {rows[rid]}")
+            rows[rid] = where
             if len(cells) != 5 or not all(cells):
-                errors.append(f"{path.name}:{n}: row {rid} needs five non-empty cells (row, seed, the seed, ours, verdict)")
+                errors.append(f"{where}: row {rid} needs five non-empty cells (row, seed, the seed, ours, verdict)")
             elif not (VERDICT.match(cells[4]) or re.search(r"\d", cells[4])):
-                errors.append(f"{path.name}:{n}: row {rid}'s verdict is neither 'same', 'adopted ...', "
-                              "'kept ...' nor a measurement")
+                errors.append(f"{where}: row {rid}'s verdict is neither 'same', 'adopted ...', 'kept ...' nor a measurement")
         if path.name in MODULE_DOCS and count != 1:
             errors.append(f"{path.name}: {count} fidelity tables (a module doc holds one)")
-    mentions = 0
-    for path in sorted(DOCS.glob("*.md")):
-        inside = False
-        for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
-            if line.startswith("#"):
-                inside = "fidelity to the seeds" in line.lower()
-            if inside and line.startswith("|"):
-                continue  # the tables' own cells
-            for m in MENTION.finditer(line):
-                mentions += 1
-                ids = [i for i in ROW_ID.findall(m.group(0)) if i in rows]
-                where = f"{path.name}:{n}"
-                if not ids:
-                    errors.append(f"{where}: {m.group(0)!r} cites no fidelity row")
-                for i in ids:
-                    print(f"{where}: {m.group(0)} -> {i} ({rows[i][0]})")
-    print(f"{mentions} seed mentions, {len(rows)} fidelity rows, {len(errors)} errors")
+    for where, text in mentions:
+        ids = [i for i in ROW_ID.findall(text) if i in rows]
+        if not ids:
+            errors.append(f"{where}: {text!r} cites no fidelity row")
+        for i in ids:
+            print(f"{where}: {text} -> {i} ({rows[i]})")
+    print(f"{len(mentions)} seed mentions, {len(rows)} fidelity rows, {len(errors)} errors")
     for e in errors:
         print("error: " + e, file=sys.stderr)
     return 1 if (check and errors) else 0
