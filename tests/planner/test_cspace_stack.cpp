@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <random>
 #include <set>
@@ -179,6 +180,90 @@ TEST(CSpaceStack, IncrementalUpdatesEqualAFreshBuild) {
     EXPECT_GT(seen[kFree], seen[kBlocked] / 10) << w << "x" << h;
     EXPECT_GT(seen[kUnknown], seen[kBlocked] / 10) << w << "x" << h;
     EXPECT_GT(changes_seen, 100000u) << w << "x" << h;
+  }
+}
+
+// Why: a block of new obstacles (what a scan finds ahead) goes by the update's window of bits
+// (CSpaceLayer), not by runs: at the map's corners and edges, inside, over old obstacles, with
+// cells freed and forgotten in the same batch, and a batch too spread for the window (by runs).
+// Every class layer and turn bit layer equals a fresh build after each batch, and both paths ran.
+TEST(CSpaceStack, BlocksOfNewObstaclesEqualAFreshBuild) {
+  const std::vector<FootprintMask> masks = default_masks();
+  constexpr int kTurnFirst = 32;
+  constexpr int kTurns = 32;
+  const int w = 130, h = 90;
+  OccupancyMap map(MapGeometry{w, h, 0.05, {}});
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if ((x / 11 + y / 8) % 3 != 0) map.mark_free({x, y});
+  for (const Cell c : {Cell{60, 40}, Cell{61, 40}, Cell{20, 70}, Cell{100, 12}}) map.mark_occupied(c);
+  map.clear_changes();
+  CSpaceStack stack;
+  stack.reset(map);
+  std::vector<CSpaceLayer> layers(masks.size());
+  for (std::size_t k = 0; k < masks.size(); ++k) layers[k].build(map, masks[k]);
+  SliceBits bits;
+  bits.resize(w, h, kTurns);
+  std::vector<CSpaceLayer> bit_layers(kTurns);
+  for (int k = 0; k < kTurns; ++k)
+    bit_layers[static_cast<std::size_t>(k)].build_bits(map, masks[static_cast<std::size_t>(kTurnFirst + k)], bits, k);
+  auto block = [&](int x0, int y0, int side) {
+    for (int y = y0; y < y0 + side; ++y)
+      for (int x = x0; x < x0 + side; ++x)
+        if (map.contains({x, y})) map.mark_occupied({x, y});
+  };
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> rx(0, w - 1), ry(0, h - 1);
+  const std::vector<std::function<void()>> batches = {
+      [&] { block(0, 0, 10); },                   // a corner
+      [&] { block(w - 10, h - 10, 10); },         // the opposite corner
+      [&] { block(-4, 40, 10); },                 // cut by the west edge
+      [&] { block(55, h - 6, 10); },              // cut by the north edge
+      [&] { block(56, 36, 10); },                 // over old obstacles
+      [&] {                                       // a block with cells freed and forgotten
+        block(30, 20, 10);
+        map.mark_free({60, 40});
+        map.set_count({20, 70}, OccupancyMap::kUnknown);
+        map.mark_free({3, 3});
+      },
+      [&] {                                       // a ragged block, holes and a spur
+        block(85, 50, 10);
+        map.mark_free({88, 53});
+        map.mark_free({90, 55});
+        for (int x = 95; x < 105; ++x) map.mark_occupied({x, 52});
+      },
+      [&] {                                       // spread single cells: by runs
+        for (int k = 0; k < 6; ++k) map.mark_occupied({rx(rng), ry(rng)});
+      },
+  };
+  std::size_t windows_before = 0;
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    batches[b]();
+    windows_before = stack.windows();
+    stack.begin_sync(map, map.changes());
+    std::vector<ClassChange> out;
+    for (CSpaceLayer& l : layers) l.update(stack, map, map.changes(), &out);
+    for (int k = 0; k < kTurns; ++k)
+      bit_layers[static_cast<std::size_t>(k)].update_bits(stack, map, map.changes(), bits, k);
+    stack.end_sync(map.changes());
+    map.clear_changes();
+    if (b + 1 < batches.size()) {
+      EXPECT_GE(stack.windows(), windows_before + masks.size()) << "batch " << b << " went by runs";
+    } else {
+      EXPECT_EQ(stack.windows(), windows_before) << "spread cells went by the window";
+    }
+    SliceBits fresh_bits;
+    fresh_bits.resize(w, h, kTurns);
+    for (int k = 0; k < kTurns; ++k) {
+      CSpaceLayer f;
+      f.build_bits(map, masks[static_cast<std::size_t>(kTurnFirst + k)], fresh_bits, k);
+    }
+    ASSERT_EQ(bits.bits, fresh_bits.bits) << "batch " << b << " turn bits";
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+      CSpaceLayer fresh;
+      fresh.build(map, masks[k]);
+      ASSERT_EQ(layers[k].grid().cls, fresh.grid().cls) << "batch " << b << " layer " << k;
+    }
   }
 }
 

@@ -192,6 +192,95 @@ bool CSpaceLayer::meets(const CSpaceStack& stack, int x, int y) const {
   update_in(store, stack, map, cells, nullptr);
 }
 
+// Why: new obstacles close together (the block a scan finds ahead) block the cells of a small
+// window around them. By runs, each cell near a 10 x 10 block is visited once per raised row
+// under its footprint (ten times); here the spans every (raised run, mask run) pair covers are
+// first ORed into the window's bits (CSpaceStack::window(): a few words per row), and each cell
+// of their union is visited once. Taken when the union's visits are estimated fewer and the
+// window fits; false (nothing done) otherwise, and the caller goes by runs. The same cells are
+// blocked either way.
+template <class Store>
+bool CSpaceLayer::block_raised_by_window(Store& store, CSpaceStack& stack, const OccupancyMap& map,
+                                         std::span<const std::uint32_t> cells,
+                                         std::vector<ClassChange>* out) const {
+  if (mask_.runs.empty()) return false;
+  const int w = map.width();
+  const int h = map.height();
+  int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+  std::int64_t raised = 0, runs = 0;
+  for (std::uint32_t o : cells) {
+    if (stack.kind(o) != kRaised) continue;
+    const Cell c = map.cell_of_index(o);
+    bx0 = std::min(bx0, c.x);
+    bx1 = std::max(bx1, c.x);
+    by0 = std::min(by0, c.y);
+    by1 = std::max(by1, c.y);
+    ++raised;
+    if (!(c.x > 0 && stack.kind(o - 1) == kRaised)) ++runs;
+  }
+  if (raised == 0) return false;
+  const int x_lo = std::max(bx0 - box_.x1, 0);
+  const int x_hi = std::min(bx1 - box_.x0, w - 1);
+  const int y_lo = std::max(by0 - box_.y1, 0);
+  const int y_hi = std::min(by1 - box_.y0, h - 1);
+  if (x_lo > x_hi || y_lo > y_hi) return false;
+  const int x0 = x_lo & ~63;  // the window's first column (word-aligned)
+  const int nw = ((x_hi - x0) >> 6) + 1;  // words per window row
+  const int rows = y_hi - y_lo + 1;
+  std::int64_t mask_cells = 0;
+  for (const MaskRun& r : mask_.runs) mask_cells += r.hi - r.lo + 1;
+  const auto mask_rows = static_cast<std::int64_t>(mask_.runs.size());
+  // Visits by runs (each run's spans) against the window's (its area at most, plus one range
+  // OR per pair, about a visit each).
+  const std::int64_t by_runs = runs * mask_cells + (raised - runs) * mask_rows;
+  const std::int64_t by_window = static_cast<std::int64_t>(rows) * (x_hi - x_lo + 1) + runs * mask_rows;
+  if (by_window >= by_runs) return false;
+  std::uint64_t* win = stack.window(static_cast<std::size_t>(rows) * static_cast<std::size_t>(nw));
+  if (win == nullptr) return false;  // larger than the stack's window: by runs
+  std::fill_n(win, static_cast<std::size_t>(rows) * static_cast<std::size_t>(nw), std::uint64_t{0});
+  for (std::uint32_t o : cells) {
+    if (stack.kind(o) != kRaised) continue;
+    const Cell oc = map.cell_of_index(o);
+    if (oc.x > 0 && stack.kind(o - 1) == kRaised) continue;  // not the first of its run
+    int last = oc.x;
+    while (last + 1 < w && stack.kind(o + static_cast<std::uint32_t>(last + 1 - oc.x)) == kRaised) ++last;
+    for (const MaskRun& r : mask_.runs) {
+      const int y = oc.y - r.dy;
+      if (y < y_lo || y > y_hi) continue;
+      const int lo = std::max(oc.x - r.hi, x_lo) - x0;
+      const int hi = std::min(last - r.lo, x_hi) - x0;
+      if (lo > hi) continue;
+      std::uint64_t* wr = win + static_cast<std::size_t>(y - y_lo) * static_cast<std::size_t>(nw);
+      const int jl = lo >> 6;
+      const int jh = hi >> 6;
+      const std::uint64_t first = ~std::uint64_t{0} << (lo & 63);
+      const std::uint64_t end = (hi & 63) == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << ((hi & 63) + 1)) - 1;
+      if (jl == jh) {
+        wr[jl] |= first & end;
+      } else {
+        wr[jl] |= first;
+        for (int j = jl + 1; j < jh; ++j) wr[j] = ~std::uint64_t{0};
+        wr[jh] |= end;
+      }
+    }
+    for (int x = oc.x; x <= last; ++x) {  // the run's cells themselves (their own obstacle)
+      const std::uint32_t g = store.index({x, oc.y});
+      if (!store.blocked(g)) store.set(stack, o + static_cast<std::uint32_t>(x - oc.x), g, kBlocked, out);
+    }
+  }
+  for (int y = y_lo; y <= y_hi; ++y) {
+    const std::uint64_t* wr = win + static_cast<std::size_t>(y - y_lo) * static_cast<std::size_t>(nw);
+    const std::uint32_t row = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(w);
+    for (int j = 0; j < nw; ++j)
+      for (std::uint64_t v = wr[j]; v != 0; v &= v - 1) {
+        const int x = x0 + j * 64 + std::countr_zero(v);
+        const std::uint32_t g = store.index({x, y});
+        if (!store.blocked(g)) store.set(stack, row + static_cast<std::uint32_t>(x), g, kBlocked, out);
+      }
+  }
+  return true;
+}
+
 // Why: one update, written through `store`; `out` only with a class store.
 template <class Store>
 void CSpaceLayer::update_in(Store& store, CSpaceStack& stack, const OccupancyMap& map,
@@ -202,8 +291,10 @@ void CSpaceLayer::update_in(Store& store, CSpaceStack& stack, const OccupancyMap
   // Blocks first, then the re-tests against the final occupancy, then the relabels: each step
   // writes what the final occupancy and states say, so the order only decides the work.
   // A bit layer skips the relabels: they never change whether a cell is blocked.
+  const bool raised_done = block_raised_by_window(store, stack, map, cells, out);
   for (const CellChange pass : {kRaised, kLowered, kRelabelled}) {
     if (!Store::kClasses && pass == kRelabelled) break;
+    if (pass == kRaised && raised_done) continue;
     for (std::uint32_t o : cells) {
       if (stack.kind(o) != pass) continue;
       const Cell oc = map.cell_of_index(o);

@@ -86,6 +86,9 @@ class CSpaceLayer {
   template <class Store>
   void fill(const CSpaceStack& stack, const OccupancyMap& map, Store& store) const;
   template <class Store>
+  bool block_raised_by_window(Store& store, CSpaceStack& stack, const OccupancyMap& map,
+                              std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;
+  template <class Store>
   void update_in(Store& store, CSpaceStack& stack, const OccupancyMap& map,
                  std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;
 

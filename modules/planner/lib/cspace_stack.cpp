@@ -37,6 +37,8 @@ void CSpaceStack::reset(const OccupancyMap& map) {
   row_dirty_.assign(static_cast<std::size_t>(h_), 0);
   base_.assign(map.cell_count(), kFree);
   scratch_.assign(static_cast<std::size_t>(wpr_), 0);
+  window_.assign(kWindowWords, 0);
+  windows_ = 0;
   rebuild(map);
 }
 

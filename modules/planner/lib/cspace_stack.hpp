@@ -78,6 +78,17 @@ class CSpaceStack {
   const std::uint8_t* base_row(int y) const { return base_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_); }
   // Why: a build's row of bits without allocating (one row; not reentrant).
   std::uint64_t* scratch() const { return scratch_.data(); }
+  // Why: a layer update's window of bits around new obstacles (CSpaceLayer): `words` words
+  // without allocating, or null when the window is larger than the stack holds (kWindowWords;
+  // not reentrant).
+  std::uint64_t* window(std::size_t words) const {
+    if (words > window_.size()) return nullptr;
+    ++windows_;
+    return window_.data();
+  }
+  // Why: how many layer updates went by a window since reset() (tests see both paths taken).
+  std::size_t windows() const { return windows_; }
+  static constexpr std::size_t kWindowWords = 4096;  // 32 kB: e.g. 512 rows of 8 words (512 cells)
 
   // Why: a layer's update marks a cell reported once (bit kReported of the per-cell byte).
   bool mark_reported(std::uint32_t map_index) {
@@ -119,6 +130,8 @@ class CSpaceStack {
   std::vector<std::uint8_t> row_dirty_;  // per row: holds a cell of the current begin_sync (cleared by it)
   std::vector<std::uint8_t> base_;   // per map cell: CellClass with no footprint
   mutable std::vector<std::uint64_t> scratch_;  // wpr_ words for a build's row
+  mutable std::vector<std::uint64_t> window_;   // kWindowWords words for an update's window
+  mutable std::size_t windows_ = 0;             // window() calls that returned the window
 };
 
 }  // namespace robuter::plan
