@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <map>
 #include <string>
 #include <cstdlib>
 #include <filesystem>
@@ -550,6 +551,8 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   p.set_map(base);
   activations();
   std::vector<double> replan, replan_sync;
+  // Per outcome of the replan (found, unreachable, start blocked...): its times.
+  std::map<std::string, std::vector<double>> by_status;
   int found = 0, placed_total = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < 100; ++i) {
@@ -577,8 +580,10 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
         const double c0 = cpu_ms();
         p.sync();  // the layers and the heuristic field take the new cells
         const double c1 = cpu_ms();
-        found += p.plan(start, goal).found() ? 1 : 0;  // the search
+        const PlanResult rr = p.plan(start, goal);  // the search
+        found += rr.found() ? 1 : 0;
         replan.push_back(cpu_ms() - c0);
+        by_status[std::string(to_string(rr.status))].push_back(replan.back());
         replan_sync.push_back(c1 - c0);
         placed_total += placed;
       } else {
@@ -594,13 +599,19 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   std::printf("  full plan (set_map + plan)     %8.2f ms CPU (median of 5; layers %.2f); same map, new goal %.2f ms%s\n",
               full_ms, median(layers), median(search_only),
               check_default ? "" : (median(search_only) < 20.0 ? "   new-goal plan < 20 ms: PASS" : "   new-goal plan < 20 ms: FAIL"));
+  // The target (issue #16 item 3): a replan >= 10x faster than a full plan, which is what the
+  // issue measured as "a full plan" (set_map + plan: the layers built from the map, the field,
+  // the search). Also printed: against a plan for a new goal on the map already held (the field
+  // and the search alone), which a replan — it folds 100 cells into 65 layers first — cannot
+  // approach. docs/PLANNER.md, "The firmware's planner".
   std::printf("  replan, 100 new cells ahead    %8.2f ms CPU (median of 100; %d found a path, %.0f cells each)"
-              "   new-goal plan / replan %.1fx (with set_map %.1fx), target >= 10x: %s\n",
+              "   full plan / replan %.1fx, target >= 10x: %s (new-goal plan / replan %.1fx)\n",
               replan_ms, found, static_cast<double>(placed_total) / static_cast<double>(std::max<std::size_t>(1, replan.size())),
-              median(search_only) / replan_ms, full_ms / replan_ms,
-              // The target compares with a plan on the same map (cost field + search): rebuilding
-              // every layer (set_map) is not part of planning from scratch on a map already held.
-              verdict(median(search_only) / replan_ms >= 10.0));
+              full_ms / replan_ms, verdict(full_ms / replan_ms >= 10.0), median(search_only) / replan_ms);
+  for (auto& [status, times] : by_status)
+    std::printf("    %-16s %3zu replans, median %6.2f ms, worst %6.2f ms   full plan / replan %.1fx\n",
+                status.c_str(), times.size(), median(times), *std::max_element(times.begin(), times.end()),
+                full_ms / median(times));
   std::printf("    of which sync (layers + field) %6.2f ms (median)\n", median(replan_sync));
   std::printf("  worst activation               %8.2f ms CPU (sync %.2f, field step %.2f, search step %.2f;"
               " first plan + 100 replans)%s\n",
