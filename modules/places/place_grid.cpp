@@ -48,8 +48,7 @@ std::vector<std::string_view> words(std::string_view line) {
 
 }  // namespace
 
-PlaceGrid cut_place(const PlaceGraph& graph, std::size_t place, const plan::OccupancyMap& map,
-                    std::optional<plan::Point2> robot, double margin) {
+PlaceBox place_box(const PlaceGraph& graph, std::size_t place, const plan::MapGeometry& map, double margin) {
   const Place& p = graph.places().at(place);
   double x0 = p.area.front().x(), x1 = x0, y0 = p.area.front().y(), y1 = y0;
   for (const Vec2& v : p.area) {
@@ -59,37 +58,60 @@ PlaceGrid cut_place(const PlaceGraph& graph, std::size_t place, const plan::Occu
     y1 = std::max(y1, v.y());
   }
   margin = std::max(margin, 0.0);
-  x0 -= margin;
-  y0 -= margin;
-  x1 += margin;
-  y1 += margin;
+  const double r = map.resolution;
   // Every cell the box touches; a box edge exactly on a cell boundary takes no cell beyond it.
-  const double eps = 1e-9 * map.resolution();
-  const plan::Cell lo = map.cell_of({x0 + eps, y0 + eps});
-  const plan::Cell hi = map.cell_of({x1 - eps, y1 - eps});
-  PlaceGrid g;
-  g.place = p.name;
-  g.cell = map.resolution();
-  g.width = std::max(1, hi.x - lo.x + 1);
-  g.height = std::max(1, hi.y - lo.y + 1);
-  g.origin = {map.geometry().origin.x + lo.x * map.resolution(), map.geometry().origin.y + lo.y * map.resolution()};
-  g.cells.assign(static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height), plan::CellState::Unknown);
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      const plan::Cell c{lo.x + x, lo.y + y};
+  const double eps = 1e-9 * r;
+  auto cell = [&](double v, double o) {
+    const double c = std::floor((v - o) / r);
+    return c > -1e9 && c < 1e9 ? static_cast<int>(c) : 0;  // places and maps are finite and small
+  };
+  const plan::Cell lo{cell(x0 - margin + eps, map.origin.x), cell(y0 - margin + eps, map.origin.y)};
+  const plan::Cell hi{cell(x1 + margin - eps, map.origin.x), cell(y1 + margin - eps, map.origin.y)};
+  PlaceBox b;
+  b.lo = lo;
+  b.width = std::max(1, hi.x - lo.x + 1);
+  b.height = std::max(1, hi.y - lo.y + 1);
+  b.origin = {map.origin.x + lo.x * r, map.origin.y + lo.y * r};
+  return b;
+}
+
+bool cut_place_into(const PlaceGraph& graph, std::size_t place, const plan::OccupancyMap& map,
+                    std::optional<plan::Point2> robot, PlaceGrid& out, double margin) {
+  const PlaceBox b = place_box(graph, place, map.geometry(), margin);
+  const std::size_t n = static_cast<std::size_t>(b.width) * static_cast<std::size_t>(b.height);
+  if (n > out.cells.capacity()) return false;
+  out.cell = map.resolution();
+  out.width = b.width;
+  out.height = b.height;
+  out.origin = b.origin;
+  out.scanned_from.reset();
+  out.cells.assign(n, plan::CellState::Unknown);
+  for (int y = 0; y < b.height; ++y)
+    for (int x = 0; x < b.width; ++x) {
+      const plan::Cell c{b.lo.x + x, b.lo.y + y};
       if (map.contains(c))
-        g.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(g.width) + static_cast<std::size_t>(x)] =
+        out.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(b.width) + static_cast<std::size_t>(x)] =
             map.state(c);
     }
   if (robot) {
     const plan::Cell c = map.cell_of(*robot);
-    if (c.x >= lo.x && c.x < lo.x + g.width && c.y >= lo.y && c.y < lo.y + g.height) {
-      g.scanned_from = plan::Cell{c.x - lo.x, c.y - lo.y};
+    if (c.x >= b.lo.x && c.x < b.lo.x + b.width && c.y >= b.lo.y && c.y < b.lo.y + b.height) {
+      out.scanned_from = plan::Cell{c.x - b.lo.x, c.y - b.lo.y};
       // The robot stands there: the cell is free (as 'P' reads back).
-      g.cells[static_cast<std::size_t>(c.y - lo.y) * static_cast<std::size_t>(g.width) +
-              static_cast<std::size_t>(c.x - lo.x)] = plan::CellState::Free;
+      out.cells[static_cast<std::size_t>(c.y - b.lo.y) * static_cast<std::size_t>(b.width) +
+                static_cast<std::size_t>(c.x - b.lo.x)] = plan::CellState::Free;
     }
   }
+  return true;
+}
+
+PlaceGrid cut_place(const PlaceGraph& graph, std::size_t place, const plan::OccupancyMap& map,
+                    std::optional<plan::Point2> robot, double margin) {
+  const PlaceBox b = place_box(graph, place, map.geometry(), margin);
+  PlaceGrid g;
+  g.place = graph.places().at(place).name;
+  g.cells.reserve(static_cast<std::size_t>(b.width) * static_cast<std::size_t>(b.height));
+  cut_place_into(graph, place, map, robot, g, margin);
   return g;
 }
 

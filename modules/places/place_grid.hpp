@@ -32,6 +32,25 @@ struct PlaceGrid {
   }
 };
 
+// The cells a place's grid covers on a map's cells.
+struct PlaceBox {
+  plan::Cell lo{};          // the map cell at the grid's cell (0, 0)
+  int width = 0;            // cells along x
+  int height = 0;           // cells along y
+  plan::Point2 origin{};    // m, the low-left corner of the map cell `lo`
+};
+
+// Why: the box cut_place() takes (below), without cutting: a caller sizes its buffers with it.
+PlaceBox place_box(const PlaceGraph& graph, std::size_t place, const plan::MapGeometry& map,
+                   double margin = kPlaceGridMargin);
+
+// Why: cut_place() into `out` without allocating when `out.cells` already holds the box's
+// cells (capacity): the planner's periodic path cuts into a buffer sized at start-up. `out.place`
+// is left as it is (the name is the writer's to set). False, `out` unchanged, when the box holds
+// more cells than the capacity.
+bool cut_place_into(const PlaceGraph& graph, std::size_t place, const plan::OccupancyMap& map,
+                    std::optional<plan::Point2> robot, PlaceGrid& out, double margin = kPlaceGridMargin);
+
 // Why: cut place `place`'s bounding box, widened by `margin` (m) on every side so that the walls
 // on its edges are in it (their cells lie just outside the polygon), out of `map` (on the map's
 // cells: every cell the box touches); cells off the map are unknown. `robot` (m, map frame), if

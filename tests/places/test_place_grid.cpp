@@ -64,6 +64,29 @@ TEST(PlaceGrid, CutIsTheBoundingBoxInSeed003Characters) {
   EXPECT_EQ(wide.at(4, 2), CellState::Occupied) << "map cell (5, 2)";
 }
 
+// Why: the periodic path's cut writes into a buffer sized at start-up: within its capacity it
+// allocates nothing and gives what cut_place gives; a box larger than the capacity is refused and
+// the buffer left as it was.
+TEST(PlaceGrid, CutIntoABufferSizedBefore) {
+  const PlaceGraph g = two_rooms();
+  const plan::OccupancyMap m = small_map();
+  const PlaceBox box = place_box(g, 0, m.geometry(), 0.0);
+  EXPECT_EQ(box.lo, (Cell{2, 1}));
+  PlaceGrid buf;
+  buf.cells.reserve(static_cast<std::size_t>(box.width * box.height));
+  const CellState* data = buf.cells.data();
+  ASSERT_TRUE(cut_place_into(g, 0, m, plan::Point2{0.1, 0.1}, buf, 0.0));
+  EXPECT_EQ(buf.cells.data(), data) << "no new buffer";
+  const PlaceGrid whole = cut_place(g, 0, m, plan::Point2{0.1, 0.1}, 0.0);
+  EXPECT_EQ(buf.cells, whole.cells);
+  EXPECT_EQ(buf.scanned_from, whole.scanned_from);
+  EXPECT_TRUE(buf.place.empty()) << "the name is the writer's";
+  const std::vector<CellState> before = buf.cells;
+  EXPECT_FALSE(cut_place_into(g, 0, m, std::nullopt, buf, 0.5)) << "a wider box than the buffer holds";
+  EXPECT_EQ(buf.cells, before);
+  EXPECT_TRUE(buf.scanned_from.has_value());
+}
+
 // Why: cells of the box off the map are unknown; a robot off the grid gives no 'P'.
 TEST(PlaceGrid, CellsOffTheMapAreUnknown) {
   plan::OccupancyMap m(plan::MapGeometry{3, 2, 0.25, {0.0, 0.0}});  // covers x 0-0.75 only
