@@ -395,10 +395,18 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
 // Why: [places] file, relative to the configuration's folder like planner.map_file.
 void bind_places(Binder& b, PlacesConfig& p) {
   b.string("places.file", p.file);
-  if (b.error() || p.file.empty()) return;
+  b.string("places.grids_dir", p.grids_dir);
+  if (b.error()) return;
+  const std::filesystem::path folder = std::filesystem::path(b.file()).parent_path();
+  if (!p.grids_dir.empty()) {
+    if (p.file.empty()) return b.fail_key("places.grids_dir", "needs places.file (the places whose grids are saved)");
+    const std::filesystem::path d(p.grids_dir);
+    if (d.is_relative()) p.grids_dir = (folder / d).lexically_normal().string();
+  }
+  if (p.file.empty()) return;
   p.file_line = b.line_of("places.file");
   const std::filesystem::path f(p.file);
-  if (f.is_relative()) p.file = (std::filesystem::path(b.file()).parent_path() / f).lexically_normal().string();
+  if (f.is_relative()) p.file = (folder / f).lexically_normal().string();
 }
 
 // Binds every section of the schema.

@@ -177,6 +177,7 @@ long long planner_cell_limit(const PlannerModuleConfig& p);
 struct PlacesConfig {
   std::string file;   // place graph ("robuter-places 1", odometry frame), resolved against the configuration's folder; empty = none
   int file_line = 0;  // line of places.file in the configuration (0: not written)
+  std::string grids_dir;  // folder of the place grids saved after each scan (seed 003's drawsec()), resolved like file; empty = none
 };
 
 struct SerialLinkConfig {

@@ -32,6 +32,7 @@
 #include "modules/planner/planner_module.hpp"
 #include "modules/planner/prior_map.hpp"
 #include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_grid_writer.hpp"
 #include "modules/places/wall_raster.hpp"
 #include "modules/firmware/prior_structure.hpp"
 #include "modules/demo/demo_module.hpp"
@@ -310,6 +311,23 @@ std::optional<std::string> Firmware::setup() {
     picture_writer_ = std::make_unique<planner::PictureWriter>(opt_.planner_pictures, *picture_box_, frame);
     planner->set_pictures(picture_box_.get());
   }
+  if (!cfg_.places.grids_dir.empty() && places_) {
+    // Decided: as --planner-pictures, a missing folder is created and the log says so; an
+    // existing path that is not a folder is refused.
+    std::error_code ec;
+    const std::string& dir = cfg_.places.grids_dir;
+    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+      return "configuration error: places.grids_dir " + dir + ": exists and is not a folder";
+    if (!std::filesystem::exists(dir, ec)) {
+      std::filesystem::create_directories(dir, ec);
+      if (ec) return "configuration error: places.grids_dir " + dir + ": cannot create the folder: " + ec.message();
+      log::info("places: grids_dir {} did not exist: created it", dir);
+    }
+    place_grid_box_ = std::make_unique<places::PlaceGridMailbox>();
+    place_grid_box_->reserve(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3);
+    place_grid_writer_ = std::make_unique<places::PlaceGridWriter>(dir, *places_, *place_grid_box_);
+    planner->set_place_grids(places_.get(), place_grid_box_.get());
+  }
   // New data is acted on in the same tick: ranges → emergency verdict → motors.
   us->set_emergency(emergency.get());
   emergency->set_executor(executor.get());
@@ -359,7 +377,14 @@ std::optional<std::string> Firmware::setup() {
 
 int Firmware::run() {
   if (picture_writer_) picture_writer_->start();
+  if (place_grid_writer_) place_grid_writer_->start();
   int status = kernel_->run();
+  if (place_grid_writer_) {
+    place_grid_writer_->stop();
+    std::fprintf(stderr, "robuterd: place grids: %u written, %u failed, %u dropped (writer busy) in %s\n",
+                 place_grid_writer_->written(), place_grid_writer_->failed(), place_grid_writer_->dropped(),
+                 place_grid_writer_->dir().c_str());
+  }
   if (picture_writer_) {
     picture_writer_->stop();
     // Every plan is accounted for: written, failed, or dropped (each drop was also logged).

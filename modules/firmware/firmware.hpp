@@ -39,6 +39,10 @@ namespace planner {
 class PictureMailbox;
 class PictureWriter;
 }  // namespace planner
+namespace places {
+class PlaceGridMailbox;
+class PlaceGridWriter;
+}  // namespace places
 
 // How robuterd was asked to run (command line).
 struct FirmwareOptions {
@@ -92,6 +96,8 @@ class Firmware {
   // The planner's picture writer (--planner-pictures), or null. run() drives it on its own
   // thread; a harness stepping a virtual clock calls its drain() between ticks.
   planner::PictureWriter* planner_pictures() { return picture_writer_.get(); }
+  // The place grid writer ([places] grids_dir), or null; driven like planner_pictures().
+  places::PlaceGridWriter* place_grids() { return place_grid_writer_.get(); }
   // What setup() made of [planner] map_file (one line for --check-config), empty without one.
   const std::string& planner_map_note() const { return planner_map_note_; }
   const std::string& places_note() const { return places_note_; }
@@ -128,6 +134,8 @@ class Firmware {
   std::unique_ptr<hal::OdometryFrame> odometry_frame_;     // the odometry frame in the world (--sim), for the pictures
   std::unique_ptr<planner::PictureMailbox> picture_box_;   // plans handed from the planner
   std::unique_ptr<planner::PictureWriter> picture_writer_; // draws them outside the kernel
+  std::unique_ptr<places::PlaceGridMailbox> place_grid_box_;   // place grids handed from the planner ([places] grids_dir)
+  std::unique_ptr<places::PlaceGridWriter> place_grid_writer_; // saves them outside the kernel
 };
 
 }  // namespace robuter

@@ -11,6 +11,7 @@
 
 #include "hal/sitl/byte_pipe.hpp"
 #include "hal/sitl/sim_stepper.hpp"
+#include "modules/places/place_grid_writer.hpp"
 #include "modules/planner/picture_writer.hpp"
 
 namespace robuter::test {
@@ -72,6 +73,7 @@ void SimFirmware::step() {
   // The firmware's non-real-time point for pictures, as robuterd's writer thread (unless that
   // thread was started): after the tick, outside the kernel's step.
   if (auto* w = fw_->planner_pictures(); w != nullptr && !w->running()) w->drain();
+  if (auto* w = fw_->place_grids(); w != nullptr && !w->running()) w->drain();
   if (observer_) observer_();
 }
 

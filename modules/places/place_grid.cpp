@@ -71,7 +71,9 @@ PlaceBox place_box(const PlaceGraph& graph, std::size_t place, const plan::MapGe
   b.lo = lo;
   b.width = std::max(1, hi.x - lo.x + 1);
   b.height = std::max(1, hi.y - lo.y + 1);
-  b.origin = {map.origin.x + lo.x * r, map.origin.y + lo.y * r};
+  // Rounded to the nanometre: the file then says -0.05, not -0.04999999999999938.
+  auto nm = [](double v) { return std::round(v * 1e9) / 1e9; };
+  b.origin = {nm(map.origin.x + lo.x * r), nm(map.origin.y + lo.y * r)};
   return b;
 }
 

@@ -440,6 +440,18 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   begin_scan(tick);
 }
 
+void PlannerModule::keep_place_grid(std::uint64_t tick, const plan::Pose2& pose) {
+  if (place_graph_ == nullptr || place_grids_ == nullptr) return;
+  const std::optional<std::size_t> at = place_graph_->place_at(places::Vec2(pose.x, pose.y));
+  if (!at) return;  // between places (off the graph): no node to save
+  places::PlaceGridMailbox::Slot* slot = place_grids_->try_fill();
+  if (slot == nullptr) return;  // the writer still holds the last one: dropped and counted
+  slot->place = *at;
+  slot->tick = tick;
+  const bool cut = places::cut_place_into(*place_graph_, *at, planner_.map(), plan::Point2{pose.x, pose.y}, slot->grid);
+  place_grids_->publish(cut);
+}
+
 void PlannerModule::run(Kernel& k) {
   const std::int64_t t0 = cpu_us();
   kernel_ = &k;
@@ -454,7 +466,10 @@ void PlannerModule::run(Kernel& k) {
     serve_goal(tick);
     if (state_ == PlannerState::scanning && !planner_.rebuilding()) {
       planner_.sync();  // fold the new readings into the layers now: the plan only searches
-      if (scan_done(tick)) state_ = PlannerState::planning;
+      if (scan_done(tick)) {
+        state_ = PlannerState::planning;
+        keep_place_grid(tick, pose);
+      }
     }
     if (state_ == PlannerState::planning) plan_step(tick, pose);
     else if (state_ == PlannerState::moving) move_step(tick, pose);

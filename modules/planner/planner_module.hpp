@@ -15,6 +15,7 @@
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/path_follower.hpp"
 #include "modules/planner/picture_mailbox.hpp"
+#include "modules/places/place_grid_mailbox.hpp"
 #include "modules/planner/planner_settings.hpp"
 #include "modules/planner/route.hpp"
 #include "modules/topics.hpp"
@@ -38,6 +39,12 @@ class PlannerModule final : public Process {
   // Pictures (robuterd --planner-pictures): every plan is copied into `box` in the activation
   // that made it, for a writer outside the kernel. Set before init(), which sizes the copy.
   void set_pictures(planner::PictureMailbox* box) { pictures_ = box; }
+  // Place grids ([places] grids_dir): at the end of each scan in a place of `graph`, that place's
+  // grid is cut from the map into `box` for the writer (seed 003's drawsec(); no allocation).
+  void set_place_grids(const places::PlaceGraph* graph, places::PlaceGridMailbox* box) {
+    place_graph_ = graph;
+    place_grids_ = box;
+  }
   // The a-priori map ([planner] map_file, planner/prior_map.hpp), of the configured geometry:
   // init() starts from it instead of an unknown map. Set before init().
   void set_prior_map(plan::OccupancyMap map) { prior_ = std::move(map); }
@@ -102,6 +109,8 @@ class PlannerModule final : public Process {
   void finish(std::uint64_t tick, PlannerState state, bool stop);
   // Publishes a wheel-speed request through the emergency gate.
   void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+  // Cuts the grid of the place the robot scanned in into the place grid mailbox, if kept.
+  void keep_place_grid(std::uint64_t tick, const plan::Pose2& pose);
   // Copies the plan just made into the picture mailbox, if pictures are on (no allocation).
   void picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal);
   void publish_status(std::uint64_t tick);
@@ -126,6 +135,8 @@ class PlannerModule final : public Process {
   Process* emergency_process_ = nullptr;
   std::span<const plan::Point2> openings_;  // cells kept free (door openings), m
   planner::PictureMailbox* pictures_ = nullptr;  // where plans go for pictures (null: off)
+  const places::PlaceGraph* place_graph_ = nullptr;   // the places whose grids are kept (null: off)
+  places::PlaceGridMailbox* place_grids_ = nullptr;   // where their grids go for the writer
   Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
 
   PlannerState state_ = PlannerState::idle;

@@ -159,6 +159,25 @@ TEST(Config, PlannerMapFileIsRelativeToTheConfigurationsFolder) {
   EXPECT_EQ(d.planner.map_file, "/srv/lab.map");
 }
 
+// [places] grids_dir: relative to the configuration's folder like places.file; without a place
+// graph it has no places to save, and is refused on its line.
+TEST(Config, PlaceGridsFolderIsRelativeAndNeedsThePlaceGraph) {
+  Config c;
+  const auto err = parse_config("[places]\nfile = \"floor.places.toml\"\ngrids_dir = \"grids\"\n",
+                                "/etc/robuterd/robuterd.toml", c);
+  ASSERT_FALSE(err) << err->message();
+  EXPECT_EQ(c.places.file, "/etc/robuterd/floor.places.toml");
+  EXPECT_EQ(c.places.grids_dir, "/etc/robuterd/grids");
+  Config d;
+  ASSERT_FALSE(parse_config("[places]\nfile = \"f.toml\"\ngrids_dir = \"/var/lib/robuterd/grids\"\n", "r.toml", d));
+  EXPECT_EQ(d.places.grids_dir, "/var/lib/robuterd/grids");
+  Config e;
+  const auto no_graph = parse_config("[places]\ngrids_dir = \"grids\"\n", "r.toml", e);
+  ASSERT_TRUE(no_graph);
+  EXPECT_NE(no_graph->message().find("r.toml:2: key 'places.grids_dir'"), std::string::npos) << no_graph->message();
+  EXPECT_NE(no_graph->message().find("needs places.file"), std::string::npos) << no_graph->message();
+}
+
 // Seed 003's initial count must stay below the threshold (a first miss would make an obstacle).
 TEST(Config, PlannerInitialCountBelowTheThreshold) {
   Config c;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "modules/firmware/sim_firmware.hpp"
+#include "modules/places/place_grid_writer.hpp"
 #include "modules/planner/picture_writer.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "tests/support/alloc_counter.hpp"
@@ -115,6 +116,44 @@ TEST(PlannerSimNoAlloc, ADoorCrossingWithTheAPrioriMapNarrowingTheArcsAllocatesN
   EXPECT_EQ(allocations, 0u);
   EXPECT_EQ(status.state, PlannerState::reached);
   EXPECT_GT(fw.sim().robot().pose().x, 4.6) << "through the door";
+#endif
+}
+
+// A route over the building floor's place graph with the place grids on ([places] grids_dir):
+// each scan cuts its place's grid in the kernel's thread into the buffer sized at start-up (the
+// writer's thread saves it) without allocating.
+TEST(PlannerSimNoAlloc, ARouteOverPlacesKeepingTheirGridsAllocatesNothing) {
+#if defined(ROBUTER_SANITIZE)
+  GTEST_SKIP() << "the sanitizers own malloc; this proof runs in the normal build";
+#else
+  Config cfg;
+  cfg.places.file = ROBUTER_WORLDS_DIR "/building_floor.places.toml";
+  const auto grids = std::filesystem::temp_directory_path() / ("robuter-noalloc-grids-" + std::to_string(::getpid()));
+  cfg.places.grids_dir = grids.string();
+  test::SimFirmware fw(ROBUTER_WORLDS_DIR "/building_floor.toml", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  places::PlaceGridWriter* writer = fw.firmware().place_grids();
+  ASSERT_NE(writer, nullptr);
+  writer->start();  // saving happens on the writer's thread, as in robuterd
+  ASSERT_EQ(fw.ask("AC 30000 200500 0"), "ack");  // odometry = the floor's frame (the world's start)
+  for (const char* l : {"XP", "XM", "XQ 17", "XH"}) ASSERT_TRUE(fw.ask(l)) << l;  // warm the paths (17: where it is)
+  fw.run_ticks(20);
+  fw.count_lines();
+  const auto& status = fw.bb().planner_status.reader().peek();
+  test::AllocCounter counter;
+  fw.send_raw("XQ 1\r");  // room-01, through corridor-ew-1's via points
+  int ticks = 0;
+  for (; ticks < 20'000 && status.via_next < 2; ++ticks) {
+    fw.step();
+    fw.count_lines();
+  }
+  const auto allocations = counter.count();
+  writer->stop();
+  EXPECT_EQ(allocations, 0u);
+  EXPECT_GE(status.via_next, 1u) << "the route was driven";
+  EXPECT_GE(writer->written(), 2u);
+  EXPECT_EQ(writer->failed(), 0u);
+  std::filesystem::remove_all(grids);
 #endif
 }
 

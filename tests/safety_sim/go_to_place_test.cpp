@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 
 #include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_grid_writer.hpp"
 #include "modules/places/route_table.hpp"
 #include "kernel/log.hpp"
 #include "modules/emergency/emergency.hpp"
@@ -210,6 +212,60 @@ TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
   const PlannerState s = fw.bb().planner_status.reader().peek().state;
   EXPECT_TRUE(s == PlannerState::scanning || s == PlannerState::planning) << "on to the next point";
   EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
+}
+
+// Why: seed 003 saves each node's grid after its scan (drawsec()): with [places] grids_dir, the
+// end of every scan in a place writes that place's grid as text (the writer drained between
+// ticks, as robuterd's thread does between activations): the robot's 'P' inside the place,
+// the walls and the space the ring saw. A grids_dir that is a file, or under one, is a start-up
+// error.
+TEST(GoToPlace, EachScanSavesItsPlacesGrid) {
+  const places::PlaceGraph& g = floor_graph();
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "robuter_place_grids";
+  std::filesystem::remove_all(dir);
+  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
+  Config cfg = floor_config();
+  cfg.places.grids_dir = dir.string();
+  SimFirmware fw(world.path(), cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_TRUE(std::filesystem::is_directory(dir)) << "created";
+  const places::Vec2 c = g.places()[place("corridor-ew-1")].centre;
+  ASSERT_EQ(fw.ask(set_odometry_at(c)), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
+  for (int i = 0; i < 20'000 && fw.bb().planner_status.reader().peek().via_next == 0; ++i) fw.step();
+  fw.run_ticks(2);
+  ASSERT_NE(fw.firmware().place_grids(), nullptr);
+  EXPECT_GE(fw.firmware().place_grids()->written(), 2u) << "a grid per scan";
+  EXPECT_EQ(fw.firmware().place_grids()->failed(), 0u);
+  const auto grid = places::load_place_grid((dir / "corridor-ew-1.txt").string());
+  ASSERT_TRUE(grid.ok()) << grid.error().text();
+  EXPECT_EQ(grid.value().place, "corridor-ew-1");
+  ASSERT_TRUE(grid.value().scanned_from.has_value());
+  const plan::Cell p = *grid.value().scanned_from;
+  const places::Vec2 at(grid.value().origin.x + (p.x + 0.5) * grid.value().cell,
+                        grid.value().origin.y + (p.y + 0.5) * grid.value().cell);
+  EXPECT_EQ(g.place_at(at), place("corridor-ew-1")) << at.transpose();
+  std::size_t walls = 0, free = 0;
+  for (const plan::CellState s : grid.value().cells) {
+    walls += s == plan::CellState::Occupied;
+    free += s == plan::CellState::Free;
+  }
+  EXPECT_GT(walls, 100u);
+  EXPECT_GT(free, 1000u);
+  std::filesystem::remove_all(dir);
+
+  // A grids_dir that is a file, or a folder that cannot be made under a file: refused at start.
+  const std::filesystem::path file = std::filesystem::path(testing::TempDir()) / "robuter_place_grids_file";
+  std::ofstream(file) << "not a folder\n";
+  for (const std::filesystem::path& bad : {file, file / "grids"}) {
+    Config c2 = floor_config();
+    c2.places.grids_dir = bad.string();
+    SimFirmware refused(world.path(), c2);
+    EXPECT_FALSE(refused.ok()) << bad;
+    EXPECT_NE(refused.error().find("places.grids_dir"), std::string::npos) << refused.error();
+  }
+  std::filesystem::remove(file);
 }
 
 // Why: a route of 53 m with no prior grid, only the place graph: the whole east-west corridor,
