@@ -2,6 +2,8 @@
 // Seed 003's local grid per place: cut from the map, its text, its files, applied to a map.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -169,7 +171,7 @@ TEST(PlaceGrid, BrokenFilesAreErrorsWithTheirLine) {
 // Why: a file is written whole (a temporary renamed) and read back; a folder that does not exist
 // (made missing by the test itself) is an error and leaves nothing behind.
 TEST(PlaceGrid, SavedAndLoaded) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "place_grid_test";
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("place_grid_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const PlaceGrid g = cut_place(two_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);

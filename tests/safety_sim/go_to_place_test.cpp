@@ -2,6 +2,8 @@
 // XQ on the building floor: go to a place over the place graph's route, no prior grid, the ultrasonic detection on.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -221,7 +223,7 @@ TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
 // error.
 TEST(GoToPlace, EachScanSavesItsPlacesGrid) {
   const places::PlaceGraph& g = floor_graph();
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "robuter_place_grids";
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("robuter_place_grids_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
   Config cfg = floor_config();
@@ -256,7 +258,7 @@ TEST(GoToPlace, EachScanSavesItsPlacesGrid) {
   std::filesystem::remove_all(dir);
 
   // A grids_dir that is a file, or a folder that cannot be made under a file: refused at start.
-  const std::filesystem::path file = std::filesystem::path(testing::TempDir()) / "robuter_place_grids_file";
+  const std::filesystem::path file = std::filesystem::path(testing::TempDir()) / ("robuter_place_grids_file_" + std::to_string(::getpid()));
   std::ofstream(file) << "not a folder\n";
   for (const std::filesystem::path& bad : {file, file / "grids"}) {
     Config c2 = floor_config();
