@@ -2,7 +2,10 @@
 // Cairo overlay of the place graph; colours shared with its legend keys.
 #include "modules/places/place_picture.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace robuter::places {
 
@@ -12,6 +15,9 @@ const picture::Ink kArea{{0.20, 0.50, 0.85}, picture::Swatch::outline, "place (a
 const picture::Ink kLink{{0.20, 0.50, 0.85}, picture::Swatch::dashed, "door: centre - door - centre", 0.9, 1.2};
 const picture::Ink kDoor{{0.85, 0.35, 0.10}, picture::Swatch::dot, "door (place graph)", 1.0, 2.0};
 const picture::Ink kCentre{{0.10, 0.25, 0.60}, picture::Swatch::dot, "place centre, name", 1.0, 2.0};
+const picture::Ink kGridObstacle{{0.55, 0.10, 0.10}, picture::Swatch::fill, "place grid: obstacle ('#')", 0.85, 1.0};
+const picture::Ink kGridFree{{0.30, 0.70, 0.35}, picture::Swatch::fill, "place grid: free (' ')", 0.30, 1.0};
+const picture::Ink kGridRobot{{0.10, 0.10, 0.10}, picture::Swatch::outline, "place grid: scanned from ('P')", 1.0, 1.5};
 const picture::Ink kRoute{{0.10, 0.65, 0.20}, picture::Swatch::line, "route over places", 1.0, 4.0};
 
 void move(cairo_t* cr, const sim::View& view, const Vec2& w) {
@@ -85,6 +91,40 @@ sim::DrawHook place_graph_overlay(const PlaceGraph& graph, const PlaceRoute* rou
     cairo_restore(cr);
   };
 }
+
+sim::DrawHook place_grids_overlay(const std::vector<PlaceGrid>& grids, sim::DrawHook then) {
+  return [&grids, then = std::move(then)](cairo_t* cr, const sim::View& view) {
+    cairo_save(cr);
+    for (const PlaceGrid& g : grids) {
+      for (const auto& [ink, state] : {std::pair{&kGridFree, plan::CellState::Free},
+                                       std::pair{&kGridObstacle, plan::CellState::Occupied}}) {
+        colour(cr, *ink, ink->alpha);
+        for (int y = 0; y < g.height; ++y)
+          for (int x = 0; x < g.width; ++x) {
+            if (g.at(x, y) != state) continue;
+            const Vec2 a = view.to_device(Vec2(g.origin.x + x * g.cell, g.origin.y + y * g.cell));
+            const Vec2 b = view.to_device(Vec2(g.origin.x + (x + 1) * g.cell, g.origin.y + (y + 1) * g.cell));
+            cairo_rectangle(cr, std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::abs(b.x() - a.x()),
+                            std::abs(b.y() - a.y()));
+          }
+        cairo_fill(cr);
+      }
+      if (g.scanned_from) {
+        const Vec2 d = view.to_device(Vec2(g.origin.x + (g.scanned_from->x + 0.5) * g.cell,
+                                           g.origin.y + (g.scanned_from->y + 0.5) * g.cell));
+        colour(cr, kGridRobot, 1.0);
+        cairo_set_line_width(cr, kGridRobot.width);
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, d.x(), d.y(), 5.0, 0.0, 2.0 * std::numbers::pi);
+        cairo_stroke(cr);
+      }
+    }
+    cairo_restore(cr);
+    if (then) then(cr, view);
+  };
+}
+
+std::vector<picture::Ink> place_grid_keys() { return {kGridObstacle, kGridFree, kGridRobot}; }
 
 std::vector<picture::Ink> place_graph_keys(bool with_route) {
   std::vector<picture::Ink> keys = {kArea, kLink, kDoor, kCentre};

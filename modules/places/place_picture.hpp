@@ -6,6 +6,7 @@
 
 #include "hal/sim/render.hpp"
 #include "modules/places/place_graph.hpp"
+#include "modules/places/place_grid.hpp"
 #include "modules/places/place_route.hpp"
 
 namespace robuter::places {
@@ -18,5 +19,13 @@ sim::DrawHook place_graph_overlay(const PlaceGraph& graph, const PlaceRoute* rou
 
 // Why: the legend entries for what place_graph_overlay() draws.
 std::vector<picture::Ink> place_graph_keys(bool with_route);
+
+// Why: a scene's overlay that draws place grids (seed 003's grid per place, place_grid.hpp) at
+// their place: obstacles dark, free cells light, unknown left as it is, the robot's 'P' a ring;
+// then `then` (the place graph's overlay, or empty) over them. The grids must outlive the rendering.
+sim::DrawHook place_grids_overlay(const std::vector<PlaceGrid>& grids, sim::DrawHook then = {});
+
+// Why: the legend entries for what place_grids_overlay() draws.
+std::vector<picture::Ink> place_grid_keys();
 
 }  // namespace robuter::places

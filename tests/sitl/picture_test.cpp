@@ -107,6 +107,38 @@ TEST(Pictures, RobuterSimDrawsThePlaceGraphAndARoute) {
       << "a world is not a place graph";
 }
 
+// Issue #17: place grids (seed 003's grid per place) drawn at their place over the floor, with
+// the graph: more ink than the graph alone; a broken grid file is refused with its line.
+TEST(Pictures, RobuterSimDrawsPlaceGrids) {
+  const std::string floor = std::string(ROBUTER_WORLDS_DIR) + "/building_floor.toml";
+  const std::string graph = std::string(ROBUTER_WORLDS_DIR) + "/building_floor.places.toml";
+  const std::string grid = kOut + "/corridor-ew-1.txt", broken = kOut + "/broken-grid.txt";
+  {
+    std::ofstream out(grid);
+    out << "place corridor-ew-1\ncell 0.05\norigin 0 18.8\nsize 200 48\nscanned 60 24\ngrid\n";
+    for (int r = 0; r < 48; ++r) {
+      std::string row(200, r == 0 || r == 47 ? '#' : ' ');
+      if (r == 48 - 1 - 24) row[60] = 'P';
+      out << row << "\n";
+    }
+    std::ofstream bad(broken);
+    bad << "place corridor-ew-1\ncell 0.05\norigin 0 18.8\nsize 3 1\nscanned none\ngrid\n..\n";
+  }
+  const std::string alone = kOut + "/floor_graph.png", drawn = kOut + "/floor_grids.png";
+  std::filesystem::remove(drawn);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + floor + " --places " + graph + " -o " + alone), 0);
+  ASSERT_EQ(run(kBin + "/robuter-sim render --world " + floor + " --places " + graph + " --place-grid " + grid +
+                " -o " + drawn), 0);
+  int w = 0, h = 0, w2 = 0, h2 = 0;
+  const double without = ink(alone, w, h), with = ink(drawn, w2, h2);
+  EXPECT_EQ(w, w2);
+  EXPECT_GT(with, without + 0.003) << "the grid's free cells and walls add ink";
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + floor + " --place-grid " + broken + " -o " + drawn), 0);
+  const std::string why = kOut + "/broken-grid.err";
+  std::system((kBin + "/robuter-sim render --world " + floor + " --place-grid " + broken + " -o " + drawn + " 2>" + why).c_str());
+  EXPECT_NE(slurp(why).find("broken-grid.txt:7:"), std::string::npos) << slurp(why);
+}
+
 TEST(Pictures, RobuterdWritesAPictureAtExit) {
   const std::string out = kOut + "/robuterd_exit.png";
   std::filesystem::remove(out);

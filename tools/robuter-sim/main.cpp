@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   render->add_option("--scale", req.scale, "pixels per metre (default: the scale that makes the picture 1000 pixels wide)")->check(CLI::Range(5.0, 1000.0));
   render->add_option("--places", req.places, "a place graph (robuter-places 1, docs/PLACES.md) to draw over the world");
   render->add_option("--route", req.route, "with --places: draw the route FROM,TO between two places (names)");
+  render->add_option("--place-grid", req.place_grids, "a place grid file (docs/PLACES.md, \"Place grids\") to draw at its place; repeatable");
   render->add_option("--title", req.title, "title (default: world, pose, date and what the sonars report)");
   if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   if (pt->count() > 0) req.pan_tilt_deg = pan_tilt;

@@ -13,6 +13,7 @@
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world_io.hpp"
 #include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_grid.hpp"
 #include "modules/places/place_picture.hpp"
 #include "picture/page.hpp"
 
@@ -126,7 +127,20 @@ int run_render(const RenderRequest& r) {
     scene.overlay = places::place_graph_overlay(*graph, r.route.empty() ? nullptr : &route);
     scene.keys = places::place_graph_keys(!r.route.empty());
   }
+  std::vector<places::PlaceGrid> grids;
+  for (const std::string& f : r.place_grids) {
+    auto g = places::load_place_grid(f);
+    if (!g) return fail(g.error().text());
+    grids.push_back(std::move(g).value());
+  }
+  if (!grids.empty()) {
+    scene.overlay = places::place_grids_overlay(grids, std::move(scene.overlay));
+    std::vector<picture::Ink> keys = places::place_grid_keys();
+    keys.insert(keys.end(), scene.keys.begin(), scene.keys.end());
+    scene.keys = std::move(keys);
+  }
   scene.title = r.title.empty() ? default_title(world.name, pose, scene) : r.title;
+  if (!grids.empty() && r.title.empty()) scene.title += "; " + std::to_string(grids.size()) + " place grid" + (grids.size() == 1 ? "" : "s");
   if (graph && r.title.empty()) {
     char extra[160];
     std::snprintf(extra, sizeof extra, "; %zu places, %zu doors", graph->places().size(), graph->doors().size());

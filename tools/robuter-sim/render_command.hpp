@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace robuter::simtool {
 
@@ -17,6 +18,7 @@ struct RenderRequest {
   double scale = 0.0;                  // pixels (points) per metre; 0 = a 1000 px wide picture
   std::string places;                  // place graph file to draw over the world; empty = none
   std::string route;                   // "FROM,TO" place names: the route to draw (needs places)
+  std::vector<std::string> place_grids;  // place grid files (docs/PLACES.md) to draw at their places
   std::string title;                   // title; empty = world, pose, date and the sonars' report
 };
 
