@@ -33,19 +33,6 @@ bool name_ok(std::string_view s) {
   });
 }
 
-// Why: the tokens of one header line (`key value...`), split on spaces.
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t j = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > j) out.push_back(line.substr(j, i - j));
-  }
-  return out;
-}
-
 }  // namespace
 
 PlaceBox place_box(const PlaceGraph& graph, std::size_t place, const plan::MapGeometry& map, double margin) {
@@ -159,7 +146,7 @@ plan::Result<PlaceGrid> parse_place_grid(std::string_view text, const std::strin
   for (; i < lines.size(); ++i) {
     const std::string_view line = lines[i];
     if (line.empty() || line.front() == '#') continue;
-    const std::vector<std::string_view> w = words(line);
+    const std::vector<std::string_view> w = plan::split_words(line);
     if (w.empty()) continue;
     if (w[0] == "grid") {
       if (w.size() != 1) return error(i, "'grid' takes nothing after it");

@@ -19,19 +19,6 @@ int hex_value(char c) {
   return -1;
 }
 
-// Why: header lines are "key value..." separated by spaces or tabs.
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t s = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > s) out.push_back(line.substr(s, i - s));
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string format_map(const OccupancyMap& map) {
@@ -61,16 +48,16 @@ std::string format_map(const OccupancyMap& map) {
 namespace {
 // Why: one header reader for parse_map and parse_map_header; `i` ends on the "data" line's index.
 Result<MapHeader> read_header(const std::vector<std::string_view>& lines, const std::string& name, std::size_t& i) {
-  if (lines.empty() || words(lines[0]).size() != 2 || words(lines[0])[0] != "robuter-map")
+  if (lines.empty() || split_words(lines[0]).size() != 2 || split_words(lines[0])[0] != "robuter-map")
     return Error{name, 1, "not a robuter map (expected 'robuter-map 1')"};
-  if (words(lines[0])[1] != "1") return Error{name, 1, "unsupported robuter-map version '" + std::string(words(lines[0])[1]) + "'"};
+  if (split_words(lines[0])[1] != "1") return Error{name, 1, "unsupported robuter-map version '" + std::string(split_words(lines[0])[1]) + "'"};
   MapHeader h;
   MapGeometry& g = h.geometry;
   g = MapGeometry{-1, -1, -1.0, {}};
   i = 1;
   for (; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
-    const auto w = words(lines[i]);
+    const auto w = split_words(lines[i]);
     if (w.empty() || w[0].front() == '#') continue;
     if (w[0] == "data" && w.size() == 1) break;
     auto need = [&](std::size_t n) { return w.size() == n + 1; };
@@ -141,7 +128,7 @@ Result<OccupancyMap> parse_map(std::string_view text, const std::string& name) {
     }
   }
   for (; i < lines.size(); ++i)
-    if (!words(lines[i]).empty()) return Error{name, static_cast<int>(i) + 1, "unexpected data after the map rows"};
+    if (!split_words(lines[i]).empty()) return Error{name, static_cast<int>(i) + 1, "unexpected data after the map rows"};
   map.clear_changes();
   return map;
 }

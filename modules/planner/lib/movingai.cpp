@@ -7,20 +7,7 @@
 namespace robuter::plan {
 namespace {
 
-// Why: split a line into whitespace-separated fields (tabs in practice).
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
-
-bool blank(std::string_view line) { return fields_of(line).empty(); }
+bool blank(std::string_view line) { return split_words(line).empty(); }
 
 }  // namespace
 
@@ -32,7 +19,7 @@ Result<OccupancyMap> parse_movingai_map(std::string_view text, const std::string
   bool typed = false;
   // Header: "type octile", "height H", "width W", "map" (height and width in either order).
   for (; i < lines.size(); ++i) {
-    const auto f = fields_of(lines[i]);
+    const auto f = split_words(lines[i]);
     const int line = static_cast<int>(i) + 1;
     if (f.empty()) continue;
     if (f.size() == 1 && f[0] == "map") break;
@@ -90,14 +77,14 @@ Result<std::vector<Scenario>> parse_movingai_scen(std::string_view text, const s
   while (i < lines.size() && blank(lines[i])) ++i;
   if (i >= lines.size()) return Error{name, 1, "empty scenario file"};
   {
-    const auto f = fields_of(lines[i]);
+    const auto f = split_words(lines[i]);
     if (f.size() != 2 || f[0] != "version" || !parse_real(f[1]))
       return Error{name, static_cast<int>(i) + 1, "expected 'version N', got '" + std::string(lines[i]) + "'"};
     ++i;
   }
   for (; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
-    const auto f = fields_of(lines[i]);
+    const auto f = split_words(lines[i]);
     if (f.empty()) continue;
     if (f.size() != 9)
       return Error{name, line, "expected 9 fields, got " + std::to_string(f.size())};

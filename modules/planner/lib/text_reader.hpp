@@ -17,6 +17,10 @@ Result<std::string> read_text_file(const std::string& path);
 // Why: lines without their terminator; a trailing '\r' (CRLF files) is dropped.
 std::vector<std::string_view> split_lines(std::string_view text);
 
+// Why: the fields of a line of "key value..." or tab-separated records (spaces and tabs
+// separate; none empty), views into `line`.
+std::vector<std::string_view> split_words(std::string_view line);
+
 // Why: strict number parsing (the whole token must be a number; no locale).
 std::optional<long long> parse_integer(std::string_view s);
 std::optional<double> parse_real(std::string_view s);
