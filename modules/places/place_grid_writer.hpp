@@ -5,9 +5,9 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
-#include <thread>
 #include <utility>
 
+#include "kernel/handoff.hpp"
 #include "modules/places/place_grid_mailbox.hpp"
 
 namespace robuter::places {
@@ -26,10 +26,13 @@ class PlaceGridWriter {
   // Why: saves the waiting grid, if any; true if a file was written.
   bool drain();
   // Why: robuterd: drain every 10 ms on a thread of its own until stop().
-  void start();
+  void start() { thread_.start([this] { return drain(); }); }
   // Why: joins the thread, then saves what is still waiting.
-  void stop();
-  bool running() const { return thread_.joinable(); }
+  void stop() {
+    thread_.stop();
+    drain();
+  }
+  bool running() const { return thread_.running(); }
   std::uint32_t written() const { return written_.load(); }
   std::uint32_t failed() const { return failed_.load(); }
   std::uint32_t dropped() const { return box_.dropped(); }
@@ -39,8 +42,7 @@ class PlaceGridWriter {
   std::string dir_;                        // folder of the grids
   const PlaceGraph& graph_;                // the places' names
   PlaceGridMailbox& box_;                  // where the planner leaves grids
-  std::thread thread_;                     // the writer thread (robuterd), or none (tests)
-  std::atomic<bool> stop_{false};          // asks the thread to end
+  DrainThread thread_;                     // the writer thread (robuterd), or none (tests)
   std::atomic<std::uint32_t> written_{0};  // grids saved, count
   std::atomic<std::uint32_t> failed_{0};   // grids that could not be saved, count
 };

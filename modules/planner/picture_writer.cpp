@@ -2,7 +2,6 @@
 // The planner's picture thread: take a snapshot from the mailbox, draw it, free the slot.
 #include "modules/planner/picture_writer.hpp"
 
-#include <chrono>
 #include <cstdio>
 
 #include "modules/planner/picture/plan_picture.hpp"
@@ -30,24 +29,6 @@ bool PictureWriter::drain() {
   }
   written_.fetch_add(1);
   return true;
-}
-
-void PictureWriter::start() {
-  if (thread_.joinable()) return;
-  stop_ = false;
-  thread_ = std::thread([this] {
-    while (!stop_.load()) {
-      if (!drain()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  });
-}
-
-void PictureWriter::stop() {
-  if (thread_.joinable()) {
-    stop_ = true;
-    thread_.join();
-  }
-  drain();
 }
 
 }  // namespace robuter::planner

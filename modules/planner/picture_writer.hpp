@@ -7,9 +7,9 @@
 #include <functional>
 #include <optional>
 #include <string>
-#include <thread>
 #include <utility>
 
+#include "kernel/handoff.hpp"
 #include "modules/planner/picture_mailbox.hpp"
 
 namespace robuter::planner {
@@ -32,10 +32,13 @@ class PictureWriter {
   // Why: writes the waiting snapshot, if any; true if a picture was written.
   bool drain();
   // Why: robuterd: drain every 10 ms on a thread of its own until stop().
-  void start();
+  void start() { thread_.start([this] { return drain(); }); }
   // Why: joins the thread, then writes what is still waiting.
-  void stop();
-  bool running() const { return thread_.joinable(); }
+  void stop() {
+    thread_.stop();
+    drain();
+  }
+  bool running() const { return thread_.running(); }
   std::uint32_t written() const { return written_.load(); }
   std::uint32_t failed() const { return failed_.load(); }
   // Why: plans whose picture was dropped because the writer was still drawing (each one logged).
@@ -46,8 +49,7 @@ class PictureWriter {
   std::string dir_;                       // folder of the pictures
   PictureMailbox& box_;                   // where the planner leaves snapshots
   FrameSource map_in_world_;              // the odometry frame in the world, if known
-  std::thread thread_;                    // the writer thread (robuterd), or none (tests)
-  std::atomic<bool> stop_{false};         // asks the thread to end
+  DrainThread thread_;                    // the writer thread (robuterd), or none (tests)
   std::atomic<std::uint32_t> written_{0}; // pictures written, count
   std::atomic<std::uint32_t> failed_{0};  // pictures that could not be written, count
 };

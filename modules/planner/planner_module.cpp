@@ -440,14 +440,13 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   begin_scan(tick);
 }
 
-void PlannerModule::keep_place_grid(std::uint64_t tick, const plan::Pose2& pose) {
+void PlannerModule::keep_place_grid(const plan::Pose2& pose) {
   if (place_graph_ == nullptr || place_grids_ == nullptr) return;
   const std::optional<std::size_t> at = place_graph_->place_at(places::Vec2(pose.x, pose.y));
   if (!at) return;  // between places (off the graph): no node to save
-  places::PlaceGridMailbox::Slot* slot = place_grids_->try_fill();
+  places::PlaceGridSlot* slot = place_grids_->try_fill();
   if (slot == nullptr) return;  // the writer still holds the last one: dropped and counted
   slot->place = *at;
-  slot->tick = tick;
   const bool cut = places::cut_place_into(*place_graph_, *at, planner_.map(), plan::Point2{pose.x, pose.y}, slot->grid);
   place_grids_->publish(cut);
 }
@@ -468,7 +467,7 @@ void PlannerModule::run(Kernel& k) {
       planner_.sync();  // fold the new readings into the layers now: the plan only searches
       if (scan_done(tick)) {
         state_ = PlannerState::planning;
-        keep_place_grid(tick, pose);
+        keep_place_grid(pose);
       }
     }
     if (state_ == PlannerState::planning) plan_step(tick, pose);

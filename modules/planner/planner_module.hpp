@@ -110,7 +110,7 @@ class PlannerModule final : public Process {
   // Publishes a wheel-speed request through the emergency gate.
   void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
   // Cuts the grid of the place the robot scanned in into the place grid mailbox, if kept.
-  void keep_place_grid(std::uint64_t tick, const plan::Pose2& pose);
+  void keep_place_grid(const plan::Pose2& pose);
   // Copies the plan just made into the picture mailbox, if pictures are on (no allocation).
   void picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal);
   void publish_status(std::uint64_t tick);
