@@ -82,6 +82,7 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   if (allowed_.size() < kk) allowed_.resize(kk, 0);
   if (move_slice_.size() < kk) move_slice_.resize(kk, 0);
   if (slot_of_.size() < kk) slot_of_.resize(kk, -1);
+  enclosure_.reserve(k);
 }
 
 PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
@@ -100,6 +101,7 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   path_.clear();
   used_ = 0;
   run_.active = false;
+  shut_in_ = false;
   const auto done = [&](PlanStatus st) {
     r.status = st;
     out = r;
@@ -347,6 +349,29 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     const double gu = g[s];
     if (u == t || gu + h_of(x, y, u) >= best) continue;
     ++r.expanded;
+    run_.min_x = std::min(run_.min_x, x);
+    run_.max_x = std::max(run_.max_x, x);
+    run_.min_y = std::min(run_.min_y, y);
+    run_.max_y = std::max(run_.max_y, y);
+    if (r.expanded >= run_.next_enclosure && best == CostField::kInfinity) {
+      // Still searching, all expansions so far within a box that fits EnclosureTest's window:
+      // is the robot shut in there? (Everything expanded lies in the start's component, so the
+      // window is placed around it; a component larger than the box may still leave the window,
+      // so a test that finds the window's ring is tried again later, around a larger box.)
+      run_.next_enclosure = r.expanded * kEnclosureGrowth;
+      constexpr int kWin = EnclosureTest::kSize;
+      const int span_x = run_.max_x - run_.min_x + 1;
+      const int span_y = run_.max_y - run_.min_y + 1;
+      if (span_x <= kWin - 2 && span_y <= kWin - 2 && run_.enclosure_tries < kEnclosureTries) {
+        ++run_.enclosure_tries;
+        const LeanGraph lg{cls_of, k_count, g0.stride, g0.height + 2, move_slice, m_count, slot_of,
+                           allowed, own_turns ? turn_room : nullptr, start_index, s0, t};
+        if (enclosure_.enclosed(lg, run_.min_x - (kWin - span_x) / 2, run_.min_y - (kWin - span_y) / 2)) {
+          shut_in_ = true;
+          break;  // best is infinite: ends unreachable below
+        }
+      }
+    }
     const std::uint8_t* cls = cls_of[k];
     const std::uint8_t cu = cls[u];
     const std::uint8_t bits = allowed[k];

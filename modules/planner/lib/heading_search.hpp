@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "modules/planner/lib/cost_field.hpp"
+#include "modules/planner/lib/enclosure.hpp"
 #include "modules/planner/lib/geometry.hpp"
 #include "modules/planner/lib/bucket_ring.hpp"
 #include "modules/planner/lib/indexed_heap.hpp"
@@ -60,6 +61,13 @@ class HeadingSearch {
   // heap; resident only where a search writes). The seed 000 lab run's largest search took
   // 108 k (211 pages of 512); see docs/PLANNER.md.
   static constexpr std::size_t kDefaultStateBudget = std::size_t{1} << 18;
+  // Expansions after which a search whose expanded cells still fit in EnclosureTest's window
+  // asks whether the robot is shut in there (a search that would end unreachable after
+  // exhausting a small component ends now; docs/PLANNER.md, "Shut in"); asked again after
+  // kEnclosureGrowth times as many, at most kEnclosureTries times per search.
+  static constexpr std::uint32_t kEnclosureAfter = 1024;
+  static constexpr std::uint32_t kEnclosureGrowth = 4;
+  static constexpr int kEnclosureTries = 2;
 
   // Why: size every buffer for slices of width x height (the only allocation); `state_budget`
   // caps the states one search may hold (whole pages; at least one page).
@@ -90,6 +98,8 @@ class HeadingSearch {
 
   // Start first; consecutive entries differ by one grid move or one slice step.
   const std::vector<CellPose>& path() const { return path_; }
+  // Why: tests and figures: whether the last search ended by the shut-in proof.
+  bool ended_shut_in() const { return shut_in_; }
   // Why: measurements and tests: pages (tiles) the last search took, and states per page.
   std::size_t pages_used() const { return used_; }
   std::size_t page_states() const { return std::size_t{1} << page_shift_; }
@@ -124,8 +134,13 @@ class HeadingSearch {
     double best = CostField::kInfinity;       // cells: best goal cost so far
     std::uint32_t reached = 0;                // pool state of that goal
     bool limit = false;                       // the pool ran out
+    std::uint32_t next_enclosure = kEnclosureAfter;  // expansions at which the shut-in test runs next
+    int enclosure_tries = 0;                  // shut-in tests run
+    int min_x = 1 << 30, max_x = -1;          // stored cells: expanded cells' columns so far
+    int min_y = 1 << 30, max_y = -1;          // stored cells: their rows
   };
   Run run_;
+  bool shut_in_ = false;  // the last search ended by EnclosureTest
   static constexpr std::uint32_t kFirstTouchPops = 256;  // pops a never-written page counts for
   std::size_t resident_pages_ = 0;  // pages some search has written (handed out in order)
 
@@ -146,6 +161,7 @@ class HeadingSearch {
   std::vector<int> move_slice_;              // per move slot: its slice (this search)
   std::vector<int> slot_of_;                 // per slice: its move slot, or -1 (this search)
   BucketRing ring_;            // open list when edge costs allow (else open_)
+  EnclosureTest enclosure_;    // the shut-in proof
 };
 
 // Why: which of the 8 moves a slice allows under a motion model (bit m set = move m allowed).
