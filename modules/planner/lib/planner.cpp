@@ -68,9 +68,27 @@ void Planner::sync() {
     layers_[k].update(cspace_, map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
   for (std::size_t k = 0; k < turn_layers_.size(); ++k)
     turn_layers_[k].update_bits(cspace_, map_, changed, turn_room_, static_cast<int>(k));
-  if (rect) relaxation_.update(cspace_, map_, changed, &field_changes_);
+  // The rectangle's field is only the search's heuristic: after a sync that made nothing
+  // cheaper (new obstacles; free <-> unknown when both cost the same) the field as it was is
+  // still admissible and consistent, so its repair waits (docs/PLANNER.md, "Shut in"); a sync
+  // that makes a cell cheaper while a repair waits drops the field (made again at the next plan).
+  bool cheaper = false;
+  if (rect)
+    for (const std::uint32_t c : changed) {
+      const CellChange kind = cspace_.kind(c);
+      cheaper = cheaper || kind == kLowered || (kind == kRelabelled && costs_.unknown_cost != 1.0);
+    }
+  const bool repair = field_ready_ && (!rect || (cheaper && !field_deferred_));  // field_changes_ wanted
+  if (rect) relaxation_.update(cspace_, map_, changed, repair ? &field_changes_ : nullptr);
   cspace_.end_sync(changed);
-  if (field_ready_) field_.update(field_changes_);
+  if (field_ready_ && rect && !cheaper) {
+    field_deferred_ = true;
+  } else if (field_ready_ && rect && field_deferred_) {
+    field_ready_ = false;
+    field_deferred_ = false;
+  } else if (field_ready_) {
+    field_.update(field_changes_);
+  }
   map_.clear_changes();
 }
 
@@ -136,6 +154,7 @@ void Planner::ensure_field(const PassGrid& grid, Cell goal) {
   if (field_ready_ && field_.goal() == goal) return;
   field_.compute(grid, goal, costs_);
   field_ready_ = true;
+  field_deferred_ = false;
 }
 
 const PassGrid* Planner::field_grid(Cell g) const {
@@ -166,6 +185,7 @@ bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
     const PassGrid* grid = field_grid(g);
     if (grid == nullptr || (field_ready_ && field_.goal() == g)) return true;
     field_ready_ = false;
+    field_deferred_ = false;
     field_.begin(*grid, g, costs_);
   }
   field_ready_ = field_.step(max_cells);

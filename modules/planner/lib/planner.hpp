@@ -147,6 +147,7 @@ class Planner {
   std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
   CostField field_;                     // cost to the goal on the field grid
   bool field_ready_ = false;            // field_ matches the current goal and grid
+  bool field_deferred_ = false;         // Rectangle: field_ lacks new obstacles (still admissible)
   GridSearch grid_search_;              // one-shot 2D searches
   HeadingSearch heading_search_;        // (x, y, slice) search
   std::vector<Cell> cells_;             // 2D path buffer
