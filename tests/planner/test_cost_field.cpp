@@ -7,6 +7,7 @@
 #include "modules/planner/lib/cost_field.hpp"
 #include "modules/planner/lib/grid_search.hpp"
 #include "modules/planner/lib/planner.hpp"
+#include "tests/support/sample.hpp"
 #include "tests/planner/test_util.hpp"
 
 namespace robuter::plan {
@@ -162,6 +163,93 @@ TEST(Planner, IncrementalReplanAfterBeams) {
   ASSERT_FALSE(inc.waypoints().empty());
   EXPECT_NEAR(inc.waypoints().front().pose.x, 0.525, 1e-9);
   EXPECT_NEAR(inc.waypoints().back().pose.x, 5.525, 1e-9);
+}
+
+
+// Why: the rectangle's heuristic field is not repaired after syncs that only add obstacles (it
+// stays admissible and consistent) and is dropped when a later sync makes a cell cheaper; either
+// way every replan must cost what a planner built from scratch on the same map finds. Random
+// blocks raised and cleared between plans, the start moving between them.
+TEST(Planner, RectangleReplansAfterRaisesAndClearsEqualAFreshPlanner) {
+  std::mt19937 rng(41204);
+  PlannerConfig cfg;
+  cfg.footprint = FootprintKind::Rectangle;
+  cfg.rectangle = RectangleFootprint{0.35, 0.25, 0.05, 0.0};
+  cfg.heading_slices = 8;
+  cfg.turn_clearance = 0.05;
+  OccupancyMap base(MapGeometry{80, 60, 0.05, {}});
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 80; ++x) base.mark_free({x, y});
+  Planner inc(cfg);
+  inc.set_map(base);
+  const Point2 goals[] = {{3.6, 2.6}, {3.6, 0.4}, {2.0, 2.7}};  // a new goal: a field made with the blocks
+  int found = 0, deferred_then_cleared = 0;
+  std::vector<Cell> raised;  // corners of the blocks raised so far
+  const int rounds = ::robuter::test::sample(60, 15);
+  for (int round = 0; round < rounds; ++round) {
+    const bool clear = rng() % 3 == 0 && !raised.empty();
+    int bx = static_cast<int>(rng() % 70), by = static_cast<int>(rng() % 50);
+    if (clear) {  // an earlier block cleared: cells become cheaper
+      const std::size_t i = rng() % raised.size();
+      bx = raised[i].x;
+      by = raised[i].y;
+      raised.erase(raised.begin() + static_cast<std::ptrdiff_t>(i));
+    } else {
+      raised.push_back({bx, by});
+    }
+    for (int dy = 0; dy < 6; ++dy)
+      for (int dx = 0; dx < 6; ++dx) {
+        if (clear) inc.map().mark_free({bx + dx, by + dy});
+        else inc.map().mark_occupied({bx + dx, by + dy});
+      }
+    deferred_then_cleared += clear;
+    const Pose2 start{0.3 + 0.05 * static_cast<double>(rng() % 20), 0.3 + 0.05 * static_cast<double>(rng() % 40),
+                      0.5 * static_cast<double>(rng() % 12)};
+    const Point2 goal = goals[(round / 4) % 3];
+    const PlanResult a = inc.plan(start, goal);
+    Planner fresh(cfg);
+    fresh.set_map(inc.map());
+    const PlanResult b = fresh.plan(start, goal);
+    SCOPED_TRACE(testing::Message() << "round " << round);
+    ASSERT_EQ(a.status, b.status);
+    if (a.found()) {
+      ++found;
+      ASSERT_NEAR(a.cost, b.cost, 1e-9);
+    }
+  }
+  EXPECT_GT(found, rounds / 3);
+  EXPECT_GT(deferred_then_cleared, 0);
+}
+
+// Why: the case the deferred field must not miss: a goal's field made while a wall stood between
+// the robot and the goal (the wall's cells unreachable in it), a raise-only sync (the field kept
+// as it was), then the wall cleared: the plan must take the way through, as a fresh planner does.
+TEST(Planner, RectangleFieldIsRemadeWhenAWallClearsAfterADeferredRepair) {
+  PlannerConfig cfg;
+  cfg.footprint = FootprintKind::Rectangle;
+  cfg.rectangle = RectangleFootprint{0.35, 0.25, 0.05, 0.0};
+  cfg.heading_slices = 8;
+  OccupancyMap base(MapGeometry{80, 60, 0.05, {}});
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 80; ++x) base.mark_free({x, y});
+  for (int y = 0; y < 56; ++y) base.mark_occupied({40, y});  // a wall with a gap at the top
+  Planner inc(cfg);
+  inc.set_map(base);
+  const Pose2 start{0.5, 0.5, 0.0};
+  const Point2 goal{3.5, 0.5};
+  const PlanResult around = inc.plan(start, goal);
+  ASSERT_TRUE(around.found());
+  inc.map().mark_occupied({10, 50});  // raise only: the field's repair waits
+  ASSERT_TRUE(inc.plan(start, goal).found());
+  for (int y = 0; y < 56; ++y) inc.map().mark_free({40, y});  // the wall goes
+  const PlanResult through = inc.plan(start, goal);
+  Planner fresh(cfg);
+  fresh.set_map(inc.map());
+  const PlanResult ref = fresh.plan(start, goal);
+  ASSERT_TRUE(through.found());
+  ASSERT_TRUE(ref.found());
+  EXPECT_NEAR(through.cost, ref.cost, 1e-9);
+  EXPECT_LT(through.cost, around.cost - 20.0);  // straight through, not round the wall's end
 }
 
 }  // namespace
