@@ -6,26 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "modules/planner/lib/slice_bits.hpp"
+#include "modules/planner/lib/lean_graph.hpp"
 
 namespace robuter::plan {
-
-// The lean search's graph as HeadingSearch holds it for one search (all arrays per slice or per
-// move slot, cells in a PassGrid's bordered indexing).
-struct LeanGraph {
-  const std::uint8_t* const* cls_of = nullptr;  // per slice: its cell classes
-  int slices = 0;                               // slices over the full turn
-  int stride = 0;                               // stored cells per row
-  int rows = 0;                                 // stored rows
-  const int* move_slice = nullptr;              // per move slot: its slice
-  int slots = 0;                                // move slots
-  const int* slot_of = nullptr;                 // per slice: its move slot, or -1
-  const std::uint8_t* allowed = nullptr;        // per slice: allowed move bits
-  const SliceBits* turn_room = nullptr;         // grown-body bits (turning needs them clear), or null
-  std::uint32_t start = 0;                      // stored index of the start cell
-  int start_slice = 0;                          // the robot's slice there
-  std::uint32_t goal = 0;                       // stored index of the goal cell
-};
 
 // Why: a search that ends "unreachable" has to exhaust the robot's whole component of the
 // (cell, move slot) graph, one state at a time — ~17 k states when a new obstacle shuts the
@@ -49,15 +32,20 @@ class EnclosureTest {
   // component lies inside it, away from its outer ring, without the goal.
   bool enclosed(const LeanGraph& g, int x0, int y0);
 
-  // Word operations of the last enclosed() call's flood (tests and figures).
-  std::uint32_t last_sweeps() const { return sweeps_; }
-
  private:
   using Rows = std::array<std::uint64_t, static_cast<std::size_t>(kSize * kWords)>;  // row y: words [y * kWords, ...)
+  // The window: stored corner (x0, y0); stored columns [xa, xb) and rows [ya, yb) on the map.
+  struct Window {
+    int x0, y0, xa, xb, ya, yb;
+  };
+  void pack_free(const LeanGraph& g, const Window& w);            // free_ from the move slices
+  void pack_turns(const LeanGraph& g, const Window& w, int sx, int sy);  // turn_ between slots
+  void seed(const LeanGraph& g, int sx, int sy);                  // seen_: the start's states
+  bool flood(const LeanGraph& g, int gx, int gy);                 // seen_ to its closure: enclosed?
+
   std::vector<Rows> free_;  // per slot: bit x of row y set = the slot's slice is not blocked there
   std::vector<Rows> turn_;  // per slot s: bit set = turning between slot s and s + 1 is allowed
   std::vector<Rows> seen_;  // per slot: reached states
-  std::uint32_t sweeps_ = 0;
 };
 
 }  // namespace robuter::plan

@@ -278,27 +278,10 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     }
   };
 
-  // Why: can the robot turn in place at `cell` from slice `from` by `steps` slice steps in
-  // direction `dir` (+1 up, -1 down)? Each step j -> j' needs room at j and j' — the turn
-  // bits when `grown`, else the body's own classes — and the body itself free at j' (the full
-  // graph's rule, step by step).
-  const std::uint32_t* room_bits = own_turns ? turn_room->bits.data() : nullptr;
-  const auto room_words = static_cast<std::uint32_t>(own_turns ? turn_room->words : 1);
-  auto arc_free = [&](bool grown, std::uint32_t cell, int from, int steps, int dir) {
-    const std::uint32_t* wb = grown ? room_bits + cell * room_words : nullptr;
-    auto no_room = [&](int j) {
-      return grown ? ((wb[j >> 5] >> (j & 31)) & 1u) != 0 : cls_of[j][cell] == kBlocked;
-    };
-    if (no_room(from)) return false;
-    int j = from;
-    for (int q = 0; q < steps; ++q) {
-      j = (j + dir + k_count) % k_count;
-      if (no_room(j) || cls_of[j][cell] == kBlocked) return false;
-    }
-    return true;
-  };
-
   const int s0 = start.slice;
+  const LeanGraph lg{cls_of, k_count, g0.stride, g0.height + 2, move_slice, m_count, slot_of, allowed,
+                     own_turns ? turn_room->bits.data() : nullptr, own_turns ? turn_room->words : 1,
+                     start_index, s0, t};
   if (!run_.seeded) {
     run_.seeded = true;
     if (slot_of[s0] >= 0) {
@@ -306,17 +289,12 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     } else {
       // A pass-through start slice: seed the nearest move slices either way (at the start cell
       // the body's own room is enough to turn).
-      int up = s0;
-      int n_up = 0;
-      do up = (up + 1) % k_count, ++n_up;
-      while (slot_of[up] < 0);
-      int down = s0;
-      int n_down = 0;
-      do down = (down + k_count - 1) % k_count, ++n_down;
-      while (slot_of[down] < 0);
-      if (arc_free(false, start_index, s0, n_up, +1))
+      int n_up = 0, n_down = 0;
+      const int up = next_move_slice(lg, s0, +1, n_up);
+      const int down = next_move_slice(lg, s0, -1, n_down);
+      if (arc_free(lg, false, start_index, s0, n_up, +1))
         relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
-      if (arc_free(false, start_index, s0, n_down, -1))
+      if (arc_free(lg, false, start_index, s0, n_down, -1))
         relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
     }
   }
@@ -364,8 +342,6 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       const int span_y = run_.max_y - run_.min_y + 1;
       if (span_x <= kWin - 2 && span_y <= kWin - 2 && run_.enclosure_tries < kEnclosureTries) {
         ++run_.enclosure_tries;
-        const LeanGraph lg{cls_of, k_count, g0.stride, g0.height + 2, move_slice, m_count, slot_of,
-                           allowed, own_turns ? turn_room : nullptr, start_index, s0, t};
         if (enclosure_.enclosed(lg, run_.min_x - (kWin - span_x) / 2, run_.min_y - (kWin - span_y) / 2)) {
           shut_in_ = true;
           break;  // best is infinite: ends unreachable below
@@ -394,8 +370,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       const int down = (slot + m_count - 1) % m_count;
       const int n_up = (move_slice[up] - k + k_count) % k_count;
       const int n_down = (k - move_slice[down] + k_count) % k_count;
-      if (arc_free(grown, u, k, n_up, +1)) relax(x, y, up, gu + n_up * turn, kTurnedUp);
-      if (arc_free(grown, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
+      if (arc_free(lg, grown, u, k, n_up, +1)) relax(x, y, up, gu + n_up * turn, kTurnedUp);
+      if (arc_free(lg, grown, u, k, n_down, -1)) relax(x, y, down, gu + n_down * turn, kTurnedDown);
     }
   }
   run_.active = false;

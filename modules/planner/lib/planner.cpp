@@ -73,21 +73,22 @@ void Planner::sync() {
   // still admissible and consistent, so its repair waits (docs/PLANNER.md, "Shut in"); a sync
   // that makes a cell cheaper while a repair waits drops the field (made again at the next plan).
   bool cheaper = false;
-  if (rect)
-    for (const std::uint32_t c : changed) {
-      const CellChange kind = cspace_.kind(c);
-      cheaper = cheaper || kind == kLowered || (kind == kRelabelled && costs_.unknown_cost != 1.0);
-    }
-  const bool repair = field_ready_ && (!rect || (cheaper && !field_deferred_));  // field_changes_ wanted
+  for (const std::uint32_t c : rect && field_ready_ ? changed : std::span<const std::uint32_t>{}) {
+    const CellChange kind = cspace_.kind(c);
+    cheaper = cheaper || kind == kLowered || (kind == kRelabelled && costs_.unknown_cost != 1.0);
+  }
+  const bool repair = cheaper && !field_deferred_;  // the rectangle's field repaired now
   if (rect) relaxation_.update(cspace_, map_, changed, repair ? &field_changes_ : nullptr);
   cspace_.end_sync(changed);
-  if (field_ready_ && rect && !cheaper) {
-    field_deferred_ = true;
-  } else if (field_ready_ && rect && field_deferred_) {
-    field_ready_ = false;
-    field_deferred_ = false;
-  } else if (field_ready_) {
-    field_.update(field_changes_);
+  if (field_ready_) {
+    if (!rect || repair) {
+      field_.update(field_changes_);
+    } else if (!cheaper) {
+      field_deferred_ = true;
+    } else {  // cheaper, with new obstacles not folded in: made again at the next plan
+      field_ready_ = false;
+      field_deferred_ = false;
+    }
   }
   map_.clear_changes();
 }
