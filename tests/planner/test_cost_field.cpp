@@ -166,22 +166,26 @@ TEST(Planner, IncrementalReplanAfterBeams) {
 }
 
 
+// Why: a rectangle of 35 x 25 cm, 5 cm ahead of its axle, 8 slices over a half turn: small
+// enough for quick facade tests on maps of a few metres.
+PlannerConfig small_rectangle(double turn_clearance) {
+  PlannerConfig cfg;
+  cfg.footprint = FootprintKind::Rectangle;
+  cfg.rectangle = RectangleFootprint{0.35, 0.25, 0.05, 0.0};
+  cfg.heading_slices = 8;
+  cfg.turn_clearance = turn_clearance;
+  return cfg;
+}
+
 // Why: the rectangle's heuristic field is not repaired after syncs that only add obstacles (it
 // stays admissible and consistent) and is dropped when a later sync makes a cell cheaper; either
 // way every replan must cost what a planner built from scratch on the same map finds. Random
 // blocks raised and cleared between plans, the start moving between them.
 TEST(Planner, RectangleReplansAfterRaisesAndClearsEqualAFreshPlanner) {
   std::mt19937 rng(41204);
-  PlannerConfig cfg;
-  cfg.footprint = FootprintKind::Rectangle;
-  cfg.rectangle = RectangleFootprint{0.35, 0.25, 0.05, 0.0};
-  cfg.heading_slices = 8;
-  cfg.turn_clearance = 0.05;
-  OccupancyMap base(MapGeometry{80, 60, 0.05, {}});
-  for (int y = 0; y < 60; ++y)
-    for (int x = 0; x < 80; ++x) base.mark_free({x, y});
+  const PlannerConfig cfg = small_rectangle(0.05);
   Planner inc(cfg);
-  inc.set_map(base);
+  inc.set_map(test::free_map(80, 60));
   const Point2 goals[] = {{3.6, 2.6}, {3.6, 0.4}, {2.0, 2.7}};  // a new goal: a field made with the blocks
   int found = 0, deferred_then_cleared = 0;
   std::vector<Cell> raised;  // corners of the blocks raised so far
@@ -225,13 +229,8 @@ TEST(Planner, RectangleReplansAfterRaisesAndClearsEqualAFreshPlanner) {
 // the robot and the goal (the wall's cells unreachable in it), a raise-only sync (the field kept
 // as it was), then the wall cleared: the plan must take the way through, as a fresh planner does.
 TEST(Planner, RectangleFieldIsRemadeWhenAWallClearsAfterADeferredRepair) {
-  PlannerConfig cfg;
-  cfg.footprint = FootprintKind::Rectangle;
-  cfg.rectangle = RectangleFootprint{0.35, 0.25, 0.05, 0.0};
-  cfg.heading_slices = 8;
-  OccupancyMap base(MapGeometry{80, 60, 0.05, {}});
-  for (int y = 0; y < 60; ++y)
-    for (int x = 0; x < 80; ++x) base.mark_free({x, y});
+  const PlannerConfig cfg = small_rectangle(0.0);
+  OccupancyMap base = test::free_map(80, 60);
   for (int y = 0; y < 56; ++y) base.mark_occupied({40, y});  // a wall with a gap at the top
   Planner inc(cfg);
   inc.set_map(base);

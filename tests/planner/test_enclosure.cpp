@@ -8,6 +8,7 @@
 #include "modules/planner/lib/enclosure.hpp"
 #include "modules/planner/lib/heading_search.hpp"
 #include "tests/planner/reference_heading_search.hpp"
+#include "tests/planner/test_util.hpp"
 #include "tests/support/sample.hpp"
 
 namespace robuter::plan {
@@ -54,10 +55,7 @@ RoomStack room_stack(std::mt19937& rng, int w, int h, int k) {
       }
   for (const PassGrid& g : st.slices) st.slice_ptrs.push_back(&g);
   for (const PassGrid& g : st.turns) st.turn_ptrs.push_back(&g);
-  st.turn_bits.resize(w, h, k);
-  for (int s = 0; s < k; ++s)
-    for (std::uint32_t i = 0; i < st.turns[static_cast<std::size_t>(s)].cls.size(); ++i)
-      st.turn_bits.set_blocked(i, s, st.turns[static_cast<std::size_t>(s)].cls[i] == kBlocked);
+  st.turn_bits = test::slice_bits_of(st.turns);
   return st;
 }
 
@@ -89,15 +87,16 @@ Tables tables(const RoomStack& st, MotionModel motion) {
 // the start, both motion models, with and without turn bits, starts in pass-through slices.
 TEST(EnclosureTest, EnclosedMeansTheExhaustiveSearchFindsNoPath) {
   std::mt19937 rng(20261204);
-  const int cases = test::sample(1500, 200);
+  const int cases = ::robuter::test::sample(1500, 200);
   int enclosed = 0, open_reachable = 0;
   EnclosureTest test;
   ReferenceHeadingSearch full;
-  const std::vector<int> ks = {1, 2, 8, 16, 32};
+  const std::vector<int> ks = {1, 2, 8, 16, 32, 64, 160};  // 64: turn bits in 2 words; 160: 5 words (the body rule)
   for (int c = 0; c < cases; ++c) {
-    const int w = 8 + static_cast<int>(rng() % 140);
-    const int h = 8 + static_cast<int>(rng() % 140);
     const int k = ks[rng() % ks.size()];
+    const unsigned side = k > 32 ? 60 : 140;  // many slices: smaller rooms (the reference's cost)
+    const int w = 8 + static_cast<int>(rng() % side);
+    const int h = 8 + static_cast<int>(rng() % side);
     const RoomStack st = room_stack(rng, w, h, k);
     const MotionModel motion = rng() % 4 == 0 ? MotionModel::Holonomic : MotionModel::Aligned;
     const Tables t = tables(st, motion);
@@ -110,11 +109,12 @@ TEST(EnclosureTest, EnclosedMeansTheExhaustiveSearchFindsNoPath) {
     const PassGrid& g0 = st.slices[0];
     const LeanGraph lg{t.cls_of.data(), k, g0.stride, g0.height + 2, t.move_slice.data(),
                        static_cast<int>(t.move_slice.size()), t.slot_of.data(), t.allowed.data(),
-                       with_turns ? &st.turn_bits : nullptr, g0.index({start.x, start.y}), start.slice,
-                       g0.index(goal)};
+                       with_turns ? st.turn_bits.bits.data() : nullptr, st.turn_bits.words,
+                       g0.index({start.x, start.y}), start.slice, g0.index(goal)};
     test.reserve(static_cast<int>(t.move_slice.size()));
-    const int x0 = start.x + 1 - 1 - static_cast<int>(rng() % (EnclosureTest::kSize - 2));
-    const int y0 = start.y + 1 - 1 - static_cast<int>(rng() % (EnclosureTest::kSize - 2));
+    // The window anywhere that keeps the start (stored at x + 1, y + 1) off its ring.
+    const int x0 = start.x - static_cast<int>(rng() % (EnclosureTest::kSize - 2));
+    const int y0 = start.y - static_cast<int>(rng() % (EnclosureTest::kSize - 2));
     const bool shut = test.enclosed(lg, x0, y0);
     HeadingOptions opt;
     opt.motion = motion;

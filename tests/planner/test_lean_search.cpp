@@ -10,6 +10,7 @@
 #include "modules/planner/lib/cost_field.hpp"
 #include "modules/planner/lib/heading_search.hpp"
 #include "tests/planner/reference_heading_search.hpp"
+#include "tests/planner/test_util.hpp"
 #include "tests/support/sample.hpp"
 
 namespace robuter::plan {
@@ -48,10 +49,7 @@ Stack random_stack(std::mt19937& rng, int w, int h, int k, double density) {
       }
   for (const PassGrid& g : st.slices) st.slice_ptrs.push_back(&g);
   for (const PassGrid& g : st.turns) st.turn_ptrs.push_back(&g);
-  st.turn_bits.resize(w, h, k);
-  for (int s = 0; s < k; ++s)
-    for (std::uint32_t i = 0; i < st.turns[static_cast<std::size_t>(s)].cls.size(); ++i)
-      st.turn_bits.set_blocked(i, s, st.turns[static_cast<std::size_t>(s)].cls[i] == kBlocked);
+  st.turn_bits = test::slice_bits_of(st.turns);
   return st;
 }
 
@@ -102,7 +100,7 @@ double walk_cost(const Stack& st, const std::vector<CellPose>& path, CellPose st
 // lean search reads the turn slices as bits, the reference as PassGrids.
 TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
   std::mt19937 rng(20261202);
-  const int cases = test::sample(3000, 400);
+  const int cases = ::robuter::test::sample(3000, 400);
   int found = 0, unreachable = 0, pass_through_starts = 0;
   HeadingSearch lean;
   ReferenceHeadingSearch full;
@@ -160,7 +158,7 @@ TEST(LeanHeadingSearch, SameCostsAsTheFullGraphOnRandomStacks) {
 // expansions and path, on random stacks of every kind above.
 TEST(LeanHeadingSearch, InStepsEqualsOneSearch) {
   std::mt19937 rng(7102);
-  const int cases = test::sample(600, 100);
+  const int cases = ::robuter::test::sample(600, 100);
   int stepped = 0;
   HeadingSearch one, steps;
   CostField field;
