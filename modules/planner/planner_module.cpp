@@ -472,6 +472,13 @@ void PlannerModule::run(Kernel& k) {
     }
     if (state_ == PlannerState::planning) plan_step(tick, pose);
     else if (state_ == PlannerState::moving) move_step(tick, pose);
+    // While the robot drives and scans, the kept tree for the plan's goal grows, a step per
+    // activation, so that a replan after new obstacles searches only where it broke
+    // (docs/PLANNER.md, "The kept tree").
+    if ((state_ == PlannerState::moving || state_ == PlannerState::scanning) && planner_.tree_growing() &&
+        planner_.grow_tree_step(s_.search_pops_per_run))
+      log::info("planner: plan {}: kept tree {}: {} states", plans_, planner_.tree_kept() ? "made" : "not kept",
+                planner_.tree_states());
   } else {
     serve_goal(tick);  // a new goal in the same tick as the interruption still starts
   }

@@ -11,7 +11,8 @@ namespace robuter::plan {
 
 void ReferenceHeadingSearch::reserve(int width, int height, int slices) {
   const auto stored = static_cast<std::size_t>(width + 2) * static_cast<std::size_t>(height + 2);
-  const std::size_t states = stored * static_cast<std::size_t>(std::max(slices, 1));
+  // Every (cell, slice), then one state per slice for the start cell before the robot moves.
+  const std::size_t states = (stored + 1) * static_cast<std::size_t>(std::max(slices, 1));
   if (nodes_.size() < states) {
     nodes_.assign(states, Node{0.0, 0, kNoMove, 0});
     gen_ = 0;
@@ -83,8 +84,11 @@ PlanResult ReferenceHeadingSearch::find(std::span<const PassGrid* const> slices,
   double best = CostField::kInfinity;
   std::uint32_t reached = 0;
 
-  auto relax = [&](std::uint32_t cell, int k, double ng, std::uint8_t how) {
-    const std::uint32_t s = static_cast<std::uint32_t>(k) * stored + cell;
+  const std::uint32_t departure = stored * static_cast<std::uint32_t>(k_count);  // first departure state
+  const std::uint32_t start_index = g0.index(sc);
+  // `before`: the departure copy of the start cell's state (the robot has not moved yet).
+  auto relax = [&](std::uint32_t cell, int k, double ng, std::uint8_t how, bool before = false) {
+    const std::uint32_t s = before ? departure + static_cast<std::uint32_t>(k) : static_cast<std::uint32_t>(k) * stored + cell;
     Node& n = nodes[s];
     if (n.stamp != gen_) {
       const double h = h_of(cell);
@@ -113,8 +117,7 @@ PlanResult ReferenceHeadingSearch::find(std::span<const PassGrid* const> slices,
     }
   };
 
-  const std::uint32_t start_index = g0.index(sc);
-  relax(start_index, start.slice, 0.0, kNoMove);
+  relax(start_index, start.slice, 0.0, kNoMove, true);
   for (;;) {
     std::uint32_t s;
     if (use_ring) {
@@ -126,8 +129,9 @@ PlanResult ReferenceHeadingSearch::find(std::span<const PassGrid* const> slices,
     }
     Node& ns = nodes[s];
     ns.closed = 1;
-    const std::uint32_t u = s % stored;
-    const int k = static_cast<int>(s / stored);
+    const bool before = s >= departure;
+    const std::uint32_t u = before ? start_index : s % stored;
+    const int k = before ? static_cast<int>(s - departure) : static_cast<int>(s / stored);
     const double gu = ns.g;
     if (u == t || gu + h_of(u) >= best) continue;
     ++r.expanded;
@@ -142,19 +146,19 @@ PlanResult ReferenceHeadingSearch::find(std::span<const PassGrid* const> slices,
       if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
                      cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
         continue;
-      relax(v, k, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
+      relax(v, k, gu + cost[m][cu][cv], static_cast<std::uint8_t>(before ? kFromDeparture + m : m));
     }
     if (k_count > 1) {
       const int up = (k + 1) % k_count;
       const int down = (k + k_count - 1) % k_count;
       // The current slice is free at u (tight); turning may ask for more room, except where
-      // the robot already stands: there the body's own room is enough (it may have stopped
-      // close to something, and must be able to turn away).
-      const std::uint8_t* const* room = own_turns && u != start_index ? turn_of : cls_of;
+      // the robot stands before it moves: there the body's own room is enough (it may have
+      // stopped close to something, and must be able to turn away).
+      const std::uint8_t* const* room = own_turns && !before ? turn_of : cls_of;
       const bool here = room[k][u] != kBlocked;
-      if (here && room[up][u] != kBlocked && cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8);
+      if (here && room[up][u] != kBlocked && cls_of[up][u] != kBlocked) relax(u, up, gu + turn, 8, before);
       if (here && down != up && room[down][u] != kBlocked && cls_of[down][u] != kBlocked)
-        relax(u, down, gu + turn, 9);
+        relax(u, down, gu + turn, 9, before);
     }
   }
   const bool found = best != CostField::kInfinity;
@@ -166,18 +170,22 @@ PlanResult ReferenceHeadingSearch::find(std::span<const PassGrid* const> slices,
   std::uint32_t s = reached;
   r.cost = nodes[s].g;
   for (;;) {
-    const std::uint32_t u = s % stored;
-    const int k = static_cast<int>(s / stored);
+    const bool before = s >= departure;
+    const std::uint32_t u = before ? start_index : s % stored;
+    const int k = before ? static_cast<int>(s - departure) : static_cast<int>(s / stored);
     const Cell c = g0.cell(u);
     path_.push_back({c.x, c.y, k});
-    const int p = nodes[s].parent;
+    int p = nodes[s].parent;
     if (p == kNoMove) break;
+    const bool from_departure = p >= kFromDeparture;
+    if (from_departure) p -= kFromDeparture;
     if (p < 8) {
       (p < 4 ? orth : diag) += 1;
-      s = static_cast<std::uint32_t>(k) * stored + (u - static_cast<std::uint32_t>(mt.step[p]));
+      s = from_departure ? departure + static_cast<std::uint32_t>(k)
+                         : static_cast<std::uint32_t>(k) * stored + (u - static_cast<std::uint32_t>(mt.step[p]));
     } else {
       const int from = p == 8 ? (k + k_count - 1) % k_count : (k + 1) % k_count;
-      s = static_cast<std::uint32_t>(from) * stored + u;
+      s = before ? departure + static_cast<std::uint32_t>(from) : static_cast<std::uint32_t>(from) * stored + u;
     }
   }
   std::reverse(path_.begin(), path_.end());

@@ -30,8 +30,8 @@ class ReferenceHeadingSearch {
   // Why: the entry point; `slices` are K grids of one size; the path is then in path().
   // `turn_slices` (empty, or K grids of the same size): where turning in place needs more room
   // than translating (a body grown by a clearance), a turn k -> k±1 at a cell needs the cell
-  // free in both of these slices instead — except at the start cell, where the robot already
-  // stands and the body's own room is enough.
+  // free in both of these slices instead — except for the turns at the start cell before the
+  // robot's first move (departure states), where the body's own room is enough.
   PlanResult find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                   const HeadingOptions& options, const CostModel& costs = {},
                   const CostField* heuristic = nullptr,
@@ -44,11 +44,14 @@ class ReferenceHeadingSearch {
   struct Node {
     double g;             // cells: best cost from the start
     std::uint32_t stamp;  // generation that wrote it
-    std::uint8_t parent;  // 0..7 grid move, 8 turned +1 slice, 9 turned -1 slice, kNoMove start
+    std::uint8_t parent;  // 0..7 grid move, 8 turned +1 slice, 9 turned -1 slice, kNoMove start,
+                          // kFromDeparture + m: move m from the start cell before any move
     std::uint8_t closed;  // 1 once expanded
   };
 
-  std::vector<Node> nodes_;    // slice-major: slice * stored + cell index
+  static constexpr std::uint8_t kFromDeparture = 16;  // parent code offset: a move from a departure state
+  std::vector<Node> nodes_;    // slice-major: slice * stored + cell index; then the start cell's
+                               // departure states, one per slice
   IndexedHeap open_;           // open list for very uneven costs
   std::vector<CellPose> path_; // last path, start first
   std::uint32_t gen_ = 0;      // generation stamp

@@ -62,6 +62,7 @@ double walk_cost(const Stack& st, const std::vector<CellPose>& path, CellPose st
     return -1.0;
   const auto table = costs.table();
   double total = 0.0;
+  bool moved = false;  // a grid move made: the start's body room no longer serves turns
   for (std::size_t i = 1; i < path.size(); ++i) {
     const CellPose a = path[i - 1];
     const CellPose b = path[i];
@@ -69,7 +70,7 @@ double walk_cost(const Stack& st, const std::vector<CellPose>& path, CellPose st
     if (a.x == b.x && a.y == b.y) {
       const int d = (b.slice - a.slice + k) % k;
       if (d != 1 && d != k - 1) return -1.0;
-      const bool at_start = a.x == start.x && a.y == start.y;
+      const bool at_start = !moved && a.x == start.x && a.y == start.y;
       const auto& room = with_turns && !at_start ? st.turns : st.slices;
       const Cell c{a.x, a.y};
       if (room[static_cast<std::size_t>(a.slice)].at(c) == kBlocked ||
@@ -80,6 +81,7 @@ double walk_cost(const Stack& st, const std::vector<CellPose>& path, CellPose st
       continue;
     }
     if (a.slice != b.slice) return -1.0;
+    moved = true;
     int m = -1;
     for (int j = 0; j < 8; ++j)
       if (b.x - a.x == kMoveDx[j] && b.y - a.y == kMoveDy[j]) m = j;

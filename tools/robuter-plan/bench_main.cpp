@@ -508,7 +508,7 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   const Point2 goal = fc.goal;
   Planner p(settings.planner);
   p.set_map(base);
-  std::vector<double> full, layers, search_only;
+  std::vector<double> full, layers, search_only, tree_ms;
   PlanResult first;
   for (int rep = 0; rep < 5; ++rep) {
     double c0 = cpu_ms();
@@ -517,6 +517,9 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
     first = p.plan(start, goal);
     full.push_back(cpu_ms() - c0);
     layers.push_back(c1 - c0);
+    c0 = cpu_ms();
+    p.grow_tree();  // what the module does while the robot drives the plan's first leg
+    tree_ms.push_back(cpu_ms() - c0);
     c0 = cpu_ms();
     p.plan(start, Point2{goal.x - 0.05 * (rep + 1), goal.y});  // same map, a new goal
     search_only.push_back(cpu_ms() - c0);
@@ -530,7 +533,7 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   // Worst activation: after set_map, the steps the module runs, one per activation (a sync; the
   // field in steps of settings.field_cells_per_run cells; the search in steps of
   // settings.search_pops_per_run states), and the same after each placement.
-  double worst_prepare = 0.0, worst_plan = 0.0, worst_sync = 0.0;
+  double worst_prepare = 0.0, worst_plan = 0.0, worst_sync = 0.0, worst_tree = 0.0;
   auto activations = [&]() {
     double c0 = cpu_ms();
     p.sync();
@@ -546,6 +549,11 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
       done = p.plan_step(start, goal, settings.search_pops_per_run, r);
       worst_plan = std::max(worst_plan, cpu_ms() - c0);
     }
+    for (bool done = false; !done;) {  // the tree, a step per activation while the robot drives
+      c0 = cpu_ms();
+      done = p.grow_tree_step(settings.search_pops_per_run);
+      worst_tree = std::max(worst_tree, cpu_ms() - c0);
+    }
     return r;
   };
   p.set_map(base);
@@ -553,11 +561,13 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   std::vector<double> replan, replan_sync;
   // Per outcome of the replan (found, unreachable, start blocked...): its times.
   std::map<std::string, std::vector<double>> by_status;
+  std::map<std::string, std::vector<double>> pops_by_status;  // states expanded, per outcome
   int found = 0, placed_total = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < 100; ++i) {
       p.set_map(base);
       if (!p.plan(start, goal).found()) continue;
+      p.grow_tree();
       const std::vector<Waypoint> path = p.waypoints();
       // The waypoint 1.0 .. 1.9 m along the path from the robot: a 10 x 10 block of new
       // obstacle cells centred on it (the 100 cells a scan finds ahead).
@@ -584,6 +594,7 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
         found += rr.found() ? 1 : 0;
         replan.push_back(cpu_ms() - c0);
         by_status[std::string(to_string(rr.status))].push_back(replan.back());
+        pops_by_status[std::string(to_string(rr.status))].push_back(static_cast<double>(rr.expanded));
         replan_sync.push_back(c1 - c0);
         placed_total += placed;
       } else {
@@ -592,7 +603,7 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
     }
   const double replan_ms = median(replan);
   const long hwm1 = vm_hwm_kb();
-  const double worst = std::max({worst_prepare, worst_plan, worst_sync});
+  const double worst = std::max({worst_prepare, worst_plan, worst_sync, worst_tree});
   std::printf("%-8s %dx%d cells of 5 cm, start (%.2f, %.2f) goal (%.2f, %.2f), path %.2f m, %u states expanded\n",
               fc.label, base.width(), base.height(), start.x, start.y, goal.x, goal.y, first.length * 0.05,
               first.expanded);
@@ -604,18 +615,21 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   // the search). Also printed: against a plan for a new goal on the map already held (the field
   // and the search alone), which a replan — it folds 100 cells into 65 layers first — cannot
   // approach. docs/PLANNER.md, "The firmware's planner".
+  std::printf("  kept tree (grown while driving) %8.2f ms CPU (median of 5), %u states, %zu pages; not in the full plan\n",
+              median(tree_ms), p.tree_states(), p.tree_pages());
   std::printf("  replan, 100 new cells ahead    %8.2f ms CPU (median of 100; %d found a path, %.0f cells each)"
               "   full plan / replan %.1fx, target >= 10x: %s (new-goal plan / replan %.1fx)\n",
               replan_ms, found, static_cast<double>(placed_total) / static_cast<double>(std::max<std::size_t>(1, replan.size())),
               full_ms / replan_ms, verdict(full_ms / replan_ms >= 10.0), median(search_only) / replan_ms);
   for (auto& [status, times] : by_status)
-    std::printf("    %-16s %3zu replans, median %6.2f ms, worst %6.2f ms   full plan / replan %.1fx\n",
+    std::printf("    %-16s %3zu replans, median %6.2f ms, worst %6.2f ms, %6.0f states expanded (median)"
+                "   full plan / replan %.1fx\n",
                 status.c_str(), times.size(), median(times), *std::max_element(times.begin(), times.end()),
-                full_ms / median(times));
+                median(pops_by_status[status]), full_ms / median(times));
   std::printf("    of which sync (layers + field) %6.2f ms (median)\n", median(replan_sync));
-  std::printf("  worst activation               %8.2f ms CPU (sync %.2f, field step %.2f, search step %.2f;"
-              " first plan + 100 replans)%s\n",
-              worst, worst_sync, worst_prepare, worst_plan,
+  std::printf("  worst activation               %8.2f ms CPU (sync %.2f, field step %.2f, search step %.2f,"
+              " tree step %.2f; first plan + 100 replans)%s\n",
+              worst, worst_sync, worst_prepare, worst_plan, worst_tree,
               check_default ? (worst < 5.0 ? "   target < 5 ms: PASS" : "   target < 5 ms: FAIL") : "");
   std::printf("  memory (VmHWM growth)          %8.1f MB\n", static_cast<double>(hwm1 - hwm0) / 1024.0);
   return true;

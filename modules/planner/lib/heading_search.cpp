@@ -25,17 +25,6 @@ std::uint8_t allowed_moves(int slice, int slices, MotionModel motion) {
 
 namespace {
 
-// meta_ bits of a pool state.
-constexpr std::uint8_t kParentMask = 0x0F;  // how the state was reached (below)
-constexpr std::uint8_t kSeen = 0x10;        // reached in this search (g_ is valid)
-constexpr std::uint8_t kClosed = 0x20;      // expanded
-// Parent codes (0..7: the grid move that led here).
-constexpr std::uint8_t kTurnedUp = 8;     // turned up from the move slot below
-constexpr std::uint8_t kTurnedDown = 9;   // turned down from the move slot above
-constexpr std::uint8_t kSeedUp = 10;      // turned up from a pass-through start slice
-constexpr std::uint8_t kSeedDown = 11;    // turned down from a pass-through start slice
-constexpr std::uint8_t kStartState = 15;  // the start itself
-
 // Why: the search's heuristic at a stored cell (x, y) of index `cell`: the relaxation field when
 // there is one, else the octile distance to the goal (grid cell `goal`, stored at goal + 1).
 double heuristic_at(const CostField* field, Cell goal, int x, int y, std::uint32_t cell) {
@@ -83,6 +72,14 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   if (move_slice_.size() < kk) move_slice_.resize(kk, 0);
   if (slot_of_.size() < kk) slot_of_.resize(kk, -1);
   enclosure_.reserve(k);
+  if (end_extra_.size() < kk) end_extra_.resize(kk, 0.0);
+  if (slot_turn_.size() < kk) slot_turn_.resize(kk, 0.0);
+  if (seed_cost_.size() < kk) seed_cost_.resize(kk, 0.0);
+  if (chain_.capacity() < budget) {
+    memo_.reset(new std::uint16_t[budget]);  // read only where a tree state was written
+    chain_.reserve(budget);
+    epoch_ = 0;
+  }
 }
 
 PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
@@ -96,12 +93,14 @@ PlanResult HeadingSearch::find(std::span<const PassGrid* const> slices, CellPose
 
 bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                           const HeadingOptions& options, const CostModel& costs,
-                          const CostField* heuristic, const SliceBits* turn_room, PlanResult& out) {
+                          const CostField* heuristic, const SliceBits* turn_room, PlanResult& out,
+                          HeadingSearch* tree) {
   PlanResult r;
   path_.clear();
   used_ = 0;
   run_.active = false;
   shut_in_ = false;
+  kept_ = false;
   const auto done = [&](PlanStatus st) {
     r.status = st;
     out = r;
@@ -119,27 +118,7 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   for (const PassGrid* g : slices) goal_free = goal_free || g->at(goal) != kBlocked;
   if (!goal_free) return done(PlanStatus::GoalBlocked);
 
-  reserve(g0.width, g0.height, k_count, budget_ == 0 ? kDefaultStateBudget : budget_);
-  if (++gen_ == 0) {
-    for (TileEntry& e : tiles_) e.stamp = 0;
-    gen_ = 1;
-  }
-  std::uint8_t* allowed = allowed_.data();
-  const std::uint8_t** cls_of = cls_of_.data();
-  int* move_slice = move_slice_.data();
-  int* slot_of = slot_of_.data();
-  int m_count = 0;  // move slots
-  for (int k = 0; k < k_count; ++k) {
-    allowed[k] = allowed_moves(k, k_count, options.motion);
-    cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
-    slot_of[k] = -1;
-    if (allowed[k] != 0) {
-      slot_of[k] = m_count;
-      move_slice[m_count++] = k;
-    }
-  }
-  page_shift_ = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
-  pages_ = budget_ >> page_shift_;
+  const int m_count = prepare(slices, options);
   const std::uint32_t t = g0.index(goal);
   const double turn = std::max(options.rotation_step_cost, 0.0);
 
@@ -172,7 +151,108 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   run_.m_count = m_count;
   run_.use_ring = use_ring;
   run_.active = true;
+  run_.tree = tree;
+  std::fill_n(end_extra_.begin(), m_count, 0.0);  // the goal cell at any heading
   return false;
+}
+
+void HeadingSearch::begin_backward(std::span<const PassGrid* const> slices, CellPose robot, Cell goal,
+                                   const HeadingOptions& options, const CostModel& costs,
+                                   const CostField* goal_field, const SliceBits* turn_room) {
+  path_.clear();
+  used_ = 0;
+  run_ = Run{};
+  shut_in_ = false;
+  kept_ = false;
+  const int k_count = static_cast<int>(slices.size());
+  const int m_count = prepare(slices, options);
+  pages_ = std::min(pages_, kTreeStateBudget >> page_shift_);  // the tree's share of the pool
+  const PassGrid& g0 = *slices[0];
+  robot.slice = ((robot.slice % k_count) + k_count) % k_count;
+  const double turn = std::max(options.rotation_step_cost, 0.0);
+  const double max_edge =
+      std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn * std::max(k_count - 1, 1));
+  const Cell rc{robot.x, robot.y};
+  run_.goal = rc;
+  run_.heuristic = goal_field;
+  robot_h_ = goal_field ? goal_field->cost_at(g0.index(rc)) : 0.0;
+  for (int j = 0; j < m_count; ++j) {  // the ring distance from the robot's slice, in turn steps
+    const int d = std::abs(move_slice_[static_cast<std::size_t>(j)] - robot.slice);
+    slot_turn_[static_cast<std::size_t>(j)] = std::min(d, k_count - d) * turn;
+  }
+  const double h0 = toward_robot(goal.x + 1, goal.y + 1, g0.index(goal));
+  open_.clear();
+  run_.use_ring = !options.heap && h0 != CostField::kInfinity && ring_.reset(kBucketWidth, max_edge, h0);
+  run_.slices = slices;
+  run_.start = CellPose{goal.x, goal.y, 0};  // the seeds: every move slot at the goal
+  run_.goal = rc;                           // the end: the robot's cell
+  run_.options = options;
+  run_.costs = costs;
+  run_.heuristic = goal_field;
+  run_.turn_room = turn_room;
+  run_.m_count = m_count;
+  run_.active = m_count > 0 && h0 != CostField::kInfinity;
+  run_.backward = true;
+  run_.next_enclosure = ~std::uint32_t{0};  // the shut-in proof floods from a robot, not a goal
+  goal_cell_ = g0.index(goal);
+  // The end cell's extra cost per slot: the robot's turn from its slice in the body's room.
+  const LeanGraph lg = graph(slices, g0.index(rc), robot.slice, g0.index(rc));
+  start_turns(lg, turn, end_extra_.data());
+  kept_ = !run_.active;  // nothing to search: an empty tree, exhausted
+  bound_ = CostField::kInfinity;
+  settle_ = CostField::kInfinity;
+}
+
+int HeadingSearch::prepare(std::span<const PassGrid* const> slices, const HeadingOptions& options) {
+  const int k_count = static_cast<int>(slices.size());
+  const PassGrid& g0 = *slices[0];
+  reserve(g0.width, g0.height, k_count, budget_ == 0 ? kDefaultStateBudget : budget_);
+  if (++gen_ == 0) {
+    for (TileEntry& e : tiles_) e.stamp = 0;
+    gen_ = 1;
+  }
+  std::uint8_t* allowed = allowed_.data();
+  const std::uint8_t** cls_of = cls_of_.data();
+  int* move_slice = move_slice_.data();
+  int* slot_of = slot_of_.data();
+  int m_count = 0;  // move slots
+  for (int k = 0; k < k_count; ++k) {
+    allowed[k] = allowed_moves(k, k_count, options.motion);
+    cls_of[k] = slices[static_cast<std::size_t>(k)]->cls.data();
+    slot_of[k] = -1;
+    if (allowed[k] != 0) {
+      slot_of[k] = m_count;
+      move_slice[m_count++] = k;
+    }
+  }
+  page_shift_ = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
+  pages_ = budget_ >> page_shift_;
+  return m_count;
+}
+
+LeanGraph HeadingSearch::graph(std::span<const PassGrid* const> slices, std::uint32_t start, int start_slice,
+                               std::uint32_t end) const {
+  const PassGrid& g0 = *slices[0];
+  const int k_count = static_cast<int>(slices.size());
+  const SliceBits* tr = run_.turn_room;
+  const bool own_turns = tr != nullptr && tr->slices == k_count;
+  return LeanGraph{cls_of_.data(), k_count, g0.stride, g0.height + 2, move_slice_.data(), run_.m_count,
+                   slot_of_.data(), allowed_.data(), own_turns ? tr->bits.data() : nullptr,
+                   own_turns ? tr->words : 1, start, start_slice, end};
+}
+
+void HeadingSearch::start_turns(const LeanGraph& lg, double turn, double* cost) {
+  for (int j = 0; j < lg.slots; ++j) cost[j] = CostField::kInfinity;
+  const int s0 = lg.start_slice;
+  if (lg.slot_of[s0] >= 0) cost[lg.slot_of[s0]] = 0.0;
+  // Up and down the ring from the robot's slice, while the body's own room lets it turn.
+  for (int dir = -1; dir <= 1; dir += 2)
+    for (int n = 1; n < lg.slices; ++n) {
+      if (!arc_free(lg, false, lg.start, s0, n, dir)) break;
+      const int j = ((s0 + dir * n) % lg.slices + lg.slices) % lg.slices;
+      const int slot = lg.slot_of[j];
+      if (slot >= 0) cost[slot] = std::min(cost[slot], n * turn);
+    }
 }
 
 bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
@@ -202,7 +282,9 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   const int shift = page_shift_;
   const std::uint32_t local_mask = (std::uint32_t{1} << shift) - 1;
   const std::uint32_t t = g0.index(goal);
-  auto h_of = [&](int x, int y, std::uint32_t cell) { return heuristic_at(heuristic, goal, x, y, cell); };
+  auto h_of = [&](int x, int y, std::uint32_t cell) {
+    return run_.backward ? toward_robot(x, y, cell) : heuristic_at(heuristic, goal, x, y, cell);
+  };
   const double turn = std::max(options.rotation_step_cost, 0.0);
   double* g = g_.get();
   std::uint8_t* meta = meta_.get();
@@ -229,15 +311,29 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   std::uint32_t charged = 0;
   double best = run_.best;
   std::uint32_t reached = run_.reached;
+  std::uint32_t reached_tree = run_.reached_tree;
   bool limit = run_.limit;
+
+  const bool backward = run_.backward;
+  HeadingSearch* const tree = run_.tree;
+  const double* end_extra = end_extra_.data();
+  // The heuristic of a state: the cell's (`hc`), raised by the kept tree's bound when there is
+  // one; `settled` gets the tree state when the bound is its exact value.
+  const double* slot_turn = slot_turn_.data();
+  auto h_state = [&](int x, int y, std::uint32_t cell, int slot, double hc, std::uint32_t& settled) {
+    settled = kNoState;
+    if (backward) return hc + slot_turn[slot];  // toward_robot() with the slot's part
+    if (tree == nullptr) return hc;
+    return std::max(hc, tree->tree_bound(x, y, slot, cell, settled));
+  };
 
   auto relax = [&](int x, int y, int slot, double ng, std::uint8_t how) {
     const std::uint32_t cell = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
     TileEntry& te = tile_of(x, y);
-    double h = -1.0;
+    double hc = -1.0;
     if (te.stamp != gen_) {
-      h = h_of(x, y, cell);
-      if (h == CostField::kInfinity) return;  // the relaxation cannot reach the goal from here
+      hc = h_of(x, y, cell);
+      if (hc == CostField::kInfinity) return;  // the relaxation cannot reach the end from here
       if (used_ == pages_) {
         limit = true;  // the pool is spent: the search cannot finish exactly
         return;
@@ -248,18 +344,24 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       origin[te.page] = PageOrigin{x & ~tmask, y & ~tmask};
       std::fill_n(meta + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
                   std::uint8_t{0});
+      if (backward)  // tree_valid()'s memo: no tag yet
+        std::fill_n(memo_.get() + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
+                    std::uint16_t{0});
     }
     const std::uint32_t s = id_in(te.page, x, y, slot);
     std::uint8_t& mt_s = meta[s];
-    if (!(mt_s & kSeen)) {
-      if (h < 0.0) h = h_of(x, y, cell);
-      if (h == CostField::kInfinity) return;
+    const bool seen = (mt_s & kSeen) != 0;
+    if (seen && !(ng < g[s] - 1e-9 && (use_ring || !(mt_s & kClosed)))) return;
+    if (hc < 0.0) hc = h_of(x, y, cell);
+    if (hc == CostField::kInfinity) return;
+    std::uint32_t settled = kNoState;
+    const double h = h_state(x, y, cell, slot, hc, settled);
+    if (!seen) {
       g[s] = ng;
       mt_s = static_cast<std::uint8_t>(kSeen | how);
       if (use_ring) ring_.push(s, ng + h);
       else open_.push(s, ng + h, static_cast<float>(h));
-    } else if (ng < g[s] - 1e-9 && (use_ring || !(mt_s & kClosed))) {
-      h = h_of(x, y, cell);
+    } else {
       if (mt_s & kClosed) {
         ring_.push(s, ng + h);  // reopened (ring only): its first expansion came a little early
       } else if (use_ring) {
@@ -269,12 +371,17 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       }
       g[s] = ng;
       mt_s = static_cast<std::uint8_t>(kSeen | how);
-    } else {
-      return;
     }
-    if (cell == t && ng < best) {
-      best = ng;
+    if (cell == t && ng + end_extra[slot] < best) {
+      best = ng + end_extra[slot];
       reached = s;
+      reached_tree = kNoState;
+    }
+    // A state of the kept tree whose path still holds: the plan may end here.
+    if (settled != kNoState && ng + h < best && tree->tree_valid(settled)) {
+      best = ng + h;
+      reached = s;
+      reached_tree = settled;
     }
   };
 
@@ -284,20 +391,30 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
                      start_index, s0, t};
   if (!run_.seeded) {
     run_.seeded = true;
-    if (slot_of[s0] >= 0) {
-      relax(sx, sy, slot_of[s0], 0.0, kStartState);
+    if (tree != nullptr) tree->new_epoch();
+    if (backward) {
+      // Every move slot free at the goal, at cost 0.
+      for (int j = 0; j < m_count; ++j)
+        if (cls_of[move_slice[j]][start_index] != kBlocked) relax(sx, sy, j, 0.0, kStartState);
     } else {
-      // A pass-through start slice: seed the nearest move slices either way (at the start cell
-      // the body's own room is enough to turn).
-      int n_up = 0, n_down = 0;
-      const int up = next_move_slice(lg, s0, +1, n_up);
-      const int down = next_move_slice(lg, s0, -1, n_down);
-      if (arc_free(lg, false, start_index, s0, n_up, +1))
-        relax(sx, sy, slot_of[up], n_up * turn, kSeedUp);
-      if (arc_free(lg, false, start_index, s0, n_down, -1))
-        relax(sx, sy, slot_of[down], n_down * turn, kSeedDown);
+      // The robot's own slot, and every move slot it can turn to where it stands before it
+      // moves (the body's own room: it may have stopped close to something, and must be able
+      // to turn away), the nearest way round.
+      double* seed = seed_cost_.data();
+      start_turns(lg, turn, seed);
+      for (int j = 0; j < m_count; ++j) {
+        if (seed[j] == CostField::kInfinity) continue;
+        if (move_slice[j] == s0) {
+          relax(sx, sy, j, 0.0, kStartState);
+          continue;
+        }
+        const int up = (move_slice[j] - s0 + k_count) % k_count;  // slice steps turning up
+        const bool via_up = up * turn == seed[j] && arc_free(lg, false, start_index, s0, up, +1);
+        relax(sx, sy, j, seed[j], via_up ? kSeedUp : kSeedDown);
+      }
     }
   }
+  double expanding = 0.0;  // key of the state being expanded (the tree's settle level if the pool runs out)
   for (std::uint32_t pops = 0; !limit; ++pops) {
     if (pops >= max_pops || charged >= max_pops - pops) {
       // The step's budget is spent: the search goes on at the next resume().
@@ -305,15 +422,23 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       run_.partial = r;
       run_.best = best;
       run_.reached = reached;
+      run_.reached_tree = reached_tree;
       run_.limit = limit;
       return false;
     }
+    // A forward search ends when no queued key is below the best end; the kept tree's when every
+    // queued key exceeds it (by twice settle_slack(): keys equal to the robot's cost but for
+    // rounding are settled too), so that its ties are settled.
+    const double last = backward ? best + tree_margin(best) + 2.0 * settle_slack(best) : best;  // keys up to this are expanded
+    if (backward && best != CostField::kInfinity && !run_.proven &&
+        (use_ring ? ring_.empty() || ring_.lower() >= best : open_.empty() || open_.top().key >= best))
+      run_.proven = true;  // the robot's cost is optimal, its tree path exact
     std::uint32_t s;
     if (use_ring) {
-      if (ring_.empty() || ring_.lower() >= best) break;
+      if (ring_.empty() || (backward ? ring_.lower() > last : ring_.lower() >= best)) break;
       s = ring_.pop();
     } else {
-      if (open_.empty() || open_.top().key >= best) break;
+      if (open_.empty() || (backward ? open_.top().key > last : open_.top().key >= best)) break;
       s = open_.pop().node;
     }
     meta[s] = static_cast<std::uint8_t>(meta[s] | kClosed);
@@ -325,7 +450,12 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     const std::uint32_t u = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
     const int k = move_slice[slot];
     const double gu = g[s];
-    if (u == t || gu + h_of(x, y, u) >= best) continue;
+    {
+      std::uint32_t settled = kNoState;
+      const double f = gu + h_state(x, y, u, slot, h_of(x, y, u), settled);
+      if (backward ? f > last : (u == t || f >= best)) continue;
+      expanding = f;
+    }
     ++r.expanded;
     run_.min_x = std::min(run_.min_x, x);
     run_.max_x = std::max(run_.max_x, x);
@@ -362,10 +492,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       relax(x + kMoveDx[m], y + kMoveDy[m], slot, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
     }
     if (m_count > 1) {
-      // The current slice is free at u (tight); turning may ask for more room, except where
-      // the robot already stands: there the body's own room is enough (it may have stopped
-      // close to something, and must be able to turn away).
-      const bool grown = own_turns && u != start_index;
+      // The current slice is free at u (tight); turning may ask for more room.
+      const bool grown = own_turns;  // the start's own turns were seeded
       const int up = (slot + 1) % m_count;
       const int down = (slot + m_count - 1) % m_count;
       const int n_up = (move_slice[up] - k + k_count) % k_count;
@@ -376,6 +504,22 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   }
   run_.active = false;
   resident_pages_ = std::max(resident_pages_, used_);
+  if (backward) {
+    // Every key up to the settle level is final: the margin past the robot's cost, or, if the
+    // pool ran out after the robot was reached, just below the key being expanded then (every
+    // state below it was expanded whole). Out of pool before the robot: no tree.
+    const bool reached_robot = best != CostField::kInfinity;
+    kept_ = !limit || run_.proven;
+    bound_ = best;
+    settle_ = limit ? std::min(best + tree_margin(best), expanding - 2.0 * settle_slack(expanding))
+                    : best + tree_margin(best);
+    run_.partial = r;  // expanded_so_far(): the whole tree
+    if (kept_) settle(reached);
+    r.status = !kept_ ? PlanStatus::SearchLimit : reached_robot ? PlanStatus::Found : PlanStatus::Unreachable;
+    r.cost = best;
+    out = r;
+    return true;
+  }
   if (limit) {
     r.status = PlanStatus::SearchLimit;
     out = r;
@@ -386,49 +530,18 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     out = r;  // Unreachable
     return true;
   }
-
-  // Walk back from the goal state, listing every slice a turn passes.
-  int orth = 0;
-  int diag = 0;
-  std::uint32_t s = reached;
-  r.cost = g[s];
-  for (;;) {
-    const std::uint32_t local = s & local_mask;
-    const PageOrigin& o = origin[s >> shift];
-    const int slot = static_cast<int>(local >> (2 * kTileShift));
-    int x = o.x + static_cast<int>(local & static_cast<std::uint32_t>(tmask));
-    int y = o.y + static_cast<int>((local >> kTileShift) & static_cast<std::uint32_t>(tmask));
-    const int k = move_slice[slot];
-    path_.push_back({x - 1, y - 1, k});
-    const int p = meta[s] & kParentMask;
-    if (p == kStartState) break;
-    int from_slot = slot;
-    int dir = 0;  // slice step walking back: -1 (we turned up), +1 (we turned down)
-    int stop = -1;
-    if (p < 8) {
-      (p < 4 ? orth : diag) += 1;
-      x -= kMoveDx[p];
-      y -= kMoveDy[p];
-    } else if (p == kTurnedUp || p == kSeedUp) {
-      dir = -1;
-      from_slot = (slot + m_count - 1) % m_count;
-      stop = p == kSeedUp ? s0 : move_slice[from_slot];
-    } else {
-      dir = +1;
-      from_slot = (slot + 1) % m_count;
-      stop = p == kSeedDown ? s0 : move_slice[from_slot];
-    }
-    if (dir != 0) {
-      for (int j = (k + dir + k_count) % k_count; j != stop; j = (j + dir + k_count) % k_count)
-        path_.push_back({x - 1, y - 1, j});
-      if (p == kSeedUp || p == kSeedDown) {
-        path_.push_back({x - 1, y - 1, s0});
-        break;
-      }
-    }
-    s = id_in(tile_of(x, y).page, x, y, from_slot);
-  }
+  r.cost = best;
+  walk_back(reached, path_);
   std::reverse(path_.begin(), path_.end());
+  if (reached_tree != kNoState) {
+    const int p = meta[reached] & kParentMask;  // the move into the end state, if it was one
+    tree->append_tree_path(reached_tree, p < 8 ? p : -1, path_);
+  }
+  int orth = 0, diag = 0;
+  for (std::size_t i = 1; i < path_.size(); ++i) {
+    const int dx = path_[i].x - path_[i - 1].x, dy = path_[i].y - path_[i - 1].y;
+    if (dx != 0 || dy != 0) ++(dx != 0 && dy != 0 ? diag : orth);
+  }
   r.status = PlanStatus::Found;
   r.length = static_cast<double>(orth) + kSqrt2 * static_cast<double>(diag);
   out = r;

@@ -14,6 +14,7 @@
 #include "modules/planner/lib/geometry.hpp"
 #include "modules/planner/lib/bucket_ring.hpp"
 #include "modules/planner/lib/indexed_heap.hpp"
+#include "modules/planner/lib/lean_graph.hpp"
 #include "modules/planner/lib/pass_grid.hpp"
 #include "modules/planner/lib/plan_result.hpp"
 #include "modules/planner/lib/slice_bits.hpp"
@@ -61,6 +62,9 @@ class HeadingSearch {
   // heap; resident only where a search writes). The seed 000 lab run's largest search took
   // 108 k (211 pages of 512); see docs/PLANNER.md.
   static constexpr std::size_t kDefaultStateBudget = std::size_t{1} << 18;
+  // The kept tree's states at most (whole pages of its pool), so that it costs a bounded share
+  // of memory (docs/PLANNER.md, "The kept tree"): 131,072 (2.4 MB at 19 bytes a state).
+  static constexpr std::size_t kTreeStateBudget = std::size_t{1} << 17;
   // Expansions after which a search whose expanded cells still fit in EnclosureTest's window
   // asks whether the robot is shut in there (a search that would end unreachable after
   // exhausting a small component ends now; docs/PLANNER.md, "Shut in"); asked again after
@@ -77,8 +81,8 @@ class HeadingSearch {
   // Why: the entry point; `slices` are K grids of one size; the path is then in path().
   // `turn_room` (null, or K slices of bits over the same grid): where turning in place needs
   // more room than translating (a body grown by a clearance), a turn k -> k±1 at a cell needs
-  // the cell's bits k and k±1 clear — except at the start cell, where the robot already stands
-  // and the body's own room is enough.
+  // the cell's bits k and k±1 clear — except for the turns the robot makes where it stands,
+  // before its first move: there the body's own room is enough.
   PlanResult find(std::span<const PassGrid* const> slices, CellPose start, Cell goal,
                   const HeadingOptions& options, const CostModel& costs = {},
                   const CostField* heuristic = nullptr, const SliceBits* turn_room = nullptr);
@@ -89,12 +93,54 @@ class HeadingSearch {
   // then pops at most `max_pops` states and returns true once the search has ended (`out` and
   // path() as find() gives them). Between steps the slices, the heuristic and the turn room
   // must hold still (the caller defers its map syncs); find() = begin() + one unbounded resume().
+  // `tree` (null, or a search whose backward tree is kept(), on the same slices and options):
+  // its values bound the cost to the goal from below, and a state whose tree path still holds is
+  // an end: the plan is the path to it and its tree path on (docs/PLANNER.md, "The kept tree").
   bool begin(std::span<const PassGrid* const> slices, CellPose start, Cell goal, const HeadingOptions& options,
-             const CostModel& costs, const CostField* heuristic, const SliceBits* turn_room, PlanResult& out);
+             const CostModel& costs, const CostField* heuristic, const SliceBits* turn_room, PlanResult& out,
+             HeadingSearch* tree = nullptr);
+  // Why: the kept tree: a search from the goal's states (every move slot free there, cost 0)
+  // towards `robot`, with the grown body's turn rule everywhere; the robot's own turns before it
+  // moves (the body's room) end it. Its heuristic is consistent and admissible for the cost to
+  // the robot: the larger of the octile distance and goal_field(robot) - goal_field(cell) (the
+  // relaxation's cost field to the goal, by the triangle inequality; `goal_field` must stay as it
+  // is while the tree is kept). resume() runs it; it ends when every queued key exceeds the
+  // robot's cost, so that every state whose key is at most that cost holds its exact cost to the
+  // goal. Found or Unreachable (exhausted) keep the tree; SearchLimit does not. The slices and
+  // the turn room must stay alive while it is kept; the map may then only raise costs.
+  void begin_backward(std::span<const PassGrid* const> slices, CellPose robot, Cell goal, const HeadingOptions& options,
+                      const CostModel& costs, const CostField* goal_field, const SliceBits* turn_room);
+  bool kept() const { return kept_; }
+  // Why: the kept tree's bound: the robot's cost when it was made (infinity: the goal's states
+  // were exhausted without reaching the robot).
+  double kept_bound() const { return bound_; }
+  void forget() { kept_ = false; }
+  // The kept tree as a forward search reads it (heading_tree.cpp). A state's key is its cost
+  // to the goal plus the robot field at its cell; a state whose key is at most the bound
+  // (settled) holds its exact cost; any other state's cost is at least the bound minus the field.
+  static constexpr std::uint32_t kNoState = 0xFFFFFFFFu;
+  // Why: a lower bound on the cost to the goal from stored cell (x, y) (index `cell`) in move
+  // slot `slot`; `settled` gets the tree state when its value is exact, else kNoState.
+  double tree_bound(int x, int y, int slot, std::uint32_t cell, std::uint32_t& settled) const;
+  // Why: whether a settled state's tree path still exists at the same cost in the slices as they
+  // are now (costs only rose since the tree was made: then its value is still exact). Memoised
+  // per epoch (new_epoch(): the slices changed).
+  bool tree_valid(std::uint32_t state);
+  void new_epoch();
+  // Why: a forward search in steps drops its tree (the tree's search ran out of pool).
+  void drop_tree() { run_.tree = nullptr; }
   bool resume(std::uint32_t max_pops, PlanResult& out);
   bool pending() const { return run_.active; }
+  // Why: a kept tree's search is under way (begin_backward(), not yet ended).
+  bool growing() const { return run_.active && run_.backward; }
+  // Why: a caller sharing one budget between searches: states expanded by a search in steps
+  // before its current step.
+  std::uint32_t expanded_so_far() const { return run_.partial.expanded; }
   // Why: drop a search in steps (its grids are about to change).
-  void cancel() { run_.active = false; }
+  void cancel() {
+    if (run_.active && run_.backward) kept_ = false;
+    run_.active = false;
+  }
 
   // Start first; consecutive entries differ by one grid move or one slice step.
   const std::vector<CellPose>& path() const { return path_; }
@@ -106,6 +152,49 @@ class HeadingSearch {
   std::size_t state_budget() const { return budget_; }
 
  private:
+  // meta_ bits of a pool state, and its parent codes (0..7: the grid move that led here).
+  static constexpr std::uint8_t kParentMask = 0x0F;  // how the state was reached
+  static constexpr std::uint8_t kSeen = 0x10;        // reached in this search (g_ is valid)
+  static constexpr std::uint8_t kClosed = 0x20;      // expanded
+  static constexpr std::uint8_t kSettled = 0x40;     // a kept tree's state whose cost is exact
+  static constexpr std::uint8_t kTurnedUp = 8;       // turned up from the move slot below
+  static constexpr std::uint8_t kTurnedDown = 9;     // turned down from the move slot above
+  static constexpr std::uint8_t kSeedUp = 10;        // turned up from the start's slice, where it stands
+  static constexpr std::uint8_t kSeedDown = 11;      // turned down from the start's slice, where it stands
+  static constexpr std::uint8_t kStartState = 15;    // a seed: the start (the goal, backward)
+
+  // Why: keys this close above the settle level count as settled too (rounding), cells.
+  static double settle_slack(double bound) { return 1e-9 * (1.0 + bound); }
+  // Why: how far past the robot's cost the tree settles keys (cells), pool permitting: states a
+  // little off the robot's optimal paths hold exact costs too, so that a replan's detour round
+  // new obstacles meets them soon. 5 % of the cost, and 5 cells (docs/PLANNER.md: measured).
+  static double tree_margin(double cost) { return cost == CostField::kInfinity ? 0.0 : 0.05 * cost + 5.0; }
+
+  // Why: at the end of a kept tree's search: mark the states whose cost is exact (kSettled):
+  // those whose key is below the robot's cost (every queued key is at least that), and the
+  // states of the robot's own tree path from `reached` (an optimal path's).
+  void settle(std::uint32_t reached);
+  // Why: the kept tree's heuristic at stored cell (x, y) of index `cell` (begin_backward()),
+  // consistent: a move changes only the cell's part, a turn of n slices only the slot's, by at
+  // most n turn steps.
+  // The cell's part (the octile distance, and the goal field's drop from the robot's cell) plus
+  // the slot's (the turning from the robot's slice to the slot's, which no path avoids).
+  double toward_robot(int x, int y, std::uint32_t cell) const;
+  double toward_robot(int x, int y, std::uint32_t cell, int slot) const {
+    return toward_robot(x, y, cell) + slot_turn_[static_cast<std::size_t>(slot)];
+  }
+  // Why: append an optimal path on from a valid settled state (the state itself excluded, goal
+  // last), straight on where that costs no more; `last_move` is the move that led to the state
+  // (-1: none).
+  void append_tree_path(std::uint32_t state, int last_move, std::vector<CellPose>& out);
+  // Why: the tree's state at stored cell (x, y) in `slot`, or kNoState if it never reached it.
+  std::uint32_t state_at(int x, int y, int slot) const;
+  // Why: one state's place: stored cell and move slot.
+  void place_of(std::uint32_t s, int& x, int& y, int& slot) const;
+  // Why: walk parents back from pool state `s` to a seed, listing every slice a turn passes
+  // (s first); counts grid moves.
+  void walk_back(std::uint32_t s, std::vector<CellPose>& out) const;
+
   // A tile's page in the current search.
   struct TileEntry {
     std::uint32_t stamp = 0;  // generation that gave the tile its page (else: none)
@@ -138,7 +227,20 @@ class HeadingSearch {
     int enclosure_tries = 0;                  // shut-in tests run
     int min_x = 1 << 30, max_x = -1;          // stored cells: expanded cells' columns so far
     int min_y = 1 << 30, max_y = -1;          // stored cells: their rows
+    bool backward = false;                    // begin_backward(): a kept tree from the goal
+    HeadingSearch* tree = nullptr;            // forward: the kept tree it ends on, or null
+    std::uint32_t reached_tree = kNoState;    // forward: the tree state the best end is on, or none
+    bool proven = false;                      // backward: every queued key reached the robot's cost
   };
+  // Why: per-search tables (allowed moves, slots), the generation and the page size; returns
+  // the move slots.
+  int prepare(std::span<const PassGrid* const> slices, const HeadingOptions& options);
+  // Why: the lean graph of the current tables, started at `start` in `start_slice`.
+  LeanGraph graph(std::span<const PassGrid* const> slices, std::uint32_t start, int start_slice,
+                  std::uint32_t end) const;
+  // Why: the robot's turns where it stands, before it moves (the body's own room, the nearest
+  // way round): per move slot the cost of reaching it from lg.start_slice, or infinity.
+  static void start_turns(const LeanGraph& lg, double turn, double* cost);
   Run run_;
   bool shut_in_ = false;  // the last search ended by EnclosureTest
   static constexpr std::uint32_t kFirstTouchPops = 256;  // pops a never-written page counts for
@@ -162,6 +264,19 @@ class HeadingSearch {
   std::vector<int> slot_of_;                 // per slice: its move slot, or -1 (this search)
   BucketRing ring_;            // open list when edge costs allow (else open_)
   EnclosureTest enclosure_;    // the shut-in proof
+  std::vector<double> end_extra_;  // per move slot: cost added on reaching the end cell (backward:
+                                   // the robot's turn there from its slice; forward: 0)
+  std::vector<double> seed_cost_;  // per move slot: the start's turn to it in the body's room, or inf
+  // The kept tree (backward searches; heading_tree.cpp).
+  bool kept_ = false;              // the last search was a backward one that ended keeping its tree
+  double bound_ = 0.0;             // cells: the robot's cost when the tree was made (inf: exhausted)
+  double settle_ = 0.0;            // cells: keys at most this are settled (inf: exhausted)
+  double robot_h_ = 0.0;           // cells: the goal field at the robot's cell (toward_robot())
+  std::vector<double> slot_turn_;  // per move slot: cells, the least turning from the robot's slice
+  std::uint32_t goal_cell_ = 0;    // stored index of the goal cell (the tree's seeds)
+  std::unique_ptr<std::uint16_t[]> memo_;  // per pool state: epoch << 1 | valid (tree_valid())
+  std::uint16_t epoch_ = 0;        // tree_valid()'s memo generation
+  std::vector<std::uint32_t> chain_;  // tree_valid()'s walk
 };
 
 // Why: which of the 8 moves a slice allows under a motion model (bit m set = move m allowed).

@@ -48,8 +48,10 @@ void Planner::set_map(const OccupancyMap& map) {
   cancel_steps();
   field_ready_ = false;
   // Each footprint reserves only the search it uses (the rectangle never runs the 2D one).
+  tree_.forget();
   if (cfg_.footprint == FootprintKind::Rectangle) {
     heading_search_.reserve(w, h, full_turn_slices());
+    tree_.reserve(w, h, full_turn_slices());  // plans without the tree run here too
   } else {
     grid_search_.reserve(w, h);
     cells_.reserve(map_.cell_count() + 1);
@@ -72,10 +74,15 @@ void Planner::sync() {
   // cheaper (new obstacles; free <-> unknown when both cost the same) the field as it was is
   // still admissible and consistent, so its repair waits (docs/PLANNER.md, "Shut in"); a sync
   // that makes a cell cheaper while a repair waits drops the field (made again at the next plan).
+  // The kept tree likewise holds exact costs only while costs have not fallen.
   bool cheaper = false;
-  for (const std::uint32_t c : rect && field_ready_ ? changed : std::span<const std::uint32_t>{}) {
+  for (const std::uint32_t c : rect && (field_ready_ || tree_.kept() || tree_.growing()) ? changed : std::span<const std::uint32_t>{}) {
     const CellChange kind = cspace_.kind(c);
     cheaper = cheaper || kind == kLowered || (kind == kRelabelled && costs_.unknown_cost != 1.0);
+  }
+  if (cheaper) {  // a tree kept or growing no longer bounds the costs from below
+    if (tree_.growing()) tree_.cancel();
+    tree_.forget();
   }
   const bool repair = cheaper && !field_deferred_;  // the rectangle's field repaired now
   if (rect) relaxation_.update(cspace_, map_, changed, repair ? &field_changes_ : nullptr);
@@ -117,6 +124,7 @@ void Planner::shift_map(int dx, int dy) {
   cspace_.reset(map_);  // same size: the table and marks are refilled, not reallocated
   cancel_steps();
   field_ready_ = false;
+  tree_.forget();
   waypoints_.clear();
   rebuild_next_ = 0;
 }
@@ -168,6 +176,7 @@ const PassGrid* Planner::field_grid(Cell g) const {
 void Planner::cancel_steps() {
   field_.cancel();
   heading_search_.cancel();
+  tree_.cancel();  // a tree cut short is not kept
 }
 
 void Planner::prepare(Point2 goal) {
@@ -178,7 +187,7 @@ void Planner::prepare(Point2 goal) {
 }
 
 bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
-  heading_search_.cancel();  // a field is asked for: any search under way is moot
+  if (active_->pending() && !active_->growing()) active_->cancel();  // a field is asked for: any search under way is moot
   const Cell g = map_.cell_of(goal);
   if (field_.pending() && !(field_.goal() == g)) field_.cancel();  // a new goal: start again
   if (!field_.pending()) {
@@ -196,20 +205,17 @@ bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {
 bool Planner::plan_step(const Pose2& start, Point2 goal, std::uint32_t max_pops, PlanResult& out) {
   const Cell s = map_.cell_of({start.x, start.y});
   const Cell g = map_.cell_of(goal);
-  if (heading_search_.pending()) {
+  if (active_->pending() && !active_->growing()) {
     const CellPose sp{s.x, s.y, slice_of_heading(start.heading, full_turn_slices())};
-    if (sp == step_start_ && g == step_goal_) {
-      if (!heading_search_.resume(max_pops, out)) return false;
-      if (out.found()) fill_waypoints_3d(heading_search_.path());
-      return true;
-    }
-    heading_search_.cancel();  // another start or goal: start again
+    if (sp == step_start_ && g == step_goal_) return continue_plan(max_pops, out);
+    active_->cancel();  // another start or goal: start again
   }
   if (cfg_.footprint != FootprintKind::Rectangle) {
     out = plan(start, goal);
     return true;
   }
   field_.cancel();  // a field still in steps is made at once below, after the sync
+  if (tree_.growing()) tree_.cancel();  // a tree still growing is dropped: the plan does not wait for it
   sync();
   waypoints_.clear();
   const int k = slice_of_heading(start.heading, full_turn_slices());
@@ -221,12 +227,48 @@ bool Planner::plan_step(const Pose2& start, Point2 goal, std::uint32_t max_pops,
   }
   step_start_ = CellPose{s.x, s.y, k};
   step_goal_ = g;
-  if (!heading_search_.begin(slice_grids_, step_start_, g, heading_options(), costs_, h,
-                             turn_layers_.empty() ? nullptr : &turn_room_, out) &&
-      !heading_search_.resume(max_pops, out))
-    return false;
-  if (out.found()) fill_waypoints_3d(heading_search_.path());
+  // The kept tree serves while the goal is the same; an exhausted one (the robot could not be
+  // reached) only while the robot has not moved either.
+  if (tree_.kept() && (!(tree_goal_ == g) || (tree_.kept_bound() == CostField::kInfinity && !(tree_robot_ == s))))
+    tree_.forget();
+  HeadingSearch* tree = h != nullptr && tree_.kept() ? &tree_ : nullptr;
+  step_tree_ = tree != nullptr;
+  active_ = tree != nullptr ? &heading_search_ : &tree_;
+  if (active_->begin(slice_grids_, step_start_, g, heading_options(), costs_, h,
+                     turn_layers_.empty() ? nullptr : &turn_room_, out, tree))
+    return true;  // known at once: outside, blocked, unreachable by the relaxation, already there
+  if (tree != nullptr && tree_.kept_bound() == CostField::kInfinity) {  // the robot's cell, still shut off
+    active_->cancel();
+    out = PlanResult{};
+    out.status = PlanStatus::Unreachable;
+    return true;
+  }
+  return continue_plan(max_pops, out);
+}
+
+bool Planner::continue_plan(std::uint32_t max_pops, PlanResult& out) {
+  if (!active_->resume(max_pops, out)) return false;
+  if (out.found()) fill_waypoints_3d(active_->path());
+  // A plan made without the tree: the tree for its goal starts growing (grow_tree_step()),
+  // towards where the robot is now.
+  if (!step_tree_ && out.found() && field_ready_ && relaxation_.grid().contains(step_goal_)) {
+    tree_.begin_backward(slice_grids_, step_start_, step_goal_, heading_options(), costs_, &field_,
+                         turn_layers_.empty() ? nullptr : &turn_room_);
+    tree_goal_ = step_goal_;
+    tree_robot_ = Cell{step_start_.x, step_start_.y};
+  }
   return true;
+}
+
+bool Planner::grow_tree_step(std::uint32_t max_pops) {
+  if (!tree_.growing()) return true;
+  PlanResult r;
+  return tree_.resume(max_pops, r);
+}
+
+void Planner::grow_tree() {
+  while (!grow_tree_step(~std::uint32_t{0})) {
+  }
 }
 
 HeadingOptions Planner::heading_options() const {

@@ -106,7 +106,19 @@ class Planner {
   bool plan_step(const Pose2& start, Point2 goal, std::uint32_t max_pops, PlanResult& out);
   // Why: drop a prepare_step() or plan_step() under way (the caller moved on); syncs resume.
   void cancel_steps();
-  bool stepping() const { return field_.pending() || heading_search_.pending(); }
+  bool stepping() const { return field_.pending() || (active_->pending() && !active_->growing()); }
+  // Why: the kept tree (docs/PLANNER.md, "The kept tree") grows after a plan made without it, in
+  // steps of at most `max_pops` states, while the robot drives: true once it is complete (or none
+  // is growing). Syncs go on meanwhile (new obstacles leave a growing tree sound; a cell made
+  // cheaper drops it), and a plan drops a tree still growing. A replan for the same goal after
+  // syncs that made nothing cheaper then searches only where the tree broke.
+  bool grow_tree_step(std::uint32_t max_pops);
+  void grow_tree();  // grow_tree_step() unbounded
+  bool tree_growing() const { return tree_.growing(); }
+  bool tree_kept() const { return tree_.kept(); }
+  // Why: figures: states the tree expanded (so far, while it grows), and pages it took.
+  std::uint32_t tree_states() const { return tree_.expanded_so_far(); }
+  std::size_t tree_pages() const { return tree_.pages_used(); }
 
   const std::vector<Waypoint>& waypoints() const { return waypoints_; }
   // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
@@ -149,7 +161,20 @@ class Planner {
   bool field_ready_ = false;            // field_ matches the current goal and grid
   bool field_deferred_ = false;         // Rectangle: field_ lacks new obstacles (still admissible)
   GridSearch grid_search_;              // one-shot 2D searches
-  HeadingSearch heading_search_;        // (x, y, slice) search
+  // The (x, y, slice) searches from the robot: a plan without the tree runs in tree_ (whose
+  // pages then hold the tree that grows after it: memory is the larger of the two, not their
+  // sum), a plan with the tree in heading_search_ (it reads tree_; it searches only where the
+  // tree broke, a few pages).
+  HeadingSearch heading_search_;        // the search with the kept tree
+  HeadingSearch* active_ = &heading_search_;  // the search of the plan under way (or the last)
+  // The kept tree (Rectangle; docs/PLANNER.md, "The kept tree"): a search from the goal whose
+  // exact costs survive new obstacles and the robot's moves; made again for a new goal or after
+  // a sync that made a cell cheaper.
+  HeadingSearch tree_;                  // the tree
+  Cell tree_goal_{};                    // cells: the goal it was made for
+  Cell tree_robot_{};                   // cells: the robot's cell it was made towards
+  bool step_tree_ = false;              // the plan under way searches with the kept tree
+  bool continue_plan(std::uint32_t max_pops, PlanResult& out);
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
   const OccupancyMap* structure_ = nullptr;  // known structure the window takes as it moves
