@@ -174,6 +174,7 @@ class Planner {
   Cell tree_goal_{};                    // cells: the goal it was made for
   Cell tree_robot_{};                   // cells: the robot's cell it was made towards
   bool step_tree_ = false;              // the plan under way searches with the kept tree
+  // Why: plan_step()'s search, resumed; a plan made without the tree then starts the tree growing.
   bool continue_plan(std::uint32_t max_pops, PlanResult& out);
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
