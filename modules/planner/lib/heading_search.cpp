@@ -483,12 +483,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     const std::uint8_t bits = allowed[k];
     for (int m = 0; m < 8; ++m) {
       if (!(bits & (1u << m))) continue;
-      const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
-      const std::uint8_t cv = cls[v];
-      if (cv == kBlocked) continue;
-      if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
-                     cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
-        continue;
+      if (!mt.passable(cls, u, m)) continue;
+      const std::uint8_t cv = cls[u + static_cast<std::uint32_t>(mt.step[m])];
       relax(x + kMoveDx[m], y + kMoveDy[m], slot, gu + cost[m][cu][cv], static_cast<std::uint8_t>(m));
     }
     if (m_count > 1) {

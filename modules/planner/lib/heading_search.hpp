@@ -127,8 +127,6 @@ class HeadingSearch {
   // per epoch (new_epoch(): the slices changed).
   bool tree_valid(std::uint32_t state);
   void new_epoch();
-  // Why: a forward search in steps drops its tree (the tree's search ran out of pool).
-  void drop_tree() { run_.tree = nullptr; }
   bool resume(std::uint32_t max_pops, PlanResult& out);
   bool pending() const { return run_.active; }
   // Why: a kept tree's search is under way (begin_backward(), not yet ended).
@@ -189,6 +187,18 @@ class HeadingSearch {
   void append_tree_path(std::uint32_t state, int last_move, std::vector<CellPose>& out);
   // Why: the tree's state at stored cell (x, y) in `slot`, or kNoState if it never reached it.
   std::uint32_t state_at(int x, int y, int slot) const;
+  // What tree_valid() and append_tree_path() read of the tree's graph, as the slices are now.
+  struct TreeEdges {
+    int k_count;                                          // slices over the full turn
+    int m_count;                                          // move slots
+    std::uint32_t stride;                                 // stored cells per row
+    MoveTable mt;                                         // move offsets
+    std::array<std::array<std::array<double, 3>, 3>, 8> cost;  // cells: move cost by classes
+    double turn;                                          // cells per slice turned
+    LeanGraph lg;                                         // the turn rule's graph
+    bool grown;                                           // turns need the grown body's room
+  };
+  TreeEdges tree_edges() const;
   // Why: one state's place: stored cell and move slot.
   void place_of(std::uint32_t s, int& x, int& y, int& slot) const;
   // Why: walk parents back from pool state `s` to a seed, listing every slice a turn passes

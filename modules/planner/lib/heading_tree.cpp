@@ -56,24 +56,16 @@ void HeadingSearch::walk_back(std::uint32_t s, std::vector<CellPose>& out) const
         return;
       }
     }
-    const TileEntry& te = tiles_[static_cast<std::size_t>((y >> kTileShift) * tiles_x_ + (x >> kTileShift))];
-    s = (te.page << page_shift_) | (static_cast<std::uint32_t>(from_slot) << (2 * kTileShift)) |
-        (static_cast<std::uint32_t>(y & kTileMask) << kTileShift) | static_cast<std::uint32_t>(x & kTileMask);
+    s = state_at(x, y, from_slot);  // the parent: seen
   }
 }
 
 double HeadingSearch::tree_bound(int x, int y, int slot, std::uint32_t cell, std::uint32_t& settled) const {
   settled = kNoState;
   const double hf = toward_robot(x, y, cell, slot);
-  const TileEntry& te = tiles_[static_cast<std::size_t>((y >> kTileShift) * tiles_x_ + (x >> kTileShift))];
-  if (te.stamp == gen_) {
-    const std::uint32_t s = (te.page << page_shift_) | (static_cast<std::uint32_t>(slot) << (2 * kTileShift)) |
-                            (static_cast<std::uint32_t>(y & kTileMask) << kTileShift) |
-                            static_cast<std::uint32_t>(x & kTileMask);
-    if ((meta_[s] & kSeen) && (meta_[s] & kSettled)) {
-      settled = s;
-      return g_[s];
-    }
+  if (const std::uint32_t s = state_at(x, y, slot); s != kNoState && (meta_[s] & kSettled)) {
+    settled = s;
+    return g_[s];
   }
   // Not settled: its cost to the goal plus the heuristic was at least the bound when the tree was
   // made (else the tree would hold it exactly), and costs have only risen since.
@@ -131,17 +123,18 @@ void HeadingSearch::new_epoch() {
   }
 }
 
+HeadingSearch::TreeEdges HeadingSearch::tree_edges() const {
+  const PassGrid& g0 = *run_.slices[0];
+  const LeanGraph lg = graph(run_.slices, goal_cell_, 0, goal_cell_);
+  return TreeEdges{static_cast<int>(run_.slices.size()), run_.m_count, static_cast<std::uint32_t>(g0.stride),
+                   MoveTable(g0.stride), run_.costs.table(), std::max(run_.options.rotation_step_cost, 0.0),
+                   lg, lg.turn_bits != nullptr};
+}
+
 bool HeadingSearch::tree_valid(std::uint32_t state) {
   const auto tag = static_cast<std::uint16_t>(epoch_ << 1);
-  const int k_count = static_cast<int>(run_.slices.size());
-  const int m_count = run_.m_count;
-  const PassGrid& g0 = *run_.slices[0];
-  const auto stride = static_cast<std::uint32_t>(g0.stride);
-  const MoveTable mt(g0.stride);
-  const auto cost = run_.costs.table();
-  const double turn = std::max(run_.options.rotation_step_cost, 0.0);
-  const LeanGraph lg = graph(run_.slices, goal_cell_, 0, goal_cell_);
-  const bool grown = lg.turn_bits != nullptr;
+  const TreeEdges e = tree_edges();
+  const auto& [k_count, m_count, stride, mt, cost, turn, lg, grown] = e;
   chain_.clear();
   bool ok = true;
   for (std::uint32_t s = state;;) {
@@ -172,9 +165,7 @@ bool HeadingSearch::tree_valid(std::uint32_t state) {
       qx -= kMoveDx[p];
       qy -= kMoveDy[p];
       const std::uint32_t q = u - static_cast<std::uint32_t>(mt.step[p]);
-      if (cls[q] == kBlocked ||
-          (p >= 4 && (cls[q + static_cast<std::uint32_t>(mt.side_a[p])] == kBlocked ||
-                      cls[q + static_cast<std::uint32_t>(mt.side_b[p])] == kBlocked))) {
+      if (cls[q] == kBlocked || !mt.passable(cls, q, p)) {
         ok = false;
         break;
       }
@@ -190,11 +181,8 @@ bool HeadingSearch::tree_valid(std::uint32_t state) {
       }
       c = n * turn;
     }
-    const TileEntry& te = tiles_[static_cast<std::size_t>((qy >> kTileShift) * tiles_x_ + (qx >> kTileShift))];
-    const std::uint32_t qs = (te.page << page_shift_) | (static_cast<std::uint32_t>(q_slot) << (2 * kTileShift)) |
-                             (static_cast<std::uint32_t>(qy & kTileMask) << kTileShift) |
-                             static_cast<std::uint32_t>(qx & kTileMask);
-    if (g_[qs] + c != g_[s]) {  // the edge's cost changed (a cell's class did)
+    const std::uint32_t qs = state_at(qx, qy, q_slot);  // the parent: seen
+    if (qs == kNoState || g_[qs] + c != g_[s]) {  // the edge's cost changed (a cell's class did)
       ok = false;
       break;
     }
@@ -220,15 +208,8 @@ std::uint32_t HeadingSearch::state_at(int x, int y, int slot) const {
 // search from the robot would, rather than in the order the tree happened to settle them. The
 // tree's own parent is always such a neighbour, so the descent never fails.
 void HeadingSearch::append_tree_path(std::uint32_t state, int last_move, std::vector<CellPose>& out) {
-  const int k_count = static_cast<int>(run_.slices.size());
-  const int m_count = run_.m_count;
-  const PassGrid& g0 = *run_.slices[0];
-  const auto stride = static_cast<std::uint32_t>(g0.stride);
-  const MoveTable mt(g0.stride);
-  const auto cost = run_.costs.table();
-  const double turn = std::max(run_.options.rotation_step_cost, 0.0);
-  const LeanGraph lg = graph(run_.slices, goal_cell_, 0, goal_cell_);
-  const bool grown = lg.turn_bits != nullptr;
+  const TreeEdges e = tree_edges();
+  const auto& [k_count, m_count, stride, mt, cost, turn, lg, grown] = e;
   auto settled_valid = [&](int x, int y, int slot) {
     const std::uint32_t q = state_at(x, y, slot);
     if (q == kNoState) return kNoState;
@@ -258,10 +239,7 @@ void HeadingSearch::append_tree_path(std::uint32_t state, int last_move, std::ve
       for (int m = 0; m < 8 && next == kNoState; ++m) {
         if ((pass % 2 == 0) != (m == last_move) || !(allowed_[static_cast<std::size_t>(k)] & (1u << m))) continue;
         const std::uint32_t v = u + static_cast<std::uint32_t>(mt.step[m]);
-        if (cls[v] == kBlocked || (pass < 2 && !roomy(v))) continue;
-        if (m >= 4 && (cls[u + static_cast<std::uint32_t>(mt.side_a[m])] == kBlocked ||
-                       cls[u + static_cast<std::uint32_t>(mt.side_b[m])] == kBlocked))
-          continue;
+        if (!mt.passable(cls, u, m) || (pass < 2 && !roomy(v))) continue;
         const std::uint32_t q = settled_valid(x + kMoveDx[m], y + kMoveDy[m], slot);
         if (on_optimal(q, cost[m][cls[u]][cls[v]])) {
           next = q;

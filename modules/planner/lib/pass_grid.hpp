@@ -72,6 +72,13 @@ struct MoveTable {
       side_b[m] = kMoveDy[m] * stride;
     }
   }
+  // Why: the grid move rule in one place: move m from stored cell u in classes `cls` lands on a
+  // cell that is not blocked, and a diagonal also needs both side cells not blocked.
+  bool passable(const std::uint8_t* cls, std::uint32_t u, int m) const {
+    if (cls[u + static_cast<std::uint32_t>(step[m])] == kBlocked) return false;
+    return m < 4 || (cls[u + static_cast<std::uint32_t>(side_a[m])] != kBlocked &&
+                     cls[u + static_cast<std::uint32_t>(side_b[m])] != kBlocked);
+  }
 };
 
 // Per-class cost multipliers: a move of length L between cells of classes a and b costs
