@@ -302,6 +302,39 @@ TEST(KeptTree, AWallClearedAfterTheTreeGrewTakesTheWayThrough) {
   EXPECT_LT(through.cost, around.cost - 20.0);
 }
 
+// Why: tree_valid()'s memo tags each answer with the replan's epoch, in 7 bits: when the tags
+// wrap, answers from 127 replans ago must not pass for current ones. The robot's state is found
+// valid at one epoch, a bar then breaks its path while m replans run from beyond the bar (their
+// states' paths hold), and the robot comes back, for m round the wrap: its plan still goes round
+// the bar (fails when new_epoch() does not clear the memo as the tags wrap).
+TEST(KeptTree, TheValidityMemoHoldsAcrossItsTagsWrapping) {
+  OccupancyMap base = test::free_map(160, 60);
+  for (int y = 0; y < 40; ++y) base.mark_occupied({80, y});
+  base.clear_changes();
+  const Pose2 a{0.5, 0.5, 0.0};
+  const Point2 goal{7.5, 0.5};
+  for (const int m : {125, 126, 127, 128, 253, 254, 255}) {
+    SCOPED_TRACE(testing::Message() << m << " replans from further on");
+    Planner p(rectangle(0.05));
+    p.set_map(base);
+    ASSERT_TRUE(p.plan(a, goal).found());
+    p.grow_tree();
+    ASSERT_TRUE(p.tree_kept());
+    const PlanResult first = p.plan(a, goal);  // with the tree: the memo says a's path holds
+    ASSERT_TRUE(first.found());
+    const Pose2 b = along(p, 60);               // beyond the bar below
+    ASSERT_GT(p.map().cell_of({b.x, b.y}).x, 45);
+    for (int y = 0; y < 46; ++y)                // a bar across every way from a
+      for (int x = 40; x < 43; ++x) p.map().mark_occupied({x, y});
+    for (int i = 0; i < m; ++i) ASSERT_TRUE(p.plan(b, goal).found());
+    ASSERT_TRUE(p.tree_kept());
+    const PlanResult back = p.plan(a, goal);
+    ASSERT_TRUE(back.found());
+    EXPECT_NEAR(back.cost, plain(p, a, goal).cost, 1e-9);
+    EXPECT_GT(back.cost, first.cost + 1.0);
+  }
+}
+
 // Why: the module plans in steps (a field, the tree, the search, one per activation): the same
 // plans as at once, round after round of new obstacles and moves.
 TEST(KeptTree, InStepsEqualsAtOnce) {

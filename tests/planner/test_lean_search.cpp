@@ -243,13 +243,13 @@ TEST(LeanHeadingSearch, BudgetExhaustedIsAClearStatus) {
   open.set({50, 50}, kBlocked);
   std::vector<const PassGrid*> stack(32, &open);
   HeadingSearch small;
-  small.reserve(100, 100, 32, 4 * 512);  // four pages of 8 x 8 cells x 8 move slots
+  small.reserve(100, 100, 32, 4 * 512);  // 2,048 states
   HeadingOptions opt;
   opt.rotation_step_cost = 0.5;
   const PlanResult r = small.find(stack, CellPose{2, 2, 3}, Cell{97, 90}, opt);
   EXPECT_EQ(r.status, PlanStatus::SearchLimit);
   EXPECT_TRUE(small.path().empty());
-  EXPECT_LE(small.pages_used(), 4u);
+  EXPECT_LE(small.pages_used() * small.page_states(), 4u * 512u);
   EXPECT_EQ(to_string(r.status), "search memory exhausted");
   HeadingSearch big;
   const PlanResult ok = big.find(stack, CellPose{2, 2, 3}, Cell{97, 90}, opt);

@@ -615,8 +615,8 @@ bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   // the search). Also printed: against a plan for a new goal on the map already held (the field
   // and the search alone), which a replan — it folds 100 cells into 65 layers first — cannot
   // approach. docs/PLANNER.md, "The firmware's planner".
-  std::printf("  kept tree (grown while driving) %8.2f ms CPU (median of 5), %u states, %zu pages; not in the full plan\n",
-              median(tree_ms), p.tree_states(), p.tree_pages());
+  std::printf("  kept tree (grown while driving) %8.2f ms CPU (median of 5), %u states, %zu pages of %zu: %s; not in the full plan\n",
+              median(tree_ms), p.tree_states(), p.tree_pages(), p.tree_page_states(), p.tree_kept() ? "kept" : "not kept");
   std::printf("  replan, 100 new cells ahead    %8.2f ms CPU (median of 100; %d found a path, %.0f cells each)"
               "   full plan / replan %.1fx, target >= 10x: %s (new-goal plan / replan %.1fx)\n",
               replan_ms, found, static_cast<double>(placed_total) / static_cast<double>(std::max<std::size_t>(1, replan.size())),

@@ -47,7 +47,9 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   const int sh = height + 2;
   tiles_x_ = (sw + (1 << kTileShift) - 1) >> kTileShift;
   const int tiles_y = (sh + (1 << kTileShift) - 1) >> kTileShift;
-  const auto tiles = static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y);
+  // A tile entry per slot group: at most one per move slot (a power of two of them).
+  const std::size_t groups = std::size_t{1} << std::max(log2_ceil(static_cast<std::size_t>(k)) - kPageSlotShift, 0);
+  const auto tiles = static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y) * groups;
   if (tiles_.size() < tiles) {
     tiles_.assign(tiles, TileEntry{});
     gen_ = 0;
@@ -76,7 +78,7 @@ void HeadingSearch::reserve(int width, int height, int slices, std::size_t state
   if (slot_turn_.size() < kk) slot_turn_.resize(kk, 0.0);
   if (seed_cost_.size() < kk) seed_cost_.resize(kk, 0.0);
   if (chain_.capacity() < budget) {
-    memo_.reset(new std::uint16_t[budget]);  // read only where a tree state was written
+    memo_.reset(new std::uint8_t[budget]);  // read only where a tree state was written
     chain_.reserve(budget);
     epoch_ = 0;
   }
@@ -225,8 +227,11 @@ int HeadingSearch::prepare(std::span<const PassGrid* const> slices, const Headin
       move_slice[m_count++] = k;
     }
   }
-  page_shift_ = 2 * kTileShift + log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
-  pages_ = budget_ >> page_shift_;
+  const int all_slot_bits = log2_ceil(static_cast<std::size_t>(std::max(m_count, 1)));
+  slot_bits_ = std::min(kPageSlotShift, all_slot_bits);
+  group_shift_ = all_slot_bits - slot_bits_;
+  page_shift_ = 2 * kTileShift + slot_bits_;
+  pages_ = std::min(budget_ >> page_shift_, kMaxPages);
   return m_count;
 }
 
@@ -292,12 +297,15 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   PageOrigin* origin = origin_.data();
   const int tiles_x = tiles_x_;
   constexpr int tmask = (1 << kTileShift) - 1;
-  auto tile_of = [&](int x, int y) -> TileEntry& {
-    return tiles[(y >> kTileShift) * tiles_x + (x >> kTileShift)];
+  const int group_shift = group_shift_;
+  const int slot_bits = slot_bits_;
+  const int slot_mask = (1 << slot_bits) - 1;
+  // entry_of() and state_in() with this search's values in registers.
+  auto tile_of = [&](int x, int y, int slot) -> TileEntry& {
+    return tiles[entry_index(tiles_x, group_shift, slot_bits, x, y, slot)];
   };
-  auto id_in = [&](std::uint32_t page, int x, int y, int slot) -> std::uint32_t {
-    return (page << shift) | (static_cast<std::uint32_t>(slot) << (2 * kTileShift)) |
-           (static_cast<std::uint32_t>(y & tmask) << kTileShift) | static_cast<std::uint32_t>(x & tmask);
+  auto id_in = [&](std::uint32_t page, int x, int y, int slot) {
+    return state_index(shift, slot_bits, page, x, y, slot);
   };
   const int sx = sc.x + 1;
   const int sy = sc.y + 1;
@@ -308,6 +316,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   // fresh memory takes more steps, not a longer one. Pages are handed out in order, so those
   // below the high-water mark are resident.
   const std::size_t resident = resident_pages_;
+  // kFirstTouchPops per 512 states (4 KB of costs), whatever a page holds.
+  const std::uint32_t first_touch = std::max<std::uint32_t>((kFirstTouchPops << shift) >> 9, 1);
   std::uint32_t charged = 0;
   double best = run_.best;
   std::uint32_t reached = run_.reached;
@@ -329,7 +339,7 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
 
   auto relax = [&](int x, int y, int slot, double ng, std::uint8_t how) {
     const std::uint32_t cell = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
-    TileEntry& te = tile_of(x, y);
+    TileEntry& te = tile_of(x, y, slot);
     double hc = -1.0;
     if (te.stamp != gen_) {
       hc = h_of(x, y, cell);
@@ -339,14 +349,14 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
         return;
       }
       te.stamp = gen_;
-      if (used_ >= resident) charged += kFirstTouchPops;
-      te.page = static_cast<std::uint32_t>(used_++);
-      origin[te.page] = PageOrigin{x & ~tmask, y & ~tmask};
+      if (used_ >= resident) charged += first_touch;
+      te.page = static_cast<std::uint16_t>(used_++);
+      origin[te.page] = PageOrigin{x & ~tmask, y & ~tmask, slot & ~slot_mask};
       std::fill_n(meta + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
                   std::uint8_t{0});
       if (backward)  // tree_valid()'s memo: no tag yet
         std::fill_n(memo_.get() + (static_cast<std::size_t>(te.page) << shift), std::size_t{1} << shift,
-                    std::uint16_t{0});
+                    std::uint8_t{0});
     }
     const std::uint32_t s = id_in(te.page, x, y, slot);
     std::uint8_t& mt_s = meta[s];
@@ -442,11 +452,8 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
       s = open_.pop().node;
     }
     meta[s] = static_cast<std::uint8_t>(meta[s] | kClosed);
-    const std::uint32_t local = s & local_mask;
-    const PageOrigin& o = origin[s >> shift];
-    const int slot = static_cast<int>(local >> (2 * kTileShift));
-    const int x = o.x + static_cast<int>(local & static_cast<std::uint32_t>(tmask));
-    const int y = o.y + static_cast<int>((local >> kTileShift) & static_cast<std::uint32_t>(tmask));
+    int x, y, slot;
+    place_in(s & local_mask, origin[s >> shift], x, y, slot);
     const std::uint32_t u = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
     const int k = move_slice[slot];
     const double gu = g[s];

@@ -58,13 +58,19 @@ class HeadingSearch {
   static constexpr double kBucketWidth = 0.5;  // cells of f per open-list bucket
   static constexpr int kTileShift = 3;         // tiles of 8 x 8 cells
   static constexpr int kTileCells = 1 << (2 * kTileShift);  // cells per tile
+  // A page holds one tile's states in 1 << kPageSlotShift move slots (fewer when the search has
+  // fewer): searches fill a tile's slots unevenly (a kept tree touched 44 % of a whole tile's
+  // states, 70 % of a tile's states per slot), so pages per slot waste less memory
+  // (docs/PLANNER.md, "Pages per move slot").
+  static constexpr int kPageSlotShift = 0;
   // States the pool holds by default: 262,144 (17 bytes each with the bucket ring, 37 with the
   // heap; resident only where a search writes). The seed 000 lab run's largest search took
   // 108 k (211 pages of 512); see docs/PLANNER.md.
   static constexpr std::size_t kDefaultStateBudget = std::size_t{1} << 18;
   // The kept tree's states at most (whole pages of its pool), so that it costs a bounded share
-  // of memory (docs/PLANNER.md, "The kept tree"): 131,072 (2.4 MB at 19 bytes a state).
-  static constexpr std::size_t kTreeStateBudget = std::size_t{1} << 17;
+  // of memory (docs/PLANNER.md, "The kept tree", "Pages per move slot"): 163,840 (2.8 MB at 18
+  // bytes a state), what the 300 x 300 bench map's tree needs for replans >= 10x.
+  static constexpr std::size_t kTreeStateBudget = 5 * (std::size_t{1} << 15);
   // Expansions after which a search whose expanded cells still fit in EnclosureTest's window
   // asks whether the robot is shut in there (a search that would end unreachable after
   // exhausting a small component ends now; docs/PLANNER.md, "Shut in"); asked again after
@@ -205,16 +211,45 @@ class HeadingSearch {
   // (s first); counts grid moves.
   void walk_back(std::uint32_t s, std::vector<CellPose>& out) const;
 
-  // A tile's page in the current search.
+  // Why: the index in tiles_ of stored cell (x, y)'s page for move slot `slot` (its tile's slot
+  // group); and the pool state of (x, y, slot) in that page.
+  // The arithmetic once, with the layout as arguments (resume() passes its locals).
+  static std::size_t entry_index(int tiles_x, int group_shift, int slot_bits, int x, int y, int slot) {
+    const auto tile = static_cast<std::size_t>((y >> kTileShift) * tiles_x + (x >> kTileShift));
+    return (tile << group_shift) | static_cast<std::size_t>(slot >> slot_bits);
+  }
+  static std::uint32_t state_index(int page_shift, int slot_bits, std::uint32_t page, int x, int y, int slot) {
+    constexpr int tmask = (1 << kTileShift) - 1;
+    const auto local_slot = static_cast<std::uint32_t>(slot & ((1 << slot_bits) - 1));
+    return (page << page_shift) | (local_slot << (2 * kTileShift)) |
+           (static_cast<std::uint32_t>(y & tmask) << kTileShift) | static_cast<std::uint32_t>(x & tmask);
+  }
+  std::size_t entry_of(int x, int y, int slot) const {
+    return entry_index(tiles_x_, group_shift_, slot_bits_, x, y, slot);
+  }
+  std::uint32_t state_in(std::uint32_t page, int x, int y, int slot) const {
+    return state_index(page_shift_, slot_bits_, page, x, y, slot);
+  }
+
+  // A tile's page (of one slot group) in the current search.
   struct TileEntry {
-    std::uint32_t stamp = 0;  // generation that gave the tile its page (else: none)
-    std::uint32_t page = 0;   // pool page index
+    std::uint16_t stamp = 0;  // generation that gave the tile its page (else: none)
+    std::uint16_t page = 0;   // pool page index (kMaxPages at most)
   };
+  static constexpr std::size_t kMaxPages = std::size_t{1} << 16;  // pages one search may take
   // The stored cell at a page's tile corner.
   struct PageOrigin {
-    std::int32_t x;  // stored cells (grid x + 1)
-    std::int32_t y;  // stored cells (grid y + 1)
+    std::int32_t x;     // stored cells (grid x + 1)
+    std::int32_t y;     // stored cells (grid y + 1)
+    std::int32_t slot;  // the page's first move slot
   };
+  // Why: the place of a state from its index within its page (`local`) and the page's origin.
+  static void place_in(std::uint32_t local, const PageOrigin& o, int& x, int& y, int& slot) {
+    constexpr auto tmask = static_cast<std::uint32_t>((1 << kTileShift) - 1);
+    slot = o.slot + static_cast<int>(local >> (2 * kTileShift));
+    x = o.x + static_cast<int>(local & tmask);
+    y = o.y + static_cast<int>((local >> kTileShift) & tmask);
+  }
 
   // One search's inputs (begin()) and its progress between resume() steps.
   struct Run {
@@ -253,7 +288,7 @@ class HeadingSearch {
   static void start_turns(const LeanGraph& lg, double turn, double* cost);
   Run run_;
   bool shut_in_ = false;  // the last search ended by EnclosureTest
-  static constexpr std::uint32_t kFirstTouchPops = 256;  // pops a never-written page counts for
+  static constexpr std::uint32_t kFirstTouchPops = 256;  // pops 512 never-written states count for
   std::size_t resident_pages_ = 0;  // pages some search has written (handed out in order)
 
   std::unique_ptr<double[]> g_;          // per pool state: cells, best cost from the start
@@ -263,11 +298,13 @@ class HeadingSearch {
   std::vector<PageOrigin> origin_;       // per page (budget_ / kTileCells at most)
   int tiles_x_ = 0;                      // tiles per stored row
   int page_shift_ = 0;                   // log2 of states per page (this search)
+  int slot_bits_ = 0;                    // log2 of move slots per page (this search)
+  int group_shift_ = 0;                  // log2 of pages (slot groups) per tile (this search)
   std::size_t pages_ = 0;                // pages the pool holds (this search)
   std::size_t used_ = 0;                 // pages taken (this search)
   IndexedHeap open_;           // open list for very uneven costs
   std::vector<CellPose> path_; // last path, start first
-  std::uint32_t gen_ = 0;      // generation stamp
+  std::uint16_t gen_ = 0;      // generation stamp
   std::vector<const std::uint8_t*> cls_of_;  // per slice: its cell classes (this search)
   std::vector<std::uint8_t> allowed_;        // per slice: allowed move bits (this search)
   std::vector<int> move_slice_;              // per move slot: its slice (this search)
@@ -284,8 +321,8 @@ class HeadingSearch {
   double robot_h_ = 0.0;           // cells: the goal field at the robot's cell (toward_robot())
   std::vector<double> slot_turn_;  // per move slot: cells, the least turning from the robot's slice
   std::uint32_t goal_cell_ = 0;    // stored index of the goal cell (the tree's seeds)
-  std::unique_ptr<std::uint16_t[]> memo_;  // per pool state: epoch << 1 | valid (tree_valid())
-  std::uint16_t epoch_ = 0;        // tree_valid()'s memo generation
+  std::unique_ptr<std::uint8_t[]> memo_;  // per pool state: epoch << 1 | valid (tree_valid())
+  std::uint8_t epoch_ = 0;         // tree_valid()'s memo generation (7 bits)
   std::vector<std::uint32_t> chain_;  // tree_valid()'s walk
 };
 

@@ -8,18 +8,8 @@
 
 namespace robuter::plan {
 
-namespace {
-
-constexpr int kTileMask = (1 << HeadingSearch::kTileShift) - 1;
-
-}  // namespace
-
 void HeadingSearch::place_of(std::uint32_t s, int& x, int& y, int& slot) const {
-  const std::uint32_t local = s & ((std::uint32_t{1} << page_shift_) - 1);
-  const PageOrigin& o = origin_[s >> page_shift_];
-  slot = static_cast<int>(local >> (2 * kTileShift));
-  x = o.x + static_cast<int>(local & static_cast<std::uint32_t>(kTileMask));
-  y = o.y + static_cast<int>((local >> kTileShift) & static_cast<std::uint32_t>(kTileMask));
+  place_in(s & ((std::uint32_t{1} << page_shift_) - 1), origin_[s >> page_shift_], x, y, slot);
 }
 
 void HeadingSearch::walk_back(std::uint32_t s, std::vector<CellPose>& out) const {
@@ -83,10 +73,9 @@ void HeadingSearch::settle(std::uint32_t reached) {
     for (std::size_t i = 0; i < states; ++i) {
       const std::size_t s = (page << page_shift_) | i;
       if (!(meta_[s] & kSeen)) continue;
-      const int x = o.x + static_cast<int>(i & static_cast<std::size_t>(kTileMask));
-      const int y = o.y + static_cast<int>((i >> kTileShift) & static_cast<std::size_t>(kTileMask));
+      int x, y, slot;
+      place_in(static_cast<std::uint32_t>(i), o, x, y, slot);
       const std::uint32_t cell = static_cast<std::uint32_t>(y) * stride + static_cast<std::uint32_t>(x);
-      const int slot = static_cast<int>(i >> (2 * kTileShift));
       if (bound_ == CostField::kInfinity || g_[s] + toward_robot(x, y, cell, slot) <= below)
         meta_[s] = static_cast<std::uint8_t>(meta_[s] | kSettled);
     }
@@ -117,8 +106,8 @@ double HeadingSearch::toward_robot(int x, int y, std::uint32_t cell) const {
 }
 
 void HeadingSearch::new_epoch() {
-  if (++epoch_ >= 0x8000) {  // the memo's tags wrap: clear the pages in use
-    std::fill_n(memo_.get(), used_ << page_shift_, std::uint16_t{0});
+  if (++epoch_ >= 0x80) {  // the memo's tags wrap: clear the pages in use
+    std::fill_n(memo_.get(), used_ << page_shift_, std::uint8_t{0});
     epoch_ = 1;
   }
 }
@@ -132,13 +121,13 @@ HeadingSearch::TreeEdges HeadingSearch::tree_edges() const {
 }
 
 bool HeadingSearch::tree_valid(std::uint32_t state) {
-  const auto tag = static_cast<std::uint16_t>(epoch_ << 1);
+  const auto tag = static_cast<std::uint8_t>(epoch_ << 1);
   const TreeEdges e = tree_edges();
   const auto& [k_count, m_count, stride, mt, cost, turn, lg, grown] = e;
   chain_.clear();
   bool ok = true;
   for (std::uint32_t s = state;;) {
-    const std::uint16_t m = memo_[s];
+    const std::uint8_t m = memo_[s];
     if ((m & 0xFFFEu) == tag) {
       ok = (m & 1u) != 0;
       break;
@@ -188,17 +177,15 @@ bool HeadingSearch::tree_valid(std::uint32_t state) {
     }
     s = qs;
   }
-  const auto val = static_cast<std::uint16_t>(tag | (ok ? 1u : 0u));
+  const auto val = static_cast<std::uint8_t>(tag | (ok ? 1u : 0u));
   for (const std::uint32_t c : chain_) memo_[c] = val;
   return ok;
 }
 
 std::uint32_t HeadingSearch::state_at(int x, int y, int slot) const {
-  const TileEntry& te = tiles_[static_cast<std::size_t>((y >> kTileShift) * tiles_x_ + (x >> kTileShift))];
+  const TileEntry& te = tiles_[entry_of(x, y, slot)];
   if (te.stamp != gen_) return kNoState;
-  const std::uint32_t s = (te.page << page_shift_) | (static_cast<std::uint32_t>(slot) << (2 * kTileShift)) |
-                          (static_cast<std::uint32_t>(y & kTileMask) << kTileShift) |
-                          static_cast<std::uint32_t>(x & kTileMask);
+  const std::uint32_t s = state_in(te.page, x, y, slot);
   return (meta_[s] & kSeen) ? s : kNoState;
 }
 

@@ -119,6 +119,7 @@ class Planner {
   // Why: figures: states the tree expanded (so far, while it grows), and pages it took.
   std::uint32_t tree_states() const { return tree_.expanded_so_far(); }
   std::size_t tree_pages() const { return tree_.pages_used(); }
+  std::size_t tree_page_states() const { return tree_.page_states(); }
 
   const std::vector<Waypoint>& waypoints() const { return waypoints_; }
   // Why: pictures show the expanded obstacles of a slice (slice 0 for a disc).
