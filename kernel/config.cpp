@@ -396,7 +396,9 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
 void bind_places(Binder& b, PlacesConfig& p) {
   b.string("places.file", p.file);
   b.string("places.grids_dir", p.grids_dir);
+  b.boolean("places.cross_doors", p.cross_doors);
   if (b.error()) return;
+  if (p.cross_doors && p.file.empty()) return b.fail_key("places.cross_doors", "needs places.file (the routes whose doors are crossed)");
   const std::filesystem::path folder = std::filesystem::path(b.file()).parent_path();
   if (!p.grids_dir.empty()) {
     if (p.file.empty()) return b.fail_key("places.grids_dir", "needs places.file (the places whose grids are saved)");

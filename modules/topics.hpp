@@ -249,6 +249,7 @@ struct PlannerStatus {
   std::uint8_t vias = 0;        // the goal's via points (a route over places, XQ; 0 for XG)
   std::uint8_t via_next = 0;    // via points passed so far (== vias: driving to the goal itself)
   std::uint16_t goal_place = 0; // XQ: the goal place's number; 0 for XG
+  std::uint32_t door_wish = 0;  // bumped when the planner, at the point before a narrow door, asks for the door crossing ([places] cross_doors)
   std::int32_t map_x0_mm = 0;   // lower-left corner of the planner's map window, odometry frame, mm
   std::int32_t map_y0_mm = 0;   // mm (the window moves for a goal off it: docs/PLANNER.md)
   std::uint64_t tick = 0;       // tick of the report
@@ -314,6 +315,7 @@ struct MotionAuthority {
   MotionSource owner = MotionSource::link;              // link / go_to: the operator; else that automatic mode
   std::array<std::uint32_t, kMotionSources> runs{};     // per source: times the robot was handed to it
   std::array<ModeReason, kMotionSources> ended{};       // per source: why its last run ended (none: never ended)
+  MotionSource lent_by = MotionSource::link;            // the mode whose run goes on while it lends the robot to the owner (the planner at a narrow door: docs/PLACES.md); link: none
   std::uint8_t detections = kDetectAll;                 // emergency detections in force: kDetect* bits
   std::uint64_t tick = 0;                               // tick of the decision
 };

@@ -62,6 +62,7 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
       doors_wish_(bb.doors_detections.reader()),
       doors_status_(bb.doors_status.reader()),
       gate_status_(bb.gate_status.reader()),
+      planner_status_(bb.planner_status.reader()),
       state_out_(bb.emergency.writer()),
       authority_out_(bb.authority.writer()),
       command_out_(bb.motion_command.writer()),
@@ -94,6 +95,7 @@ bool EmergencyModule::init(Kernel& k) {
   seen_reenable_ = link_.peek().reenable_seq;
   seen_servo_ = servo_.peek().seq;
   seen_actions_ = actions_.peek().count;
+  door_wish_seen_ = planner_status_.peek().door_wish;
   if (demo_at_boot_) arbiter_.start_at_boot(MotionSource::demo);
   MotionAuthority a = arbiter_.authority();
   a.detections = base_mask_;
@@ -120,6 +122,19 @@ void EmergencyModule::hand_over() {
   const ModeState gs = gate_status_.peek().state;
   if (hand_over_ && gs == ModeState::aligned && gate_seen_ != ModeState::aligned) arbiter_.hand_over_to_doors();
   gate_seen_ = gs;
+  if (!door_loans_) return;
+  // The planner at a narrow door of an XQ route lends the robot to the crossing; the crossing's
+  // run ending by itself (crossed, or failed: the planner reads which) gives it back.
+  const std::uint32_t wish = planner_status_.peek().door_wish;
+  if (wish != door_wish_seen_) {
+    door_wish_seen_ = wish;
+    arbiter_.lend_to_doors();  // only from the planner's run: anything else ignores it
+  }
+  const MotionAuthority& a = arbiter_.authority();
+  const ModeStatus& d = doors_status_.peek();
+  const bool ended = d.state == ModeState::crossed || d.state == ModeState::failed;
+  if (a.lent_by != MotionSource::link && ended && d.runs == a.runs[static_cast<std::size_t>(MotionSource::doors)])
+    arbiter_.give_back();
 }
 
 std::uint8_t EmergencyModule::detections() const {

@@ -43,6 +43,9 @@ class EmergencyModule final : public Process {
     hand_over_ = gate_hands_over;
     demo_at_boot_ = demo_at_boot;
   }
+  // The planner may lend the robot to the door crossing at the point before a narrow door of an
+  // XQ route ([places] cross_doors; docs/PLACES.md "Doors on a route").
+  void set_door_loans(bool on) { door_loans_ = on; }
   // The a-priori map's structure, which explains echoes ([emergency] narrow_arcs, docs/SAFETY.md
   // §13 "Narrowing"); nullptr: none. It must outlive the module.
   void set_known_structure(const safety::KnownStructure* known) { envelope_.set_known_structure(known); }
@@ -92,6 +95,7 @@ class EmergencyModule final : public Process {
   Reader<DetectionRequest> doors_wish_;
   Reader<ModeStatus> doors_status_;
   Reader<ModeStatus> gate_status_;
+  Reader<PlannerStatus> planner_status_;  // its door_wish ([places] cross_doors)
   Writer<EmergencyState> state_out_;
   Writer<MotionAuthority> authority_out_;
   Writer<MotionCommand> command_out_;
@@ -104,6 +108,8 @@ class EmergencyModule final : public Process {
   std::uint8_t base_mask_ = kDetectAll;  // the operator's detections (configuration, set_enabled)
   bool hand_over_ = false;            // [gate] hand_over
   bool demo_at_boot_ = false;         // [demo] enabled
+  bool door_loans_ = false;           // [places] cross_doors
+  std::uint32_t door_wish_seen_ = 0;  // PlannerStatus.door_wish last seen
   ModeState gate_seen_ = ModeState::off;  // the passage finder's state at the last run
   EmergencyState last_{};             // previous verdict, for transition logs
   Posture pose_{};                    // the executor's posture of the latest tick seen

@@ -43,6 +43,8 @@ std::span<const ArbitrationRule> arbitration_table() { return kTable; }
 void MotionArbiter::end_running(ModeReason why) {
   if (!automatic(a_.owner)) return;
   a_.ended[index(a_.owner)] = why;
+  if (a_.lent_by != MotionSource::link) a_.ended[index(a_.lent_by)] = why;  // the lender's run ends with it
+  a_.lent_by = MotionSource::link;
   a_.owner = MotionSource::link;
 }
 
@@ -54,7 +56,10 @@ void MotionArbiter::hand_to(MotionSource s) {
 
 void MotionArbiter::take(OperatorAction action) {
   const ArbitrationRule& r = kTable[static_cast<std::size_t>(action)];
-  end_running(a_.owner == r.own_stop ? ModeReason::cancelled : ModeReason::operator_motion);
+  // A mode's own stop cancels it; while the planner has lent the robot to the door crossing, XH
+  // (the planner's stop) and Af (the crossing's) cancel both.
+  const bool own = a_.owner == r.own_stop || (a_.lent_by != MotionSource::link && a_.lent_by == r.own_stop);
+  end_running(own ? ModeReason::cancelled : ModeReason::operator_motion);
   if (r.starts) hand_to(r.takes);
   else a_.owner = r.takes;
 }
@@ -73,6 +78,18 @@ void MotionArbiter::protective_stop() {
 void MotionArbiter::hand_over_to_doors() {
   if (a_.owner != MotionSource::gate) return;
   hand_to(MotionSource::doors);
+}
+
+void MotionArbiter::lend_to_doors() {
+  if (a_.owner != MotionSource::planner) return;
+  hand_to(MotionSource::doors);
+  a_.lent_by = MotionSource::planner;
+}
+
+void MotionArbiter::give_back() {
+  if (a_.owner != MotionSource::doors || a_.lent_by == MotionSource::link) return;
+  a_.owner = a_.lent_by;
+  a_.lent_by = MotionSource::link;
 }
 
 void MotionArbiter::start_at_boot(MotionSource s) { hand_to(s); }

@@ -42,6 +42,13 @@ class MotionArbiter {
   void protective_stop();
   // The passage finder is aligned and hands the robot to the door crossing ([gate] hand_over).
   void hand_over_to_doors();
+  // The planner, at the point before a narrow door of an XQ route, lends the robot to the door
+  // crossing ([places] cross_doors): a new run of the crossing; the planner's run goes on,
+  // waiting. Whatever ends the crossing's run early (the operator, Af, XH, an emergency) ends the
+  // planner's too; the crossing ending by itself (crossed, or failed) gives the robot back.
+  void lend_to_doors();
+  // The lent crossing ended by itself: the robot is the lender's again, in the same run.
+  void give_back();
   // A mode started at boot by configuration ([demo] enabled).
   void start_at_boot(MotionSource s);
   // May requests from `s` reach the gate now: only the owner's do.

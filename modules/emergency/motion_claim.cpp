@@ -17,9 +17,15 @@ bool MotionClaim::granted() {
 ModeReason MotionClaim::ended() const {
   const MotionAuthority& a = authority_.peek();
   if (a.owner == me_ && a.runs[index()] == run_) return ModeReason::none;
+  if (lent()) return ModeReason::none;
   if (a.runs[index()] != run_) return ModeReason::operator_motion;
   const ModeReason why = a.ended[index()];
   return why == ModeReason::none ? ModeReason::operator_motion : why;
+}
+
+bool MotionClaim::lent() const {
+  const MotionAuthority& a = authority_.peek();
+  return a.lent_by == me_ && a.runs[index()] == run_ && run_ != 0;
 }
 
 }  // namespace robuter

@@ -20,6 +20,9 @@ class MotionClaim {
   // While a run is going: why it ended — the operator took the robot (`operator_motion`), its own
   // stop command (`cancelled`), an emergency — or none while it is still this source's.
   ModeReason ended() const;
+  // While a run is going: the robot is lent to another mode (the planner's, to the door crossing
+  // at a narrow door): the run goes on, waiting for it back.
+  bool lent() const;
   // The run this source began last (0: none).
   std::uint32_t run() const { return run_; }
 

@@ -283,6 +283,7 @@ std::optional<std::string> Firmware::setup() {
   demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
   emergency->set_modes(cfg_.gate.hand_over, cfg_.demo.enabled);
+  emergency->set_door_loans(cfg_.places.cross_doors);
   planner->set_emergency(emergency.get());
   if (!opt_.planner_pictures.empty()) {
     // Decided: a missing folder is created (a new run's output folder), and the log says so; an

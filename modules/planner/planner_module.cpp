@@ -37,7 +37,8 @@ std::int64_t cpu_us() {
 }
 
 bool navigating(PlannerState s) {
-  return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving;
+  return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving ||
+         s == PlannerState::crossing;
 }
 
 std::uint32_t to_mm(double m) { return m <= 0.0 ? 0u : static_cast<std::uint32_t>(std::lround(m * 1000.0)); }
@@ -61,6 +62,7 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       pan_tilt_(bb.pan_tilt_scan.reader()),
       goal_in_(bb.planner_goal.reader()),
       emergency_(bb.emergency.reader()),
+      doors_status_(bb.doors_status.reader()),
       claim_(bb, MotionSource::planner),
       motion_out_(bb.planner_motion.writer()),
       status_out_(bb.planner_status.writer()),
@@ -315,15 +317,55 @@ void PlannerModule::next_via(std::uint64_t tick, const char* why) {
   place_window(tick);
 }
 
+bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
+  if (add_via_turn(pose)) return true;
+  if (cfg_.places.cross_doors && goal_.via[via_next_].has_theta) begin_crossing(tick);
+  else next_via(tick, "reached");
+  return false;
+}
+
+void PlannerModule::begin_crossing(std::uint64_t tick) {
+  follower_.cancel();
+  planner_.cancel_steps();
+  request(tick, 0, 0);
+  state_ = PlannerState::crossing;
+  ++door_wish_;
+  lent_seen_ = false;
+  crossing_since_ = tick;
+  log::info("planner: route point {} of {} reached, facing the door: the door crossing takes the robot",
+            via_next_ + 1, goal_.vias);
+}
+
+void PlannerModule::crossing_step(std::uint64_t tick) {
+  if (claim_.lent()) {
+    lent_seen_ = true;
+    return;
+  }
+  if (!lent_seen_) {  // the arbiter has not lent the robot yet (it does within a tick or two)
+    if (tick < crossing_since_ + kLendTicks) return;
+    log::warn("planner: the door crossing did not take the robot in {} ticks; the route ends", kLendTicks);
+    return finish(tick, PlannerState::blocked, true);
+  }
+  const ModeStatus& d = doors_status_.peek();
+  if (d.state != ModeState::crossed) {
+    log::info("planner: the door crossing ended {} ({}); the route ends", word(d.state), word(d.reason));
+    return finish(tick, PlannerState::blocked, true);
+  }
+  // Crossed: the crossing drove on until the body was clear, so the point after the door is
+  // passed over; scan and plan to the next.
+  log::info("planner: route point {} of {}: the door crossed", via_next_ + 1, goal_.vias);
+  if (via_next_ + 1 < goal_.vias && !goal_.via[via_next_ + 1].has_theta) ++via_next_;
+  next_via(tick, "passed over (the crossing left the body clear of the door)");
+}
+
 void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   const plan::Point2 goal = target_point();
   if (at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) {
-    if (add_via_turn(pose)) {
+    if (via_reached(tick, pose)) {
       state_ = PlannerState::moving;
       final_prefix_ = true;
-      return;
     }
-    return next_via(tick, "reached");
+    return;
   }
   if (std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) {
@@ -429,8 +471,8 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   if (follower_.active()) return request(tick, w.left, w.right);
   const plan::Point2 goal = target_point();
   if (final_prefix_ && at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) {
-    if (add_via_turn(pose)) return request(tick, 0, 0);
-    return next_via(tick, "reached");
+    if (via_reached(tick, pose)) request(tick, 0, 0);
+    return;
   }
   if (final_prefix_ && std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
     if (add_final_turn(pose)) return request(tick, 0, 0);
@@ -472,6 +514,7 @@ void PlannerModule::run(Kernel& k) {
     }
     if (state_ == PlannerState::planning) plan_step(tick, pose);
     else if (state_ == PlannerState::moving) move_step(tick, pose);
+    else if (state_ == PlannerState::crossing) crossing_step(tick);
     // While the robot drives and scans, the kept tree for the plan's goal grows, a step per
     // activation, so that a replan after new obstacles searches only where it broke
     // (docs/PLANNER.md, "The kept tree").
@@ -521,6 +564,7 @@ void PlannerModule::publish_status(std::uint64_t tick) {
   s.vias = goal_.vias;
   s.via_next = via_next_;
   s.goal_place = goal_.place;
+  s.door_wish = door_wish_;
   s.map_x0_mm = static_cast<std::int32_t>(map_x0_mm_);
   s.map_y0_mm = static_cast<std::int32_t>(map_y0_mm_);
   s.tick = tick;

@@ -32,6 +32,7 @@ class PlannerModule final : public Process {
   static constexpr std::size_t kMaxPrefix = 512;  // waypoints of the followed prefix kept
   static constexpr std::size_t kMaxPicturePath = 8192;  // waypoints of a plan kept for its picture
   static constexpr double kViaTolerance = 0.30;  // m: a route's via point is passed this close
+  static constexpr std::uint64_t kLendTicks = 50;  // ticks the arbiter has to lend the robot to the door crossing
 
   PlannerModule(Blackboard& bb, const Config& cfg);
   // The emergency module, triggered when the requested speeds change so a stop acts this tick.
@@ -98,6 +99,14 @@ class PlannerModule final : public Process {
   // m: a via point counts as passed this close (looser than the goal's: only a way point).
   double via_tolerance() const { return std::max(s_.goal_tolerance, kViaTolerance); }
   void next_via(std::uint64_t tick, const char* why);
+  // At a via point: its turn first (true: the turn started), then, at the point before a narrow
+  // door with [places] cross_doors, the door crossing, else the next point.
+  bool via_reached(std::uint64_t tick, const plan::Pose2& pose);
+  // At the point before a narrow door, turned to face it ([places] cross_doors): ask the arbiter
+  // to lend the robot to the door crossing, and wait (docs/PLACES.md "Doors on a route").
+  void begin_crossing(std::uint64_t tick);
+  // Crossing: while lent, wait; given back, go on after the door (crossed) or end (failed).
+  void crossing_step(std::uint64_t tick);
   bool add_via_turn(const plan::Pose2& pose);
   // Adds a turn in place to `theta` (0.01 degree) when free and not yet added for this point.
   bool add_turn(const plan::Pose2& pose, std::int32_t theta);
@@ -128,6 +137,7 @@ class PlannerModule final : public Process {
   Reader<PanTiltScan> pan_tilt_;         // the pan-tilt's sectors: more beams for the map
   Reader<PlannerGoal> goal_in_;
   Reader<EmergencyState> emergency_;     // a protective stop pausing our motion (replan after a while)
+  Reader<ModeStatus> doors_status_;      // how the door crossing we lent the robot to ended
   MotionClaim claim_;                    // runs handed by the arbiter (XG), and their end
   Writer<MotionRequest> motion_out_;
   Writer<PlannerStatus> status_out_;
@@ -157,6 +167,9 @@ class PlannerModule final : public Process {
   bool have_heading_ = false;
   std::uint32_t plans_ = 0, scans_ = 0;    // for this goal
   std::uint8_t via_next_ = 0;              // the route's next via point (goal_.vias: the goal itself)
+  std::uint32_t door_wish_ = 0;            // PlannerStatus.door_wish: bumped to ask for the crossing
+  bool lent_seen_ = false;                 // crossing: the arbiter has lent the robot (it comes back when the crossing ends)
+  std::uint64_t crossing_since_ = 0;       // crossing: tick the crossing was asked for
   std::uint64_t paused_since_ = 0;         // tick our motion was first seen paused by a protective stop (0: not)
   std::uint32_t paused_replans_ = 0;       // replans in a row after such pauses, with no prefix driven since
   std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search (all its steps)

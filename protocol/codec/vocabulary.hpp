@@ -90,6 +90,7 @@ ROBUTER_VOCABULARY(EmergencyCause, ROBUTER_EMERGENCY_CAUSES, "other");
   X(scanning, "scanning")       /* stopped, waiting for fresh ring data */                             \
   X(planning, "planning")       /* a plan is due this activation */                                    \
   X(moving, "moving")           /* following the visible prefix of the path */                         \
+  X(crossing, "crossing")       /* XQ: the robot lent to the door crossing at a narrow door */         \
   X(reached, "reached")         /* at the goal (within the tolerance) */                               \
   X(unreachable, "unreachable") /* no path on the current map (or the goal cell is an obstacle) */     \
   X(blocked, "blocked")         /* the robot's own place is an obstacle: no plan starts from here */   \

@@ -58,7 +58,7 @@ TEST(Vocabulary, WireWordsInOrder) {
             "none bumper obstacle comm-loss stop-byte motion-timeout drive-fault other heartbeat-lost "
             "bus-error-passive bus-off");
   EXPECT_EQ(all_words<PlannerState>(),
-            "idle scanning planning moving reached unreachable blocked outside stopped cancelled operator");
+            "idle scanning planning moving crossing reached unreachable blocked outside stopped cancelled operator");
   EXPECT_EQ(all_words<ModeState>(),
             "off starting scanning searching moving aligned crossing waiting leaving crossed failed running finished");
   EXPECT_EQ(all_words<ModeReason>(),
