@@ -272,6 +272,7 @@ std::optional<std::string> Firmware::setup() {
     openings_ = places::door_openings(*places_, *walls_);
     planner->set_openings(openings_);
   }
+  if (places_) planner->set_places(places_.get());
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));
   auto gate = std::make_unique<GateModule>(bb_, cfg_);
   auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());

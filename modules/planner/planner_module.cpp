@@ -351,11 +351,24 @@ void PlannerModule::crossing_step(std::uint64_t tick) {
     log::info("planner: the door crossing ended {} ({}); the route ends", word(d.state), word(d.reason));
     return finish(tick, PlannerState::blocked, true);
   }
-  // Crossed: the crossing drove on until the body was clear, so the point after the door is
-  // passed over; scan and plan to the next.
-  log::info("planner: route point {} of {}: the door crossed", via_next_ + 1, goal_.vias);
-  if (via_next_ + 1 < goal_.vias && !goal_.via[via_next_ + 1].has_theta) ++via_next_;
-  next_via(tick, "passed over (the crossing left the body clear of the door)");
+  // Crossed, by the crossing's own end test: the robot must be in the place beyond the door (the
+  // place of the point after it), else the crossing stopped short or turned away (seen: "crossed"
+  // 0.5 m before room-12's door, facing 40° off it) and the route ends here.
+  if (place_graph_ != nullptr && via_next_ + 1 < goal_.vias) {
+    const PlannerGoal::Via& after = goal_.via[via_next_ + 1];
+    const auto beyond = place_graph_->place_at(places::Vec2(after.x * 1e-4, after.y * 1e-4));
+    const Posture& p = posture_.peek();
+    const auto here = place_graph_->place_at(places::Vec2(p.x * 1e-4, p.y * 1e-4));
+    if (beyond && here != beyond) {
+      log::warn("planner: the door crossing ended crossed outside {}; the route ends",
+                place_graph_->places()[*beyond].name);
+      return finish(tick, PlannerState::blocked, true);
+    }
+  }
+  // Crossed: on to the point after the door (0.9 m past it, straight ahead: the crossing stops
+  // about 0.5 m past it, where turning towards the room's centre met the jambs — room-02 ended
+  // `blocked` so); scan and plan to it.
+  next_via(tick, "crossed by the door crossing");
 }
 
 void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {

@@ -46,6 +46,9 @@ class PlannerModule final : public Process {
     place_graph_ = graph;
     place_grids_ = box;
   }
+  // The place graph ([places] file): a door crossing on a route must end in the place beyond the
+  // door (seed 003's localisation by point-in-polygon). Must outlive the module.
+  void set_places(const places::PlaceGraph* graph) { place_graph_ = graph; }
   // The a-priori map ([planner] map_file, planner/prior_map.hpp), of the configured geometry:
   // init() starts from it instead of an unknown map. Set before init().
   void set_prior_map(plan::OccupancyMap map) { prior_ = std::move(map); }
@@ -145,7 +148,7 @@ class PlannerModule final : public Process {
   Process* emergency_process_ = nullptr;
   std::span<const plan::Point2> openings_;  // cells kept free (door openings), m
   planner::PictureMailbox* pictures_ = nullptr;  // where plans go for pictures (null: off)
-  const places::PlaceGraph* place_graph_ = nullptr;   // the places whose grids are kept (null: off)
+  const places::PlaceGraph* place_graph_ = nullptr;   // the place graph (null: none)
   places::PlaceGridMailbox* place_grids_ = nullptr;   // where their grids go for the writer
   Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
 

@@ -300,6 +300,17 @@ TEST(GoToPlace, ThroughA90cmDoorWithTheDoorCrossing) {
   EXPECT_EQ(r.contacts, 0u);
 }
 
+// Why: after the crossing the route goes on to the point 0.9 m past the door, straight ahead,
+// before it turns towards the room's centre: passed over (the crossing stops ~0.5 m past the
+// door), the first plan turned beside the jambs and the envelope held it there (`blocked`).
+TEST(GoToPlace, ThroughA1mDoorOnToTheRoomsCentre) {
+  const PlaceRun r = go(place("corridor-ew-1"), place("room-02"), 30'000, true);
+  EXPECT_EQ(r.state, PlannerState::reached);
+  EXPECT_EQ(r.in_place, "room-02");
+  EXPECT_LT(r.error, 0.10);
+  EXPECT_EQ(r.contacts, 0u);
+}
+
 // Why: the operator's command ends the route while the crossing has the robot: both end, the
 // robot stops, the detections are whole again, and nothing resumes.
 TEST(GoToPlace, TheOperatorEndsARouteWhileTheCrossingHasTheRobot) {
