@@ -125,15 +125,17 @@ void EmergencyModule::hand_over() {
   if (!door_loans_) return;
   // The planner at a narrow door of an XQ route lends the robot to the crossing; the crossing's
   // run ending by itself (crossed, or failed: the planner reads which) gives it back.
+  const ModeStatus& d = doors_status_.peek();
   const std::uint32_t wish = planner_status_.peek().door_wish;
   if (wish != door_wish_seen_) {
     door_wish_seen_ = wish;
     arbiter_.lend_to_doors();  // only from the planner's run: anything else ignores it
+    loan_doors_runs_ = d.runs;  // the crossing's runs before the loan's own starts
   }
-  const MotionAuthority& a = arbiter_.authority();
-  const ModeStatus& d = doors_status_.peek();
+  // The loan's crossing is the first run the crossing starts after it (no other can start while
+  // it has the robot); its end gives the robot back.
   const bool ended = d.state == ModeState::crossed || d.state == ModeState::failed;
-  if (a.lent_by != MotionSource::link && ended && d.runs == a.runs[static_cast<std::size_t>(MotionSource::doors)])
+  if (arbiter_.authority().lent_by != MotionSource::link && ended && d.runs != loan_doors_runs_)
     arbiter_.give_back();
 }
 

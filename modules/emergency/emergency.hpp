@@ -110,6 +110,7 @@ class EmergencyModule final : public Process {
   bool demo_at_boot_ = false;         // [demo] enabled
   bool door_loans_ = false;           // [places] cross_doors
   std::uint32_t door_wish_seen_ = 0;  // PlannerStatus.door_wish last seen
+  std::uint32_t loan_doors_runs_ = 0; // the crossing's ModeStatus.runs when the robot was lent to it
   ModeState gate_seen_ = ModeState::off;  // the passage finder's state at the last run
   EmergencyState last_{};             // previous verdict, for transition logs
   Posture pose_{};                    // the executor's posture of the latest tick seen
