@@ -353,7 +353,7 @@ void PlannerModule::crossing_step(std::uint64_t tick) {
   }
   // Crossed, by the crossing's own end test: the robot must be in the place beyond the door (the
   // place of the point after it), else the crossing stopped short or turned away (seen: "crossed"
-  // 0.5 m before room-12's door, facing 40° off it) and the route ends here.
+  // 0.8 m before room-12's door, facing 40° off it) and the route ends here.
   if (place_graph_ != nullptr && via_next_ + 1 < goal_.vias) {
     const PlannerGoal::Via& after = goal_.via[via_next_ + 1];
     const auto beyond = place_graph_->place_at(places::Vec2(after.x * 1e-4, after.y * 1e-4));
