@@ -36,10 +36,6 @@ std::int64_t cpu_us() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
 }
 
-bool navigating(PlannerState s) {
-  return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving ||
-         s == PlannerState::crossing;
-}
 
 std::uint32_t to_mm(double m) { return m <= 0.0 ? 0u : static_cast<std::uint32_t>(std::lround(m * 1000.0)); }
 
@@ -236,10 +232,14 @@ bool PlannerModule::interrupted(std::uint64_t tick) {
   return true;
 }
 
-void PlannerModule::begin_scan(std::uint64_t tick) {
+void PlannerModule::stop_here(std::uint64_t tick) {
   follower_.cancel();
   planner_.cancel_steps();
   request(tick, 0, 0);
+}
+
+void PlannerModule::begin_scan(std::uint64_t tick) {
+  stop_here(tick);
   state_ = PlannerState::scanning;
   settled_ = false;
   scan_tick_ = tick;
@@ -325,9 +325,7 @@ bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
 }
 
 void PlannerModule::begin_crossing(std::uint64_t tick) {
-  follower_.cancel();
-  planner_.cancel_steps();
-  request(tick, 0, 0);
+  stop_here(tick);
   state_ = PlannerState::crossing;
   ++door_wish_;
   lent_seen_ = false;
@@ -336,7 +334,7 @@ void PlannerModule::begin_crossing(std::uint64_t tick) {
             via_next_ + 1, goal_.vias);
 }
 
-void PlannerModule::crossing_step(std::uint64_t tick) {
+void PlannerModule::crossing_step(std::uint64_t tick, const plan::Pose2& pose) {
   if (claim_.lent()) {
     lent_seen_ = true;
     return;
@@ -357,8 +355,7 @@ void PlannerModule::crossing_step(std::uint64_t tick) {
   if (place_graph_ != nullptr && via_next_ + 1 < goal_.vias) {
     const PlannerGoal::Via& after = goal_.via[via_next_ + 1];
     const auto beyond = place_graph_->place_at(places::Vec2(after.x * 1e-4, after.y * 1e-4));
-    const Posture& p = posture_.peek();
-    const auto here = place_graph_->place_at(places::Vec2(p.x * 1e-4, p.y * 1e-4));
+    const auto here = place_graph_->place_at(places::Vec2(pose.x, pose.y));
     if (beyond && here != beyond) {
       log::warn("planner: the door crossing ended crossed outside {}; the route ends",
                 place_graph_->places()[*beyond].name);
@@ -527,7 +524,7 @@ void PlannerModule::run(Kernel& k) {
     }
     if (state_ == PlannerState::planning) plan_step(tick, pose);
     else if (state_ == PlannerState::moving) move_step(tick, pose);
-    else if (state_ == PlannerState::crossing) crossing_step(tick);
+    else if (state_ == PlannerState::crossing) crossing_step(tick, pose);
     // While the robot drives and scans, the kept tree for the plan's goal grows, a step per
     // activation, so that a replan after new obstacles searches only where it broke
     // (docs/PLANNER.md, "The kept tree").

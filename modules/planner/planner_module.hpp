@@ -22,6 +22,13 @@
 
 namespace robuter {
 
+// Why: the states of a navigation under way (the planner holds, or has lent, the robot): the one
+// rule for "still going" (the module's interruptions, the tests' runs).
+constexpr bool navigating(PlannerState s) {
+  return s == PlannerState::scanning || s == PlannerState::planning || s == PlannerState::moving ||
+         s == PlannerState::crossing;
+}
+
 // Seed 000's loop on the Robuter: with a goal (XG), stop and scan with the ring, mark the map
 // (seed 003's hit counts), plan (rectangle with heading slices by default, seed 004), follow the
 // part of the path within sonar range and in sight, stop, scan, replan, until the goal is
@@ -89,6 +96,8 @@ class PlannerModule final : public Process {
   void serve_goal(std::uint64_t tick);
   // True (and the navigation ended) when the arbiter took the robot back: XH, the operator, an emergency.
   bool interrupted(std::uint64_t tick);
+  // Stops where it is: no path followed, no plan under way, a zero request.
+  void stop_here(std::uint64_t tick);
   // Enters the scanning state: stop and wait for fresh readings.
   void begin_scan(std::uint64_t tick);
   // Scanning: done once every firing sensor was read scan_passes times after the robot stopped.
@@ -109,7 +118,7 @@ class PlannerModule final : public Process {
   // to lend the robot to the door crossing, and wait (docs/PLACES.md "Doors on a route").
   void begin_crossing(std::uint64_t tick);
   // Crossing: while lent, wait; given back, go on after the door (crossed) or end (failed).
-  void crossing_step(std::uint64_t tick);
+  void crossing_step(std::uint64_t tick, const plan::Pose2& pose);
   bool add_via_turn(const plan::Pose2& pose);
   // Adds a turn in place to `theta` (0.01 degree) when free and not yet added for this point.
   bool add_turn(const plan::Pose2& pose, std::int32_t theta);

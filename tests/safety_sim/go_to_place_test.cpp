@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "modules/places/route_table.hpp"
 #include "kernel/log.hpp"
 #include "modules/emergency/emergency.hpp"
+#include "modules/planner/planner_module.hpp"
 #include "tests/safety_sim/support.hpp"
 
 namespace robuter::test::safety_sim {
@@ -64,18 +66,36 @@ std::string set_odometry_at(const places::Vec2& c) {
   return "AC " + std::to_string(std::lround(c.x() * 1e4)) + " " + std::to_string(std::lround(c.y() * 1e4)) + " 0";
 }
 
+// The firmware on the building floor with the robot at a place's centre, heading east.
+struct OnTheFloor {
+  OnTheFloor(std::size_t at, const Config& cfg)
+      : centre(floor_graph().places()[at].centre), world(floor_starting_at(centre)), fw(world.path(), cfg) {}
+  // Why: AC to the centre: odometry = the floor's frame.
+  std::optional<std::string> set_odometry() { return fw.ask(set_odometry_at(centre)); }
+  places::Vec2 centre;  // m, the start
+  TempWorld world;      // the floor with that start
+  SimFirmware fw;       // the firmware on it
+};
+
+// Why: a route's end as the room runs expect it: reached, in the goal place, at its centre, no contact.
+void expect_reached_in(const PlaceRun& r, const char* place) {
+  EXPECT_EQ(r.state, PlannerState::reached);
+  EXPECT_EQ(r.in_place, place);
+  EXPECT_LT(r.error, 0.10);
+  EXPECT_EQ(r.contacts, 0u);
+}
+
 // Why: the robot started at `from`'s centre (odometry = the floor's frame), then XQ to `to`.
 PlaceRun go(std::size_t from, std::size_t to, int max_ticks, bool cross_doors = false) {
   const places::PlaceGraph& g = floor_graph();
   PlaceRun out;
-  TempWorld world(floor_starting_at(g.places()[from].centre));
-  SimFirmware fw(world.path(), floor_config(cross_doors));
+  OnTheFloor floor(from, floor_config(cross_doors));
+  SimFirmware& fw = floor.fw;
   EXPECT_TRUE(fw.ok()) << fw.error();
   if (!fw.ok()) return out;
   SafetyMonitor mon;
   mon.attach(fw);
-  const places::Vec2 c = g.places()[from].centre;
-  EXPECT_EQ(fw.ask(set_odometry_at(c)), "ack");
+  EXPECT_EQ(floor.set_odometry(), "ack");
   fw.run_ticks(5);
   EXPECT_EQ(fw.ask("XQ " + std::to_string(to + 1)), "ack");
   const double t0 = fw.seconds();
@@ -112,9 +132,7 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks, bool cross_doors = 
       was_protective = now;
     }
     out.state = fw.bb().planner_status.reader().peek().state;
-    if (i > 50 && out.state != PlannerState::scanning && out.state != PlannerState::planning &&
-        out.state != PlannerState::moving && out.state != PlannerState::crossing)
-      break;
+    if (i > 50 && !navigating(out.state)) break;
   }
   const auto& robot = fw.sim().robot();
   const PlannerStatus& ps = fw.bb().planner_status.reader().peek();
@@ -170,11 +188,10 @@ TEST(GoToPlace, RefusalsChangeNothingAndXHEndsTheRoute) {
 // Why: the operator's command ends a route as it ends any goal (the arbiter), mid-route, and
 // nothing resumes by itself: the robot stays stopped.
 TEST(GoToPlace, TheOperatorsCommandEndsTheRouteForGood) {
-  const places::PlaceGraph& g = floor_graph();
-  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
-  SimFirmware fw(world.path(), floor_config());
+  OnTheFloor floor(place("corridor-ew-1"), floor_config());
+  SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask(set_odometry_at(g.places()[place("corridor-ew-1")].centre)), "ack");
+  ASSERT_EQ(floor.set_odometry(), "ack");
   fw.run_ticks(5);
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("corridor-ew-6") + 1)), "ack");
   fw.run_ticks(1500);  // under way toward the first point
@@ -192,14 +209,12 @@ TEST(GoToPlace, TheOperatorsCommandEndsTheRouteForGood) {
 // goes on to the next point, with no contact. (Through the door itself the run does not get yet: docs/PLACES.md, "Going to a
 // place", gives the measured runs.)
 TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
-  const places::PlaceGraph& g = floor_graph();
-  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
-  SimFirmware fw(world.path(), floor_config());
+  OnTheFloor floor(place("corridor-ew-1"), floor_config());
+  SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);
-  const places::Vec2 c = g.places()[place("corridor-ew-1")].centre;
-  ASSERT_EQ(fw.ask(set_odometry_at(c)), "ack");
+  ASSERT_EQ(floor.set_odometry(), "ack");
   fw.run_ticks(5);
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   std::uint8_t passed = 0;
@@ -293,11 +308,8 @@ TEST(GoToPlace, FiftyThreeMetresOfCorridorWithNoPriorGrid) {
 // centre. Without it, this run ended `blocked` entering the door (docs/PLACES.md, the table).
 TEST(GoToPlace, ThroughA90cmDoorWithTheDoorCrossing) {
   const PlaceRun r = go(place("corridor-ew-1"), place("room-01"), 30'000, true);
-  EXPECT_EQ(r.state, PlannerState::reached);
-  EXPECT_EQ(r.in_place, "room-01");
-  EXPECT_LT(r.error, 0.10);
+  expect_reached_in(r, "room-01");
   EXPECT_EQ(r.trips, 0u);
-  EXPECT_EQ(r.contacts, 0u);
 }
 
 // Why: after the crossing the route goes on to the point 0.9 m past the door, straight ahead,
@@ -305,10 +317,7 @@ TEST(GoToPlace, ThroughA90cmDoorWithTheDoorCrossing) {
 // door), the first plan turned beside the jambs and the envelope held it there (`blocked`).
 TEST(GoToPlace, ThroughA1mDoorOnToTheRoomsCentre) {
   const PlaceRun r = go(place("corridor-ew-1"), place("room-02"), 30'000, true);
-  EXPECT_EQ(r.state, PlannerState::reached);
-  EXPECT_EQ(r.in_place, "room-02");
-  EXPECT_LT(r.error, 0.10);
-  EXPECT_EQ(r.contacts, 0u);
+  expect_reached_in(r, "room-02");
 }
 
 // Why: the loan is given back when the crossing's own run ends, however many crossings the
@@ -316,22 +325,17 @@ TEST(GoToPlace, ThroughA1mDoorOnToTheRoomsCentre) {
 // begins as one (its run count then lags the arbiter's for good; matching the two counts left
 // the planner waiting in `crossing` forever).
 TEST(GoToPlace, ALoanIsGivenBackWhateverCrossingsTheOperatorRanBefore) {
-  const places::PlaceGraph& g = floor_graph();
-  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
-  SimFirmware fw(world.path(), floor_config(true));
+  OnTheFloor floor(place("corridor-ew-1"), floor_config(true));
+  SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask(set_odometry_at(g.places()[place("corridor-ew-1")].centre)), "ack");
+  ASSERT_EQ(floor.set_odometry(), "ack");
   fw.send_raw("Ad\rAf\rAd\r");
   fw.run_ticks(50);
   (void)fw.ask("Af");
   fw.run_ticks(50);
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   fw.run_ticks(60);  // the planner takes the goal at its next activation
-  const bool ended = fw.run_until([&] {
-    const PlannerState s = fw.bb().planner_status.reader().peek().state;
-    return s != PlannerState::scanning && s != PlannerState::planning && s != PlannerState::moving &&
-           s != PlannerState::crossing;
-  }, 30'000);
+  const bool ended = fw.run_until([&] { return !navigating(fw.bb().planner_status.reader().peek().state); }, 30'000);
   EXPECT_TRUE(ended) << "the route hung in state " << static_cast<int>(fw.bb().planner_status.reader().peek().state);
   EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::reached);
 }
@@ -339,11 +343,10 @@ TEST(GoToPlace, ALoanIsGivenBackWhateverCrossingsTheOperatorRanBefore) {
 // Why: the operator's command ends the route while the crossing has the robot: both end, the
 // robot stops, the detections are whole again, and nothing resumes.
 TEST(GoToPlace, TheOperatorEndsARouteWhileTheCrossingHasTheRobot) {
-  const places::PlaceGraph& g = floor_graph();
-  TempWorld world(floor_starting_at(g.places()[place("corridor-ew-1")].centre));
-  SimFirmware fw(world.path(), floor_config(true));
+  OnTheFloor floor(place("corridor-ew-1"), floor_config(true));
+  SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask(set_odometry_at(g.places()[place("corridor-ew-1")].centre)), "ack");
+  ASSERT_EQ(floor.set_odometry(), "ack");
   fw.run_ticks(5);
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   ASSERT_TRUE(fw.run_until([&] { return fw.bb().doors_status.reader().peek().state == ModeState::crossing; }, 20'000));
