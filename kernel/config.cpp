@@ -397,7 +397,9 @@ void bind_places(Binder& b, PlacesConfig& p) {
   b.string("places.file", p.file);
   b.string("places.grids_dir", p.grids_dir);
   b.boolean("places.cross_doors", p.cross_doors);
+  b.boolean("places.load_grids", p.load_grids);
   if (b.error()) return;
+  if (p.load_grids && p.grids_dir.empty()) return b.fail_key("places.load_grids", "needs places.grids_dir (the folder the grids are read from)");
   if (p.cross_doors && p.file.empty()) return b.fail_key("places.cross_doors", "needs places.file (the routes whose doors are crossed)");
   const std::filesystem::path folder = std::filesystem::path(b.file()).parent_path();
   if (!p.grids_dir.empty()) {

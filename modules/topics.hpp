@@ -222,6 +222,7 @@ struct PlannerGoal {
     std::int32_t y = 0;         // 0.1 mm
     std::int32_t theta = 0;     // 0.01 degree: turn to it there when has_theta (facing a door)
     bool has_theta = false;
+    bool spin = false;          // XQ <n> 1 (exploration): a place's centre, turn a full circle and scan there
   };
   std::int32_t x = 0;           // 0.1 mm
   std::int32_t y = 0;           // 0.1 mm

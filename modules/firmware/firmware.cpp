@@ -32,6 +32,7 @@
 #include "modules/planner/planner_module.hpp"
 #include "modules/planner/prior_map.hpp"
 #include "modules/places/place_graph_file.hpp"
+#include "modules/places/place_grid_memory.hpp"
 #include "modules/places/place_grid_writer.hpp"
 #include "modules/places/wall_raster.hpp"
 #include "modules/firmware/prior_structure.hpp"
@@ -271,6 +272,18 @@ std::optional<std::string> Firmware::setup() {
     planner->set_structure(walls_.get());
     openings_ = places::door_openings(*places_, *walls_);
     planner->set_openings(openings_);
+  }
+  if (cfg_.places.load_grids) {
+    // The grids an earlier run saved: the planner's memory of the floor, on the walls' cells;
+    // not the safety core's (a remembered obstacle explains no echo: docs/PLACES.md).
+    if (!walls_) return "configuration error: places.load_grids: not with planner.map_file (the a-priori map is the memory)";
+    auto memory = places::load_grid_memory(*places_, cfg_.places.grids_dir, walls_->geometry(),
+                                           planner->settings().hit_threshold);
+    if (!memory.ok()) return "configuration error: places.load_grids: " + memory.error().text();
+    log::info("places: {} saved place grids read from {}: the planner's memory of the floor", memory.value().grids,
+              cfg_.places.grids_dir);
+    memory_ = std::make_unique<const plan::OccupancyMap>(std::move(memory.value().map));
+    planner->set_memory(memory_.get());
   }
   if (places_) planner->set_places(places_.get());
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));

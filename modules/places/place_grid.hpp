@@ -75,7 +75,7 @@ plan::Result<PlaceGrid> load_place_grid(const std::string& path);
 
 // Why: a loaded grid becomes knowledge of a map (on the same cells: same cell size, origins a
 // whole number of cells apart, else an error and nothing changed): its obstacles occupied at the
-// most hits and its free cells free where the map does not know the cell; the map's own
+// threshold (one miss clears one that moved) and its free cells free where the map does not know the cell; the map's own
 // knowledge stays. Returns the cells written.
 plan::Result<std::size_t> apply_place_grid(const PlaceGrid& grid, plan::OccupancyMap& map);
 

@@ -35,36 +35,72 @@ Vec2 door_normal_into(const Place& place, const Door& door) {
 }
 
 RouteTable::RouteTable(const PlaceGraph& graph, const ViaRules& rules) : n_(graph.places().size()) {
+  for (const Place& p : graph.places()) centres_.push_back(to_via(p.centre));
+  for (const Door& d : graph.doors())
+    for (const std::size_t into : {d.a, d.b}) {
+      Pass pass;
+      if (d.width >= rules.wide_door) {
+        pass.pts[pass.count++] = to_via(d.at);
+      } else {
+        const Vec2 n = door_normal_into(graph.places()[into], d);
+        ViaPoint before = to_via(d.at - rules.before * n);
+        before.has_theta = true;
+        before.theta = static_cast<std::int32_t>(std::lround(std::atan2(n.y(), n.x()) * 18000.0 / M_PI));
+        if (before.theta <= -18000) before.theta += 36000;
+        pass.pts[pass.count++] = before;
+        pass.pts[pass.count++] = to_via(d.at + rules.after * n);
+      }
+      passes_.push_back(pass);
+    }
   entries_.resize(n_ * n_);
+  std::array<ViaPoint, kMaxPoints> pts{};
   for (std::size_t from = 0; from < n_; ++from)
     for (std::size_t to = 0; to < n_; ++to) {
       const PlaceRoute r = shortest_route(graph, from, to);
       Entry& e = entries_[from * n_ + to];
       if (!r.found) continue;
-      std::vector<ViaPoint> pts;
-      for (const RouteLeg& leg : r.legs) {
-        const Door& d = graph.doors()[leg.door];
-        if (d.width >= rules.wide_door) {
-          pts.push_back(to_via(d.at));
-          continue;
-        }
-        const Vec2 n = door_normal_into(graph.places()[leg.place], d);
-        ViaPoint before = to_via(d.at - rules.before * n);
-        before.has_theta = true;
-        before.theta = static_cast<std::int32_t>(std::lround(std::atan2(n.y(), n.x()) * 18000.0 / M_PI));
-        if (before.theta <= -18000) before.theta += 36000;
-        pts.push_back(before);
-        pts.push_back(to_via(d.at + rules.after * n));
-      }
-      pts.push_back(to_via(graph.places()[to].centre));
-      if (pts.size() > kMaxPoints) continue;
-      e.found = true;
-      e.first = points_.size();
-      e.count = pts.size();
+      e.legs_first = legs_.size();
       e.doors = r.legs.size();
       e.length = r.length;
-      points_.insert(points_.end(), pts.begin(), pts.end());
+      for (const RouteLeg& leg : r.legs) {
+        const std::size_t pass = 2 * leg.door + (leg.place == graph.doors()[leg.door].b ? 1 : 0);
+        legs_.push_back({static_cast<std::uint32_t>(pass), static_cast<std::uint32_t>(leg.place)});
+      }
+      const std::size_t count = write(from, to, false, pts);
+      if (count > kMaxPoints) continue;
+      e.found = true;
+      e.first = points_.size();
+      e.count = count;
+      points_.insert(points_.end(), pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(count));
     }
+}
+
+std::size_t RouteTable::write(std::size_t from, std::size_t to, bool explore, std::span<ViaPoint> out) const {
+  std::size_t n = 0;
+  const auto put = [&](ViaPoint p) {
+    if (n < out.size()) out[n] = p;
+    ++n;
+  };
+  const auto spin = [](ViaPoint p) {
+    p.spin = true;
+    return p;
+  };
+  if (explore) put(spin(centres_[from]));
+  const Entry& e = entry(from, to);
+  for (std::size_t k = 0; k < e.doors; ++k) {
+    const LegRef& leg = legs_[e.legs_first + k];
+    const Pass& pass = passes_[leg.pass];
+    for (std::size_t i = 0; i < pass.count; ++i) put(pass.pts[i]);
+    if (explore) put(spin(centres_[leg.place]));
+  }
+  put(centres_[to]);
+  return n;
+}
+
+std::size_t RouteTable::explore_points(std::size_t from, std::size_t to, std::span<ViaPoint> out) const {
+  if (!found(from, to)) return 0;
+  const std::size_t n = write(from, to, true, out);
+  return n <= out.size() ? n : 0;
 }
 
 std::span<const ViaPoint> RouteTable::points(std::size_t from, std::size_t to) const {

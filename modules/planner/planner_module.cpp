@@ -282,9 +282,12 @@ bool PlannerModule::add_via_turn(const plan::Pose2& pose) {
 }
 
 bool PlannerModule::add_turn(const plan::Pose2& pose, std::int32_t theta) {
+  return add_turn_to(pose, pose.heading + std::remainder(theta * kCentideg - pose.heading, 2.0 * plan::kPi));
+}
+
+bool PlannerModule::add_turn_to(const plan::Pose2& pose, double target) {
   if (final_turn_) return false;
   final_turn_ = true;
-  const double target = pose.heading + std::remainder(theta * kCentideg - pose.heading, 2.0 * plan::kPi);
   if (s_.planner.footprint == plan::FootprintKind::Rectangle) {
     // The turn sweeps the slices between the two headings: each must leave room to turn.
     const int k = planner_.slices();
@@ -318,6 +321,11 @@ void PlannerModule::next_via(std::uint64_t tick, const char* why) {
 }
 
 bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
+  if (goal_.via[via_next_].spin) {  // exploring: a full turn at the place's centre, then the scan
+    if (add_turn_to(pose, pose.heading + 2.0 * plan::kPi)) return true;
+    next_via(tick, "turned round at the place's centre: scanning it");
+    return false;
+  }
   if (add_via_turn(pose)) return true;
   if (cfg_.places.cross_doors && goal_.via[via_next_].has_theta) begin_crossing(tick);
   else next_via(tick, "reached");

@@ -62,6 +62,9 @@ class PlannerModule final : public Process {
   // Known structure the moving window takes (a place graph's walls: places/wall_raster.hpp),
   // at init (set_map) and after each move. It must outlive the module. Set before init().
   void set_structure(const plan::OccupancyMap* structure) { planner_.set_structure(structure); }
+  // Cells remembered from an earlier run (saved place grids, [places] load_grids), taken after
+  // the structure (plan::Planner::set_memory). Same conditions.
+  void set_memory(const plan::OccupancyMap* memory) { planner_.set_memory(memory); }
   // Cells kept free whatever the ring says (a place graph's door openings, m, odometry frame:
   // places/wall_raster.hpp), re-freed after each activation's readings. Must outlive the module.
   void set_openings(std::span<const plan::Point2> cells) { openings_ = cells; }
@@ -111,8 +114,9 @@ class PlannerModule final : public Process {
   // m: a via point counts as passed this close (looser than the goal's: only a way point).
   double via_tolerance() const { return std::max(s_.goal_tolerance, kViaTolerance); }
   void next_via(std::uint64_t tick, const char* why);
-  // At a via point: its turn first (true: the turn started), then, at the point before a narrow
-  // door with [places] cross_doors, the door crossing, else the next point.
+  // At a via point: its turn first (true: the turn started; exploring, a full circle at a place's
+  // centre), then, at the point before a narrow door with [places] cross_doors, the door
+  // crossing, else the next point (after a scan: the place's grid is kept then).
   bool via_reached(std::uint64_t tick, const plan::Pose2& pose);
   // At the point before a narrow door, turned to face it ([places] cross_doors): ask the arbiter
   // to lend the robot to the door crossing, and wait (docs/PLACES.md "Doors on a route").
@@ -122,6 +126,8 @@ class PlannerModule final : public Process {
   bool add_via_turn(const plan::Pose2& pose);
   // Adds a turn in place to `theta` (0.01 degree) when free and not yet added for this point.
   bool add_turn(const plan::Pose2& pose, std::int32_t theta);
+  // The same to the unwrapped heading `target` (rad; a full circle for an exploration's scan).
+  bool add_turn_to(const plan::Pose2& pose, double target);
   // One control step; a new obstacle on the prefix or its end leads to a scan.
   void move_step(std::uint64_t tick, const plan::Pose2& pose);
   // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.

@@ -3,6 +3,7 @@
 #include "modules/serial/link_port.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -432,18 +433,23 @@ PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
 }
 
 // XQ: the route from the robot's place (its odometry position) to place `number`, as the
-// planner's goal with the route's via points; checked here so that a refusal changes nothing:
-// the place exists, the robot is in a place, a route joins them, the planner's window can hold
-// each of its legs (planner::goal_acceptable, leg by leg), no emergency is latched (as XG).
-PortResult LinkPort::go_to_place(std::int32_t number) noexcept {
+// planner's goal with the route's via points (exploring: RouteTable::explore_points); checked
+// here so that a refusal changes nothing: the place exists, the robot is in a place, a route
+// joins them (and fits the goal's points), the planner's window can hold each of its legs
+// (planner::goal_acceptable, leg by leg), no emergency is latched (as XG).
+PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
   if (places_ == nullptr || routes_ == nullptr || !planner_running()) return PortResult::unavailable;
   if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
   const Posture& at = posture_.peek();
   const auto here = places_->place_at(places::Vec2(at.x * 1e-4, at.y * 1e-4));
   const std::size_t to = static_cast<std::size_t>(number - 1);
   if (!here || !routes_->found(*here, to)) return PortResult::out_of_range;
-  const std::span<const places::ViaPoint> pts = routes_->points(*here, to);
   static_assert(places::RouteTable::kMaxPoints <= PlannerGoal::kMaxVias + 1, "a route's points fit the goal");
+  std::array<places::ViaPoint, places::RouteTable::kMaxPoints> buffer{};  // on the link's stack: no allocation
+  const std::span<const places::ViaPoint> pts =
+      explore ? std::span<const places::ViaPoint>(buffer.data(), routes_->explore_points(*here, to, buffer))
+              : routes_->points(*here, to);
+  if (pts.empty()) return PortResult::out_of_range;  // exploring: more points than a goal holds
   const planner::MapWindow now =
       planner_status_.generation() > 0
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
@@ -463,7 +469,8 @@ PortResult LinkPort::go_to_place(std::int32_t number) noexcept {
     g.active = true;
     g.vias = static_cast<std::uint8_t>(pts.size() - 1);
     g.place = static_cast<std::uint16_t>(number);
-    for (std::size_t k = 0; k + 1 < pts.size(); ++k) g.via[k] = {pts[k].x, pts[k].y, pts[k].theta, pts[k].has_theta};
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k)
+      g.via[k] = {pts[k].x, pts[k].y, pts[k].theta, pts[k].has_theta, pts[k].spin};
     ++g.seq;
   });
   act(OperatorAction::start_planner);

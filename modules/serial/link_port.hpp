@@ -94,7 +94,7 @@ class LinkPort final : public protocol::RobotPort {
   protocol::PortResult planner_status(protocol::PlannerReport& out) const noexcept override;
   protocol::PortResult place_here(protocol::PlaceReport& out) const noexcept override;
   protocol::PortResult place_info(std::int32_t number, protocol::PlaceReport& out) const noexcept override;
-  protocol::PortResult go_to_place(std::int32_t number) noexcept override;
+  protocol::PortResult go_to_place(std::int32_t number, bool explore) noexcept override;
   // Why: the place graph XN, XI and XQ answer from, and its routes (immutable, owned by the
   // firmware); null = none.
   void set_places(const places::PlaceGraph* graph, const places::RouteTable* routes) {

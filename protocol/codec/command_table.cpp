@@ -11,8 +11,9 @@ namespace {
 
 // Parameter ranges, in the units of docs/PROTOCOL.md. The port may refuse narrower ranges.
 constexpr IntRange kAny{};                   // any 32-bit value (x, y in 0.1 mm)
-constexpr IntRange kTheta{-17999, 18000};
-constexpr IntRange kPlaceNumber{1, 9999};   // a place's number, 1-based in the file's order    // 0.01 degree, (-180, 180]
+constexpr IntRange kTheta{-17999, 18000};     // 0.01 degree, (-180, 180]
+constexpr IntRange kPlaceNumber{1, 9999};   // a place's number, 1-based in the file's order
+constexpr IntRange kFlag{0, 1};              // off / on
 constexpr IntRange kSpeed{-1000, 1000};      // cm/s: far beyond any Robuter, a sanity bound
 constexpr IntRange kNodeDelay{0, 1000};      // ticks
 constexpr IntRange kUsTimeout{1, 1000};      // ms
@@ -94,8 +95,8 @@ constexpr std::array kTable = {
     CommandRow{'X', 'N', C::get_place, no_params(), handle_get_place, "the place the robot is in (place graph)"},
     CommandRow{'X', 'I', C::get_place_info, integers(kPlaceNumber), handle_get_place_info,
                "place n: name, centre, neighbours"},
-    CommandRow{'X', 'Q', C::go_to_place, integers(kPlaceNumber), handle_go_to_place,
-               "go to place n (route over the place graph)"},
+    CommandRow{'X', 'Q', C::go_to_place, integers_from(1, kPlaceNumber, kFlag), handle_go_to_place,
+               "go to place n (route over the place graph) [1: exploring, a full-turn scan at each place]"},
 };
 
 }  // namespace

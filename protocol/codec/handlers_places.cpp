@@ -40,10 +40,10 @@ void handle_get_place_info(const Command& cmd, RobotPort& port, ReplyWriter& out
   out.fields(std::span<const std::int32_t>(r.neighbour.data(), listed));
 }
 
-// XQ <n> → `ack`, or an error changing nothing: the port checks the place, the robot's place,
-// the route and the emergency (RobotPort::go_to_place).
+// XQ <n> [e] → `ack`, or an error changing nothing: the port checks the place, the robot's place,
+// the route and the emergency (RobotPort::go_to_place). e = 1: seed 003's exploration.
 void handle_go_to_place(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
-  reply_result(port.go_to_place(cmd.ints[0]), out);
+  reply_result(port.go_to_place(cmd.ints[0], cmd.int_count == 2 && cmd.ints[1] == 1), out);
 }
 
 }  // namespace robuter::protocol

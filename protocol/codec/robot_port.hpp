@@ -91,9 +91,11 @@ class RobotPort {
 
   // XQ: go to place `number` (1-based) over the place graph's route, through the planner;
   // out_of_range for no such place, the robot outside every place, or no route that the
-  // planner's window can follow; refused_emergency while latched (as XG).
-  virtual PortResult go_to_place(std::int32_t number) noexcept {
+  // planner's window can follow; refused_emergency while latched (as XG). `explore`: seed 003's
+  // exploration of that route (a full turn and a scan at each place's centre, docs/PLACES.md).
+  virtual PortResult go_to_place(std::int32_t number, bool explore) noexcept {
     (void)number;
+    (void)explore;
     return PortResult::unavailable;
   }
 

@@ -47,6 +47,9 @@ constexpr Schema integers(IntRange a, IntRange b, IntRange c) noexcept {
   return Schema{SchemaKind::integers, 3, {a, b, c}, {}};
 }
 // The first `min` integers required, the rest optional (XG: x y, theta optional).
+constexpr Schema integers_from(std::uint8_t min, IntRange a, IntRange b) noexcept {
+  return Schema{SchemaKind::integers, 2, {a, b, IntRange{}}, {}, min};
+}
 constexpr Schema integers_from(std::uint8_t min, IntRange a, IntRange b, IntRange c) noexcept {
   return Schema{SchemaKind::integers, 3, {a, b, c}, {}, min};
 }

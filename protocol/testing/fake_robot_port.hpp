@@ -41,6 +41,7 @@ class FakeRobotPort final : public RobotPort {
   std::int32_t place_count = 0;              // places in the graph; 0: no place graph (XN, XI unavailable)
   PlaceReport here{};                        // XN answer (count filled in)
   std::int32_t last_place_goal = 0;          // last XQ accepted by the checks above
+  bool last_place_explore = false;           // its exploration flag (XQ <n> 1)
   PlaceReport info{};                        // XI answer (count and number filled in)
 
   // ---- what requests return ----
@@ -177,10 +178,13 @@ class FakeRobotPort final : public RobotPort {
     out.count = place_count;
     return PortResult::ok;
   }
-  PortResult go_to_place(std::int32_t number) noexcept override {
+  PortResult go_to_place(std::int32_t number, bool explore) noexcept override {
     if (place_count == 0) return PortResult::unavailable;
     if (number > place_count) return PortResult::out_of_range;
-    if (place_goal_result == PortResult::ok) last_place_goal = number;
+    if (place_goal_result == PortResult::ok) {
+      last_place_goal = number;
+      last_place_explore = explore;
+    }
     return place_goal_result;
   }
   PortResult place_info(std::int32_t number, PlaceReport& out) const noexcept override {

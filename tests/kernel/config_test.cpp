@@ -176,6 +176,14 @@ TEST(Config, PlaceGridsFolderIsRelativeAndNeedsThePlaceGraph) {
   ASSERT_TRUE(no_graph);
   EXPECT_NE(no_graph->message().find("r.toml:2: key 'places.grids_dir'"), std::string::npos) << no_graph->message();
   EXPECT_NE(no_graph->message().find("needs places.file"), std::string::npos) << no_graph->message();
+  Config f;
+  ASSERT_FALSE(parse_config("[places]\nfile = \"f.toml\"\ngrids_dir = \"g\"\nload_grids = true\n", "r.toml", f));
+  EXPECT_TRUE(f.places.load_grids);
+  Config g;
+  const auto no_dir = parse_config("[places]\nfile = \"f.toml\"\nload_grids = true\n", "r.toml", g);
+  ASSERT_TRUE(no_dir);
+  EXPECT_NE(no_dir->message().find("r.toml:3: key 'places.load_grids'"), std::string::npos) << no_dir->message();
+  EXPECT_NE(no_dir->message().find("needs places.grids_dir"), std::string::npos) << no_dir->message();
 }
 
 // Seed 003's initial count must stay below the threshold (a first miss would make an obstacle).

@@ -11,6 +11,7 @@
 
 #include "modules/places/place_graph_file.hpp"
 #include "modules/places/place_grid.hpp"
+#include "modules/places/place_grid_memory.hpp"
 #include "modules/places/wall_raster.hpp"
 
 namespace robuter::places {
@@ -215,6 +216,49 @@ TEST(PlaceGrid, AppliedWhereTheMapDoesNotKnow) {
       EXPECT_EQ(other.state({x, y}), CellState::Unknown);
       EXPECT_EQ(shifted.state({x, y}), CellState::Unknown);
     }
+}
+
+// Why: a later run's memory ([places] load_grids): each place's saved file is read and applied
+// to one map of the floor; places without a file are unknown; a broken file, a file holding
+// another place's grid, or a grid on other cells stops it with the file named.
+TEST(GridMemory, SavedGridsReadBackIntoOneMapOfTheFloor) {
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("grid_memory_test_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const PlaceGraph rooms = two_rooms();
+  const plan::MapGeometry floor{12, 4, 0.25, {-0.5, -0.25}};
+  const auto none = load_grid_memory(rooms, dir.string(), floor, 2);
+  ASSERT_TRUE(none.ok()) << none.error().text();
+  EXPECT_EQ(none.value().grids, 0u);
+  ASSERT_TRUE(save_place_grid(cut_place(rooms, 0, small_map(), plan::Point2{0.1, 0.1}, 0.0),
+                              place_grid_path(dir.string(), "west")).ok());
+  std::ofstream(dir / "notes.txt") << "not a place: not read\n";
+  const auto one = load_grid_memory(rooms, dir.string(), floor, 2);
+  ASSERT_TRUE(one.ok()) << one.error().text();
+  EXPECT_EQ(one.value().grids, 1u);
+  const plan::OccupancyMap& m = one.value().map;
+  EXPECT_EQ(m.state({3, 1}), CellState::Free);
+  EXPECT_EQ(m.state({4, 1}), CellState::Occupied);
+  EXPECT_EQ(m.state({5, 2}), CellState::Occupied);
+  EXPECT_EQ(m.state({8, 1}), CellState::Unknown) << "the east room: no file";
+  EXPECT_TRUE(m.changes().empty()) << "a map at rest";
+  // The east room's file holding the west room's grid: refused, naming the file.
+  std::filesystem::copy_file(dir / "west.txt", dir / "east.txt");
+  const auto swapped = load_grid_memory(rooms, dir.string(), floor, 2);
+  ASSERT_FALSE(swapped.ok());
+  EXPECT_EQ(swapped.error().file, (dir / "east.txt").string());
+  std::filesystem::remove(dir / "east.txt");
+  // On other cells: refused.
+  const auto other = load_grid_memory(rooms, dir.string(), plan::MapGeometry{12, 4, 0.20, {-0.5, -0.25}}, 2);
+  ASSERT_FALSE(other.ok());
+  EXPECT_EQ(other.error().file, (dir / "west.txt").string());
+  // A broken file: refused with its line.
+  std::ofstream(dir / "west.txt", std::ios::app) << "extra row\n";
+  const auto broken = load_grid_memory(rooms, dir.string(), floor, 2);
+  ASSERT_FALSE(broken.ok());
+  EXPECT_EQ(broken.error().file, (dir / "west.txt").string());
+  EXPECT_GT(broken.error().line, 0);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

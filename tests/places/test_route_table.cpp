@@ -2,6 +2,8 @@
 // The route table: every pair's route as via points (before and after a narrow door, the middle of a wide one).
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "modules/places/place_graph_file.hpp"
 #include "modules/places/place_route.hpp"
 #include "modules/places/route_table.hpp"
@@ -59,6 +61,35 @@ TEST(RouteTable, NarrowDoorsTwoPointsWideDoorsOneThenTheCentre) {
   EXPECT_TRUE(t.points(0, 3).empty());
 }
 
+// Why: exploring (XQ <n> 1) visits each place's centre on the route with a full-turn scan: the
+// start's, then after each door's points the entered place's, then the goal (the last centre
+// again); the door points are the plain route's; a buffer too small gives 0, not a cut route.
+TEST(RouteTable, ExploringAddsEachPlacesCentreToSpinAt) {
+  const PlaceGraph g = three_and_one();
+  const RouteTable t(g);
+  std::array<ViaPoint, RouteTable::kMaxPoints> out{};
+  const std::size_t n = t.explore_points(0, 2, out);
+  ASSERT_EQ(n, 7u);
+  const auto plain = t.points(0, 2);
+  const auto is = [](const ViaPoint& p, std::int32_t x, std::int32_t y, bool spin) {
+    return p.x == x && p.y == y && p.spin == spin;
+  };
+  EXPECT_TRUE(is(out[0], 20000, 20000, true)) << "p0's centre";
+  EXPECT_TRUE(is(out[1], plain[0].x, plain[0].y, false));
+  EXPECT_TRUE(out[1].has_theta) << "the point before the narrow door still faces it";
+  EXPECT_TRUE(is(out[2], plain[1].x, plain[1].y, false));
+  EXPECT_TRUE(is(out[3], 60000, 20000, true)) << "p1's centre";
+  EXPECT_TRUE(is(out[4], plain[2].x, plain[2].y, false)) << "the wide door's middle";
+  EXPECT_TRUE(is(out[5], 100000, 20000, true)) << "p2's centre, to scan";
+  EXPECT_TRUE(is(out[6], 100000, 20000, false)) << "and as the goal";
+  for (const ViaPoint& p : plain) EXPECT_FALSE(p.spin) << "the plain route does not spin";
+  EXPECT_EQ(t.explore_points(1, 1, out), 2u) << "its own place: the centre to spin at, then the goal";
+  EXPECT_TRUE(out[0].spin);
+  EXPECT_EQ(t.explore_points(0, 3, out), 0u) << "no route";
+  std::array<ViaPoint, 6> small{};
+  EXPECT_EQ(t.explore_points(0, 2, small), 0u) << "more points than the buffer";
+}
+
 // Why: on the shipped floor every pair is joined, within the planner goal's 64 points, and
 // every via point lies inside a place of the route (never in a wall).
 TEST(RouteTable, EveryPairOfTheBuildingFloor) {
@@ -70,6 +101,8 @@ TEST(RouteTable, EveryPairOfTheBuildingFloor) {
     for (std::size_t b = 0; b < g.places().size(); ++b) {
       ASSERT_TRUE(t.found(a, b)) << g.places()[a].name << " -> " << g.places()[b].name;
       ASSERT_LE(t.points(a, b).size(), RouteTable::kMaxPoints);
+      std::array<ViaPoint, RouteTable::kMaxPoints> explore{};
+      EXPECT_GT(t.explore_points(a, b, explore), t.points(a, b).size()) << "every exploration fits a goal";
       for (const ViaPoint& p : t.points(a, b))
         EXPECT_TRUE(g.place_at({p.x * 1e-4, p.y * 1e-4}).has_value())
             << g.places()[a].name << " -> " << g.places()[b].name << ": (" << p.x << ", " << p.y << ")";

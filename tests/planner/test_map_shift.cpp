@@ -76,5 +76,42 @@ TEST(MapShift, LayersRebuiltStepByStepEqualAFreshPlanner) {
   EXPECT_EQ(a.expanded, b.expanded);
 }
 
+// Why: after a move the window takes the structure (walls at the most hits), then the memory of
+// an earlier run (its obstacles at the threshold, its free cells free), each only where the map
+// and those before it leave the cell unknown; a remembered obstacle clears with one miss, a wall
+// does not.
+TEST(MapShift, TheWindowTakesTheStructureThenTheMemoryWhereItKnowsNothing) {
+  const MapGeometry floor{40, 10, 0.05, {-1.0, -0.25}};  // the floor: a strip of 2 m x 0.5 m
+  OccupancyMap walls(floor, 2), memory(floor, 2);
+  walls.mark_occupied({25, 5});
+  memory.mark_occupied({25, 5});  // the wall again: the structure's stays
+  memory.mark_occupied({26, 5});  // a remembered obstacle
+  memory.mark_free({27, 5});      // remembered free
+  memory.mark_free({28, 5});
+  PlannerConfig cfg;
+  Planner p(cfg);
+  p.set_structure(&walls);
+  p.set_memory(&memory);
+  OccupancyMap window(MapGeometry{20, 10, 0.05, {-1.0, -0.25}}, 2);  // the floor's cells 0..19 at first
+  p.set_map(window);
+  EXPECT_EQ(p.map().state({19, 5}), CellState::Unknown);
+  p.shift_map(10, 0);  // now the floor's cells 10..29
+  while (!p.rebuild_step(100)) {}
+  const OccupancyMap& m = p.map();
+  EXPECT_EQ(m.count({15, 5}), OccupancyMap::kMaxCount) << "the wall: the most hits";
+  EXPECT_EQ(m.count({16, 5}), m.threshold()) << "the remembered obstacle: the threshold";
+  EXPECT_EQ(m.state({17, 5}), CellState::Free);
+  EXPECT_EQ(m.state({18, 5}), CellState::Free);
+  EXPECT_EQ(m.state({19, 5}), CellState::Unknown) << "neither knows it";
+  // The memory fills only unknown cells: a window that saw (28, 5) occupied keeps it.
+  Planner q(cfg);
+  q.set_memory(&memory);
+  OccupancyMap seen(MapGeometry{20, 10, 0.05, {-0.5, -0.25}}, 2);  // floor cells 10..29
+  seen.mark_occupied({18, 5});
+  q.set_map(seen);
+  EXPECT_EQ(q.map().state({18, 5}), CellState::Occupied) << "what the run saw stays";
+  EXPECT_EQ(q.map().state({17, 5}), CellState::Free) << "set_map takes the memory too";
+}
+
 }  // namespace
 }  // namespace robuter::plan

@@ -24,14 +24,24 @@ TEST(PlaceMessages, XQAcksOrSaysWhyNot) {
   h.codec.session().verbose_errors = true;
   EXPECT_EQ(h.ask("XQ 16"), "ack");
   EXPECT_EQ(h.port.last_place_goal, 16);
+  EXPECT_FALSE(h.port.last_place_explore);
+  EXPECT_EQ(h.ask("XQ 17 1"), "ack") << "exploring";
+  EXPECT_EQ(h.port.last_place_goal, 17);
+  EXPECT_TRUE(h.port.last_place_explore);
+  EXPECT_EQ(h.ask("XQ 16 0"), "ack") << "not exploring, said so";
+  EXPECT_FALSE(h.port.last_place_explore);
   EXPECT_EQ(h.ask("XQ 33"), "error 4 out-of-range") << "past the last place: the port";
   EXPECT_EQ(h.ask("XQ 0"), "error 4 out-of-range") << "numbers start at 1: the decoder";
   EXPECT_EQ(h.ask("XQ"), "error 2 bad-parameter-count");
-  EXPECT_EQ(h.ask("XQ 1 2"), "error 2 bad-parameter-count");
+  EXPECT_EQ(h.ask("XQ 1 2"), "error 4 out-of-range") << "the exploration flag is 0 or 1";
+  EXPECT_EQ(h.ask("XQ 1 1 1"), "error 2 bad-parameter-count");
+  EXPECT_EQ(h.ask("XQ 1 x"), "error 3 not-a-number");
+  EXPECT_EQ(h.port.last_place_goal, 16);
   EXPECT_EQ(h.ask("XQ room-16"), "error 3 not-a-number");
   h.port.place_goal_result = PortResult::refused_emergency;
   EXPECT_EQ(h.ask("XQ 5"), "error 7 refused-emergency") << "latched: as XG";
   EXPECT_EQ(h.port.last_place_goal, 16) << "nothing changed by the refusals";
+  EXPECT_FALSE(h.port.last_place_explore);
 }
 
 TEST(PlaceMessages, XNNamesThePlaceOrADash) {

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +21,7 @@
 #include "kernel/log.hpp"
 #include "modules/emergency/emergency.hpp"
 #include "modules/planner/planner_module.hpp"
+#include "protocol/codec/vocabulary.hpp"
 #include "tests/safety_sim/support.hpp"
 
 namespace robuter::test::safety_sim {
@@ -46,6 +48,7 @@ struct PlaceRun {
   double seconds = 0.0;                     // s of robot time
   double error = 0.0;                       // m from the goal place's centre at the end
   std::uint32_t replans = 0, scans = 0, trips = 0, protective = 0;
+  std::uint32_t crossings = 0;              // door crossings run ([places] cross_doors)
   std::uint32_t run_us_max = 0;             // µs, the planner's longest activation
   std::uint64_t contacts = 0;               // µs of contact with the detection on
   double closest = 0.0;                     // m, closest approach with the detection on
@@ -72,6 +75,12 @@ struct OnTheFloor {
       : centre(floor_graph().places()[at].centre), world(floor_starting_at(centre)), fw(world.path(), cfg) {}
   // Why: AC to the centre: odometry = the floor's frame.
   std::optional<std::string> set_odometry() { return fw.ask(set_odometry_at(centre)); }
+  // Why: the firmware up, the odometry set (AC taken) and a few ticks run: ready for an XQ.
+  bool start() {
+    const bool ok = fw.ok() && set_odometry() == "ack";
+    fw.run_ticks(5);
+    return ok;
+  }
   places::Vec2 centre;  // m, the start
   TempWorld world;      // the floor with that start
   SimFirmware fw;       // the firmware on it
@@ -95,8 +104,7 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks, bool cross_doors = 
   if (!fw.ok()) return out;
   SafetyMonitor mon;
   mon.attach(fw);
-  EXPECT_EQ(floor.set_odometry(), "ack");
-  fw.run_ticks(5);
+  EXPECT_TRUE(floor.start());
   EXPECT_EQ(fw.ask("XQ " + std::to_string(to + 1)), "ack");
   const double t0 = fw.seconds();
   const bool logs = std::getenv("ROBUTER_XQ_LOG") != nullptr;  // the planner's log, for experiments
@@ -144,14 +152,15 @@ PlaceRun go(std::size_t from, std::size_t to, int max_ticks, bool cross_doors = 
   out.run_us_max = ps.run_us_max;
   out.trips = e.trips;
   out.protective = e.protective_stops;
+  out.crossings = fw.bb().doors_status.reader().peek().runs;
   out.contacts = mon.contact_us_on;
   out.closest = mon.min_clearance_us_on;
   const auto at = g.place_at({robot.pose().x, robot.pose().y});
   out.in_place = at ? g.places()[*at].name : "-";
-  std::printf("XQ %s -> %s: state %d after %.1f s, in %s, %.2f m from the centre, %u replans, %u scans, trips %u, "
+  std::printf("XQ %s -> %s: state %s after %.1f s, in %s, %.2f m from the centre, %u replans, %u scans, %u door crossings, trips %u, "
               "protective stops %u, closest %.0f mm, contacts %llu us, worst activation %u us; violations %zu %s\n",
-              g.places()[from].name.c_str(), g.places()[to].name.c_str(), static_cast<int>(out.state), out.seconds,
-              out.in_place.c_str(), out.error, out.replans, out.scans, out.trips, out.protective, out.closest * 1000.0,
+              g.places()[from].name.c_str(), g.places()[to].name.c_str(), std::string(protocol::word(out.state)).c_str(), out.seconds,
+              out.in_place.c_str(), out.error, out.replans, out.scans, out.crossings, out.trips, out.protective, out.closest * 1000.0,
               static_cast<unsigned long long>(out.contacts), out.run_us_max, static_cast<std::size_t>(mon.violations()),
               mon.first_violation.c_str());
   EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
@@ -191,8 +200,7 @@ TEST(GoToPlace, TheOperatorsCommandEndsTheRouteForGood) {
   OnTheFloor floor(place("corridor-ew-1"), floor_config());
   SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(floor.set_odometry(), "ack");
-  fw.run_ticks(5);
+  ASSERT_TRUE(floor.start());
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("corridor-ew-6") + 1)), "ack");
   fw.run_ticks(1500);  // under way toward the first point
   ASSERT_EQ(fw.ask("AM 0 0"), "ack");
@@ -214,8 +222,7 @@ TEST(GoToPlace, TheRouteIsDrivenPointByPoint) {
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);
-  ASSERT_EQ(floor.set_odometry(), "ack");
-  fw.run_ticks(5);
+  ASSERT_TRUE(floor.start());
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   std::uint8_t passed = 0;
   for (int i = 0; i < 20'000 && passed == 0; ++i) {
@@ -271,6 +278,16 @@ TEST(GoToPlace, EachScanSavesItsPlacesGrid) {
   }
   EXPECT_GT(walls, 100u);
   EXPECT_GT(free, 1000u);
+
+  // A later run reading a broken grid ([places] load_grids) does not start, and says which file.
+  std::ofstream(dir / "corridor-ew-1.txt", std::ios::app) << "one row too many\n";
+  Config later = floor_config();
+  later.places.grids_dir = dir.string();
+  later.places.load_grids = true;
+  SimFirmware broken(world.path(), later);
+  EXPECT_FALSE(broken.ok());
+  EXPECT_NE(broken.error().find("places.load_grids: " + (dir / "corridor-ew-1.txt").string() + ":"), std::string::npos)
+      << broken.error();
   std::filesystem::remove_all(dir);
 
   // A grids_dir that is a file, or a folder that cannot be made under a file: refused at start.
@@ -346,8 +363,7 @@ TEST(GoToPlace, TheOperatorEndsARouteWhileTheCrossingHasTheRobot) {
   OnTheFloor floor(place("corridor-ew-1"), floor_config(true));
   SimFirmware& fw = floor.fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(floor.set_odometry(), "ack");
-  fw.run_ticks(5);
+  ASSERT_TRUE(floor.start());
   ASSERT_EQ(fw.ask("XQ " + std::to_string(place("room-01") + 1)), "ack");
   ASSERT_TRUE(fw.run_until([&] { return fw.bb().doors_status.reader().peek().state == ModeState::crossing; }, 20'000));
   EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::crossing);
@@ -364,6 +380,83 @@ TEST(GoToPlace, TheOperatorEndsARouteWhileTheCrossingHasTheRobot) {
   const auto after = fw.sim().robot().pose();
   EXPECT_LT(std::hypot(after.x - before.x, after.y - before.y), 0.005) << "nothing resumes";
   EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::operator_ended);
+}
+
+// Why: seed 003's exploration (XQ <n> 1) on the floor, no prior grid, the detection on: the route
+// corridor-ew-1 -> corridor-ew-2 -> junction-a -> corridor-ew-3 turns a full circle at each of the
+// four places' centres (within the route point's 0.30 m), scans, and saves each place's grid; the
+// route ends at the last centre, with no contact.
+TEST(GoToPlace, ExploringTurnsAFullCircleAtEachPlaceAndSavesItsGrid) {
+  const places::PlaceGraph& g = floor_graph();
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("robuter_explore_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  Config cfg = floor_config();
+  cfg.places.grids_dir = dir.string();
+  OnTheFloor floor(place("corridor-ew-1"), cfg);
+  SimFirmware& fw = floor.fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  SafetyMonitor mon;
+  mon.attach(fw);
+  ASSERT_TRUE(floor.start());
+  const std::array<const char*, 4> chain = {"corridor-ew-1", "corridor-ew-2", "junction-a", "corridor-ew-3"};
+  std::array<double, 4> turned{};  // rad turned within 0.35 m of each centre
+  double last = fw.sim().robot().pose().theta;
+  ASSERT_EQ(fw.ask("XQ " + std::to_string(place("corridor-ew-3") + 1) + " 1"), "ack");
+  for (int i = 0; i < 40'000; ++i) {
+    fw.step();
+    if (i % 1000 == 999) (void)fw.ask("XP");  // a client polls: a silent link trips after 3 min
+    const auto& p = fw.sim().robot().pose();
+    const double d = std::abs(std::remainder(p.theta - last, 2.0 * M_PI));
+    last = p.theta;
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const places::Vec2 c = g.places()[place(chain[k])].centre;
+      if (std::hypot(p.x - c.x(), p.y - c.y()) < 0.35) turned[k] += d;
+    }
+    if (i > 50 && !navigating(fw.bb().planner_status.reader().peek().state)) break;
+  }
+  EXPECT_EQ(fw.bb().planner_status.reader().peek().state, PlannerState::reached);
+  const auto& end = fw.sim().robot().pose();
+  std::printf("explored in %.1f s of robot time, %u replans, %u scans; turned at the centres %.0f %.0f %.0f %.0f deg; "
+              "grids written %zu\n", fw.seconds(), fw.bb().planner_status.reader().peek().plans,
+              fw.bb().planner_status.reader().peek().scans, turned[0] * 57.3, turned[1] * 57.3, turned[2] * 57.3,
+              turned[3] * 57.3, static_cast<std::size_t>(fw.firmware().place_grids()->written()));
+  EXPECT_EQ(g.place_at({end.x, end.y}), place("corridor-ew-3"));
+  fw.run_ticks(50);  // the writer's last file
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    EXPECT_GE(turned[k], 2.0 * M_PI - 0.1) << chain[k] << ": a full circle at its centre";
+    EXPECT_LT(turned[k], 2.0 * (2.0 * M_PI)) << chain[k] << ": once";
+    const auto grid = places::load_place_grid((dir / (std::string(chain[k]) + ".txt")).string());
+    ASSERT_TRUE(grid.ok()) << chain[k] << ": " << grid.error().text();
+    std::size_t free = 0;
+    for (const plan::CellState s : grid.value().cells) free += s == plan::CellState::Free;
+    EXPECT_GT(free, 500u) << chain[k];
+  }
+  EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
+  EXPECT_EQ(mon.contact_us_on, 0u);
+
+  // A later run with [places] load_grids starts from those grids: at its first plan its map
+  // knows corridor-ew-2's centre, 10 m away (beyond the ring's reach); without them it does not.
+  const auto centre_at_first_plan = [&](bool load) {
+    Config later = cfg;
+    later.places.load_grids = load;
+    OnTheFloor again(place("corridor-ew-1"), later);
+    EXPECT_TRUE(again.fw.ok()) << again.fw.error();
+    EXPECT_TRUE(again.start());
+    EXPECT_EQ(again.fw.ask("XQ " + std::to_string(place("corridor-ew-3") + 1)), "ack");
+    EXPECT_TRUE(again.fw.run_until([&] { return again.fw.bb().planner_status.reader().peek().plans >= 1; }, 5'000));
+    const auto row = again.fw.kernel().find("planner");
+    const auto* pm = row ? dynamic_cast<const PlannerModule*>(again.fw.kernel().row(*row).process) : nullptr;
+    EXPECT_NE(pm, nullptr);
+    if (pm == nullptr) return plan::CellState::Unknown;
+    const plan::OccupancyMap& m = pm->planner().map();
+    const places::Vec2 c = g.places()[place("corridor-ew-2")].centre;
+    const plan::Cell cell = m.cell_of({c.x(), c.y()});
+    EXPECT_TRUE(m.contains(cell));
+    return m.contains(cell) ? m.state(cell) : plan::CellState::Unknown;
+  };
+  EXPECT_EQ(centre_at_first_plan(true), plan::CellState::Free) << "remembered";
+  EXPECT_EQ(centre_at_first_plan(false), plan::CellState::Unknown) << "not seen yet";
+  std::filesystem::remove_all(dir);
 }
 
 // Why: experiments (ROBUTER_XQ_FROM, ROBUTER_XQ_TO: place names; ROBUTER_XQ_LOG=1 the log), run with

@@ -103,18 +103,29 @@ void Planner::sync() {
 // Known structure takes the most hits a cell holds (OccupancyMap::kMaxCount), so that the ring's
 // misses through a wall's face cells (an echo just behind them) do not wear it away. The grids
 // share cell boundaries (same resolution, origins on multiples of it): a whole-cell offset.
+// Remembered cells come after it, only where the map and the structure leave a cell unknown.
 void Planner::stamp_structure() {
-  if (structure_ == nullptr) return;
-  const Cell o = structure_->cell_of(map_.center({0, 0}));  // the structure's cell under the map's (0, 0)
-  for (int y = 0; y < map_.height(); ++y) {
-    const int sy = y + o.y;
-    if (sy < 0 || sy >= structure_->height()) continue;
-    for (int x = 0; x < map_.width(); ++x) {
-      const Cell s{x + o.x, sy};
-      if (s.x < 0 || s.x >= structure_->width() || structure_->state(s) != CellState::Occupied) continue;
-      if (map_.state({x, y}) == CellState::Unknown) map_.set_count({x, y}, OccupancyMap::kMaxCount);
+  const auto stamp = [&](const OccupancyMap& from, auto&& take) {
+    const Cell o = from.cell_of(map_.center({0, 0}));  // the source's cell under the map's (0, 0)
+    for (int y = 0; y < map_.height(); ++y) {
+      const int sy = y + o.y;
+      if (sy < 0 || sy >= from.height()) continue;
+      for (int x = 0; x < map_.width(); ++x) {
+        const Cell s{x + o.x, sy};
+        if (s.x < 0 || s.x >= from.width() || from.state(s) == CellState::Unknown) continue;
+        if (map_.state({x, y}) == CellState::Unknown) take(Cell{x, y}, from.state(s));
+      }
     }
-  }
+  };
+  if (structure_ != nullptr)
+    stamp(*structure_, [&](Cell c, CellState s) {
+      if (s == CellState::Occupied) map_.set_count(c, OccupancyMap::kMaxCount);
+    });
+  if (memory_ != nullptr)
+    stamp(*memory_, [&](Cell c, CellState s) {
+      if (s == CellState::Occupied) map_.mark_occupied(c);
+      else map_.mark_free(c);
+    });
 }
 
 void Planner::shift_map(int dx, int dy) {

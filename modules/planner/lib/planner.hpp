@@ -75,6 +75,11 @@ class Planner {
   // structure holds occupied becomes occupied (at the most hits). Null: none. Set before
   // set_map(); `structure` must outlive the planner and have the map's resolution and cell alignment.
   void set_structure(const OccupancyMap* structure) { structure_ = structure; }
+  // Why: cells remembered from an earlier run (saved place grids, places/place_grid.hpp), taken
+  // like the structure but after it and weaker: an unknown cell the memory holds occupied
+  // becomes occupied at the threshold (one miss clears it: furniture moves), one it holds free
+  // becomes free. Null: none. Same conditions as set_structure().
+  void set_memory(const OccupancyMap* memory) { memory_ = memory; }
   // Why: rebuilds at most `layers` C-space layers after shift_map() (the turn layers and the
   // relaxation count as layers), so that a caller with a time budget spreads the rebuild over
   // several steps; true once every layer is rebuilt (at once when none is pending).
@@ -142,7 +147,7 @@ class Planner {
   HeadingOptions heading_options() const;       // the rectangle search's options
   void fill_waypoints_2d(const std::vector<Cell>& cells);
   void fill_waypoints_3d(const std::vector<CellPose>& cells);
-  void stamp_structure();  // set_structure()'s cells onto map_ (no layer follows: callers rebuild)
+  void stamp_structure();  // set_structure()'s, then set_memory()'s cells onto map_ (no layer follows: callers rebuild)
 
   PlannerConfig cfg_;
   CostModel costs_;                     // from cfg_.unknown_cost
@@ -180,6 +185,7 @@ class Planner {
   std::vector<Cell> cells_;             // 2D path buffer
   std::vector<Waypoint> waypoints_;     // last plan
   const OccupancyMap* structure_ = nullptr;  // known structure the window takes as it moves
+  const OccupancyMap* memory_ = nullptr;     // cells remembered from an earlier run, taken after it
   int rebuild_next_ = -1;               // next layer to rebuild after shift_map (-1: none)
   CellPose step_start_{};               // cells, slice: the start of a plan_step() search
   Cell step_goal_{};                    // cells: its goal
