@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Issue #17's acceptance runs: "go to place" (XQ) on the building floor with no prior grid, only
+# the place graph, the ultrasonic detection on, [places] cross_doors on; ten routes drawn with
+# seeds 1..10 among place pairs whose centres are >= 30 m apart (rooms included). Per run: the
+# end, robot time, replans, door crossings, contacts, worst planner activation, peak RSS of the
+# run's process; then the totals against the targets (10 of 10 reached, 0 contacts, peak RSS
+# <= 64 MB, worst activation < 5 ms). ROBUTER_BENCH_PLACES_RUNS changes the count.
+set -euo pipefail
+bin=${ROBUTER_BIN:-build/bin}
+here=$(cd "$(dirname "$0")/../.." && pwd)
+runs=${ROBUTER_BENCH_PLACES_RUNS:-10}
+test_bin="$bin/safety_sim_test"
+if [[ ! -x "$test_bin" ]]; then
+  echo "70-places: $test_bin not built (cmake --build <dir> --target safety_sim_test)" >&2
+  exit 1
+fi
+pairs=$(python3 - "$here/worlds/building_floor.places.toml" "$runs" <<'EOF'
+import math, random, sys, tomllib
+places = tomllib.load(open(sys.argv[1], "rb"))["place"]
+far = [(a["name"], b["name"]) for a in places for b in places
+       if math.dist(a["centre"], b["centre"]) >= 30.0]
+for seed, (a, b) in enumerate(random.Random(17).sample(far, int(sys.argv[2])), start=1):
+    print(seed, a, b)
+EOF
+)
+log=$(mktemp); times=$(mktemp); trap 'rm -f "$log" "$times"' EXIT
+reached=0 total=0 contacts=0 worst_us=0 worst_rss=0
+printf '%-4s %-28s %-11s %8s %7s %9s %9s %9s %8s\n' seed route end robot-s replans crossings contact-us worst-us rss-kB
+while read -r seed from to; do
+  total=$((total + 1))
+  ROBUTER_XQ_FROM=$from ROBUTER_XQ_TO=$to ROBUTER_XQ_CROSS=1 /usr/bin/time -f '%M' -o "$times" \
+    "$test_bin" --gtest_also_run_disabled_tests --gtest_filter=GoToPlace.DISABLED_Named >"$log" 2>&1 || true
+  line=$(grep -m1 '^XQ ' "$log" || true)
+  if [[ -z "$line" ]]; then
+    echo "$seed $from -> $to: the run printed no result:"; tail -5 "$log"; continue
+  fi
+  # "XQ a -> b: state reached after 159.2 s, in room-01, 0.05 m from the centre, 4 replans, 9 scans,
+  #  1 door crossings, trips 0, protective stops 0, closest 222 mm, contacts 0 us, worst activation 2100 us; ..."
+  end=$(sed -E 's/.*: state ([a-z_]+) after.*/\1/' <<<"$line")
+  secs=$(sed -E 's/.* after ([0-9.]+) s,.*/\1/' <<<"$line")
+  replans=$(sed -E 's/.* ([0-9]+) replans,.*/\1/' <<<"$line")
+  crossings=$(sed -E 's/.* ([0-9]+) door crossings,.*/\1/' <<<"$line")
+  contact=$(sed -E 's/.*contacts ([0-9]+) us.*/\1/' <<<"$line")
+  act=$(sed -E 's/.*worst activation ([0-9]+) us.*/\1/' <<<"$line")
+  rss=$(tail -1 "$times")
+  [[ $end == reached ]] && reached=$((reached + 1))
+  contacts=$((contacts + contact))
+  ((act > worst_us)) && worst_us=$act
+  ((rss > worst_rss)) && worst_rss=$rss
+  printf '%-4s %-28s %-11s %8s %7s %9s %9s %9s %8s\n' "$seed" "$from->$to" "$end" "$secs" "$replans" "$crossings" \
+    "$contact" "$act" "$rss"
+done <<<"$pairs"
+verdict() { [[ $1 == 1 ]] && echo PASS || echo FAIL; }
+echo "reached $reached of $total (target: all): $(verdict $((reached == total && total > 0)))"
+echo "contacts $contacts us with the detection on (target 0): $(verdict $((contacts == 0)))"
+echo "peak RSS $worst_rss kB, the largest run's test process (target <= 65536 kB): $(verdict $((worst_rss <= 65536)))"
+echo "worst planner activation $worst_us us (target < 5000 us CPU): $(verdict $((worst_us < 5000)))"
