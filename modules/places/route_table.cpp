@@ -11,6 +11,11 @@
 namespace robuter::places {
 namespace {
 
+// m between two points (0.1 mm each).
+double distance(const ViaPoint& a, const ViaPoint& b) {
+  return std::hypot(static_cast<double>(a.x) - b.x, static_cast<double>(a.y) - b.y) * 1e-4;
+}
+
 ViaPoint to_via(const Vec2& p) {
   return {static_cast<std::int32_t>(std::lround(p.x() * 1e4)), static_cast<std::int32_t>(std::lround(p.y() * 1e4))};
 }
@@ -34,7 +39,8 @@ Vec2 door_normal_into(const Place& place, const Door& door) {
   return normal;
 }
 
-RouteTable::RouteTable(const PlaceGraph& graph, const ViaRules& rules) : n_(graph.places().size()) {
+RouteTable::RouteTable(const PlaceGraph& graph, const ViaRules& rules)
+    : n_(graph.places().size()), long_leg_(rules.long_leg) {
   for (const Place& p : graph.places()) centres_.push_back(to_via(p.centre));
   for (const Door& d : graph.doors())
     for (const std::size_t into : {d.a, d.b}) {
@@ -87,11 +93,18 @@ std::size_t RouteTable::write(std::size_t from, std::size_t to, bool explore, st
   };
   if (explore) put(spin(centres_[from]));
   const Entry& e = entry(from, to);
+  std::size_t in = from;              // the place the route is in before the next door
+  const ViaPoint* last = nullptr;     // the route's last point (null: none yet, the robot)
   for (std::size_t k = 0; k < e.doors; ++k) {
     const LegRef& leg = legs_[e.legs_first + k];
     const Pass& pass = passes_[leg.pass];
+    // A long way across a place (a hall with doors at both ends) goes by the place's centre, so
+    // that each leg fits the planner's window (the route's length is weighed through it too).
+    if (!explore && last != nullptr && distance(*last, pass.pts[0]) > long_leg_) put(centres_[in]);
     for (std::size_t i = 0; i < pass.count; ++i) put(pass.pts[i]);
+    last = &pass.pts[pass.count - 1];
     if (explore) put(spin(centres_[leg.place]));
+    in = leg.place;
   }
   put(centres_[to]);
   return n;

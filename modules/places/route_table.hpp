@@ -29,11 +29,15 @@ struct ViaRules {
   double after = 0.9;       // m: its second point, this far beyond it (the body, 0.33 m behind
                             // the axle, clear of the opening)
   double wide_door = 1.5;   // m: a door at least this wide is passed through one point, its middle
+  double long_leg = 12.5;   // m: two points of a route further apart than this across one place
+                            // get its centre between them (the planner's 16 m window holds a
+                            // leg of up to 14.3 m along each axis; corridor pieces are <= 12.1 m)
 };
 
 // The routes between every two places of a graph: for each (from, to) whether one exists, the
 // doors it crosses, and its points: per narrow door one point before and one after it, per wide
-// door its middle, then the goal place's centre. Built (and allocated) once; lookups only read.
+// door its middle, a place's centre between two points of it more than ViaRules::long_leg
+// apart, then the goal place's centre. Built (and allocated) once; lookups only read.
 class RouteTable {
  public:
   static constexpr std::size_t kMaxPoints = 64;  // points of one route the planner's goal holds
@@ -77,6 +81,7 @@ class RouteTable {
   std::size_t write(std::size_t from, std::size_t to, bool explore, std::span<ViaPoint> out) const;
 
   std::size_t n_ = 0;              // places
+  double long_leg_ = 0.0;          // m, ViaRules::long_leg
   std::vector<Entry> entries_;     // n_ x n_, row = from
   std::vector<ViaPoint> points_;   // every route's points, one after the other
   std::vector<LegRef> legs_;       // every route's legs, one after the other (Entry::legs_first)

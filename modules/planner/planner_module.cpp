@@ -27,6 +27,9 @@ constexpr int kRebuildLayersPerRun = 3;
 // clear time), and after this many such replans in a row the navigation ends `blocked`.
 constexpr std::uint64_t kPausedReplanTicks = 300;
 constexpr std::uint32_t kPausedReplansMax = 5;
+// rad: the door crossing is lent the robot only this close to facing the door (20°, the door
+// crossing bench's starting box: docs/DOORS.md).
+constexpr double kCrossingHeadingError = 20.0 * plan::kPi / 180.0;
 
 // CPU time of the kernel thread, µs: what an activation costs, without the time other
 // processes of a shared machine took the CPU away (wall clock would count that too).
@@ -327,8 +330,20 @@ bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
     return false;
   }
   if (add_via_turn(pose)) return true;
-  if (cfg_.places.cross_doors && goal_.via[via_next_].has_theta) begin_crossing(tick);
-  else next_via(tick, "reached");
+  const PlannerGoal::Via& v = goal_.via[via_next_];
+  if (!cfg_.places.cross_doors || !v.has_theta) {
+    next_via(tick, "reached");
+    return false;
+  }
+  // The crossing starts only facing the door: where the turn had no room, the robot may face
+  // away from it (seen: corridor-b-4, 2.1 m wide, the door behind the robot).
+  if (std::abs(std::remainder(v.theta * kCentideg - pose.heading, 2.0 * plan::kPi)) > kCrossingHeadingError) {
+    log::warn("planner: route point {} of {}: not facing the door (no room to turn); the route ends", via_next_ + 1,
+              goal_.vias);
+    finish(tick, PlannerState::blocked, true);
+    return false;
+  }
+  begin_crossing(tick);
   return false;
 }
 

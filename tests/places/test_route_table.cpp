@@ -61,6 +61,26 @@ TEST(RouteTable, NarrowDoorsTwoPointsWideDoorsOneThenTheCentre) {
   EXPECT_TRUE(t.points(0, 3).empty());
 }
 
+// Why: a hall 20 m long with a narrow door at each end: the way across it goes by its centre,
+// so that no leg is longer than ViaRules::long_leg (the planner's window must hold each leg);
+// a short room is crossed without it.
+TEST(RouteTable, ALongWayAcrossAPlaceGoesByItsCentre) {
+  std::vector<Place> p{{"west", {{-4, 0}, {0, 0}, {0, 4}, {-4, 4}}, {-2, 2}},
+                       {"hall", {{0, 0}, {20, 0}, {20, 4}, {0, 4}}, {10, 2}},
+                       {"east", {{20, 0}, {24, 0}, {24, 4}, {20, 4}}, {22, 2}}};
+  std::vector<Door> d{{"w", 0, 1, {0, 2}, 0.9}, {"e", 1, 2, {20, 2}, 0.9}};
+  const PlaceGraph g(std::move(p), std::move(d));
+  const RouteTable t(g);
+  const auto pts = t.points(0, 2);
+  ASSERT_EQ(pts.size(), 6u) << "before, after, the hall's centre, before, after, the goal";
+  EXPECT_EQ(pts[2].x, 100000);
+  EXPECT_EQ(pts[2].y, 20000);
+  EXPECT_FALSE(pts[2].has_theta);
+  EXPECT_FALSE(pts[2].spin);
+  const RouteTable short_hall(g, ViaRules{.long_leg = 20.0});
+  EXPECT_EQ(short_hall.points(0, 2).size(), 5u) << "with a longer limit: straight across";
+}
+
 // Why: exploring (XQ <n> 1) visits each place's centre on the route with a full-turn scan: the
 // start's, then after each door's points the entered place's, then the goal (the last centre
 // again); the door points are the plain route's; a buffer too small gives 0, not a cut route.
@@ -106,6 +126,14 @@ TEST(RouteTable, EveryPairOfTheBuildingFloor) {
       for (const ViaPoint& p : t.points(a, b))
         EXPECT_TRUE(g.place_at({p.x * 1e-4, p.y * 1e-4}).has_value())
             << g.places()[a].name << " -> " << g.places()[b].name << ": (" << p.x << ", " << p.y << ")";
+      // Every leg, from the start place's centre on, fits the planner's window (16 m: 14.3 m along
+      // each axis with its margins; ViaRules::long_leg, 12.5 m, keeps them shorter).
+      Vec2 from = g.places()[a].centre;
+      for (const ViaPoint& p : t.points(a, b)) {
+        const Vec2 to(p.x * 1e-4, p.y * 1e-4);
+        EXPECT_LE((to - from).norm(), 12.5) << g.places()[a].name << " -> " << g.places()[b].name;
+        from = to;
+      }
     }
 }
 

@@ -337,6 +337,17 @@ TEST(GoToPlace, ThroughA1mDoorOnToTheRoomsCentre) {
   expect_reached_in(r, "room-02");
 }
 
+// Why: the crossing is lent the robot only facing the door: from corridor-b-4's centre (2.1 m
+// wide) the turn to face room-13's door, behind the robot, has no room, and the route ends
+// `blocked` there without a crossing — it used to start the crossing facing away from the door.
+TEST(GoToPlace, NoCrossingWithTheDoorBehindTheRobot) {
+  const PlaceRun r = go(place("corridor-b-4"), place("room-13"), 3'000, true);
+  EXPECT_EQ(r.state, PlannerState::blocked);
+  EXPECT_EQ(r.crossings, 0u);
+  EXPECT_EQ(r.in_place, "corridor-b-4");
+  EXPECT_EQ(r.contacts, 0u);
+}
+
 // Why: the loan is given back when the crossing's own run ends, however many crossings the
 // operator started before: Ad, Af, Ad read in one activation hand the crossing two runs it
 // begins as one (its run count then lags the arbiter's for good; matching the two counts left
