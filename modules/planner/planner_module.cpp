@@ -410,10 +410,13 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   }
   const std::int64_t t0 = cpu_us();
   auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
-  if (prepared_seq_ != goal_.seq) {
-    // A new goal: its cost field (a Dijkstra over the whole map) in steps of at most
+  if (!planner_.searching()) planner_.sync();  // the readings of this activation, before the field's check
+  if (!planner_.searching() && (prepared_seq_ != goal_.seq || !planner_.field_ready(goal))) {
+    // A new goal, or a field a sync dropped (a cell made cheaper: sonar misses do it nearly every
+    // scan): the cost field (a Dijkstra over the whole map) in steps of at most
     // PlannerSettings::field_cells_per_run cells, one per activation, and the search in the next, so that no
     // activation carries a whole field or a field and a search (docs/PLANNER.md, "The module").
+    // Made inside the search's first step instead, the field took 5-8 ms there (the seed 000 lab run).
     if (planner_.prepare_step(goal, s_.field_cells_per_run)) prepared_seq_ = goal_.seq;
     return;
   }
@@ -545,13 +548,15 @@ void PlannerModule::run(Kernel& k) {
         keep_place_grid(pose);
       }
     }
-    if (state_ == PlannerState::planning) plan_step(tick, pose);
+    const bool planned = state_ == PlannerState::planning;
+    if (planned) plan_step(tick, pose);
     else if (state_ == PlannerState::moving) move_step(tick, pose);
     else if (state_ == PlannerState::crossing) crossing_step(tick, pose);
     // While the robot drives and scans, the kept tree for the plan's goal grows, a step per
     // activation, so that a replan after new obstacles searches only where it broke
-    // (docs/PLANNER.md, "The kept tree").
-    if ((state_ == PlannerState::moving || state_ == PlannerState::scanning) && planner_.tree_growing() &&
+    // (docs/PLANNER.md, "The kept tree") — not in the activation that planned: a search step and
+    // a tree step together took up to 16 ms (the seed 000 lab run).
+    if (!planned && (state_ == PlannerState::moving || state_ == PlannerState::scanning) && planner_.tree_growing() &&
         planner_.grow_tree_step(s_.search_pops_per_run))
       log::info("planner: plan {}: kept tree {}: {} states", plans_, planner_.tree_kept() ? "made" : "not kept",
                 planner_.tree_states());

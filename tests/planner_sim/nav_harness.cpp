@@ -69,6 +69,7 @@ NavRecord run_navigation(SimFirmware& fw, int max_ticks, double goal_x, double g
   rec.plans = st.plans;
   rec.scans = st.scans;
   rec.run_us_max = st.run_us_max;
+  rec.whole_fields = pm->planner().whole_fields();
   rec.seconds = fw.seconds() - t0;
   rec.travelled = fw.sim().robot().travelled() - d0;
   rec.trips = fw.bb().emergency.reader().peek().trips - trips0;

@@ -25,6 +25,7 @@ struct NavRecord {
   double final_error = 0.0;     // axle to goal at the end, m (world frame)
   int pictures = 0;             // pictures the firmware wrote (--planner-pictures), count
   std::string plan_times;       // every plan's time, µs, space-separated
+  std::uint32_t whole_fields = 0;  // cost fields computed whole in one activation (the module makes them in steps: 0)
 };
 
 // The planner module of a running firmware (null if its row is absent).

@@ -106,6 +106,9 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   EXPECT_FALSE(r.bumper);
   EXPECT_EQ(r.trips, 0u);
   EXPECT_GT(r.min_clearance, 0.0);
+  // Bounded work per activation: every cost field in steps, none whole inside a search's first
+  // step (a field a sync dropped was made so before: activations of 5-8 ms in this run).
+  EXPECT_EQ(r.whole_fields, 0u);
   EXPECT_LT(r.final_error, 0.15);
   const auto xp = fw.ask("XP");
   ASSERT_TRUE(xp);
@@ -148,6 +151,9 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithTheDefaultMapWindow) {
   EXPECT_FALSE(r.bumper);
   EXPECT_EQ(r.trips, 0u);
   EXPECT_GT(r.min_clearance, 0.0);
+  // Bounded work per activation: every cost field in steps, none whole inside a search's first
+  // step (a field a sync dropped was made so before: activations of 5-8 ms in this run).
+  EXPECT_EQ(r.whole_fields, 0u);
   EXPECT_LT(r.final_error, 0.15);
   EXPECT_EQ(pm->map_x0_mm(), 750);  // centred on (8.75, 3.75) m: corner (0.75, -4.25) m
   EXPECT_EQ(pm->map_y0_mm(), -4250);

@@ -172,6 +172,7 @@ bool Planner::can_turn(Cell c, int slice) const {
 // Why: the cost field is recomputed only when the goal moves; map changes repair it.
 void Planner::ensure_field(const PassGrid& grid, Cell goal) {
   if (field_ready_ && field_.goal() == goal) return;
+  ++whole_fields_;
   field_.compute(grid, goal, costs_);
   field_ready_ = true;
   field_deferred_ = false;
@@ -195,6 +196,13 @@ void Planner::prepare(Point2 goal) {
   sync();
   const Cell g = map_.cell_of(goal);
   if (const PassGrid* grid = field_grid(g)) ensure_field(*grid, g);
+}
+
+bool Planner::field_ready(Point2 goal) const {
+  const Cell g = map_.cell_of(goal);
+  if (cfg_.footprint != FootprintKind::Rectangle) return true;  // plan() makes what it needs
+  const PassGrid* grid = field_grid(g);
+  return grid == nullptr || (!field_.pending() && field_ready_ && field_.goal() == g);
 }
 
 bool Planner::prepare_step(Point2 goal, std::uint32_t max_cells) {

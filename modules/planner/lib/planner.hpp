@@ -112,6 +112,14 @@ class Planner {
   // Why: drop a prepare_step() or plan_step() under way (the caller moved on); syncs resume.
   void cancel_steps();
   bool stepping() const { return field_.pending() || (active_->pending() && !active_->growing()); }
+  // Why: a search begun by plan_step() and not ended (the next plan_step() continues it).
+  bool searching() const { return active_->pending() && !active_->growing(); }
+  // Why: plan_step() towards `goal` would find its heuristic field made (no whole field to
+  // compute in that step): none needed, or ready for the goal's cell and no repair waiting.
+  bool field_ready(Point2 goal) const;
+  // Why: fields computed whole inside prepare() or a plan's first step, since set_map(): a
+  // caller with a time budget (the module) makes them in steps and keeps this at 0.
+  std::uint32_t whole_fields() const { return whole_fields_; }
   // Why: the kept tree (docs/PLANNER.md, "The kept tree") grows after a plan made without it, in
   // steps of at most `max_pops` states, while the robot drives: true once it is complete (or none
   // is growing). Syncs go on meanwhile (new obstacles leave a growing tree sound; a cell made
@@ -165,6 +173,7 @@ class Planner {
   std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
   CostField field_;                     // cost to the goal on the field grid
   bool field_ready_ = false;            // field_ matches the current goal and grid
+  std::uint32_t whole_fields_ = 0;      // fields computed at once (ensure_field), count
   bool field_deferred_ = false;         // Rectangle: field_ lacks new obstacles (still admissible)
   GridSearch grid_search_;              // one-shot 2D searches
   // The (x, y, slice) searches from the robot: a plan without the tree runs in tree_ (whose
