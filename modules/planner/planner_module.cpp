@@ -410,8 +410,9 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   }
   const std::int64_t t0 = cpu_us();
   auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
-  if (!planner_.searching()) planner_.sync();  // the readings of this activation, before the field's check
-  if (!planner_.searching() && (prepared_seq_ != goal_.seq || !planner_.field_ready(goal))) {
+  const bool searching = planner_.searching();  // a search under way continues; its grids hold still
+  if (!searching) planner_.sync();  // the readings of this activation, before the field's check
+  if (!searching && (prepared_seq_ != goal_.seq || !planner_.field_ready(goal))) {
     // A new goal, or a field a sync dropped (a cell made cheaper: sonar misses do it nearly every
     // scan): the cost field (a Dijkstra over the whole map) in steps of at most
     // PlannerSettings::field_cells_per_run cells, one per activation, and the search in the next, so that no
