@@ -160,6 +160,46 @@ void CSpaceLayer::index_mask() {
     b.exact = exact(b);
     bands_.push_back(b);
   }
+  index_core();
+}
+
+// Why: a re-test after a freed cell (update_in) mostly finds the cell still blocked by the rest
+// of the obstacle it was part of; an obstacle anywhere in a box the mask wholly holds says so in
+// one table count instead of the bands' runs. The largest such box (by cells): over the mask's
+// bounding box, the largest rectangle under each row's histogram of covered columns.
+void CSpaceLayer::index_core() {
+  core_valid_ = false;
+  if (mask_.runs.empty()) return;
+  const int bw = box_.x1 - box_.x0 + 1;
+  const int bh = box_.y1 - box_.y0 + 1;
+  if (static_cast<std::int64_t>(bw) * bh >= 65536) return;  // the table's counts are exact below that
+  std::vector<std::uint8_t> in(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh), 0);
+  for (const MaskRun& r : mask_.runs)
+    for (int x = r.lo; x <= r.hi; ++x)
+      in[static_cast<std::size_t>(r.dy - box_.y0) * static_cast<std::size_t>(bw) + static_cast<std::size_t>(x - box_.x0)] = 1;
+  std::vector<int> height(static_cast<std::size_t>(bw), 0);
+  std::int64_t best = 0;
+  for (int y = 0; y < bh; ++y) {
+    for (int x = 0; x < bw; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(bw) + static_cast<std::size_t>(x);
+      height[static_cast<std::size_t>(x)] = in[i] ? height[static_cast<std::size_t>(x)] + 1 : 0;
+    }
+    // Rows y - h + 1 .. y, columns [x0, x1]: the widest run of columns at least h high, for each
+    // column's own height h (O(bw^2) per row: masks are a few dozen cells across).
+    for (int x = 0; x < bw; ++x) {
+      const int h = height[static_cast<std::size_t>(x)];
+      if (h == 0) continue;
+      int x0 = x, x1 = x;
+      while (x0 > 0 && height[static_cast<std::size_t>(x0 - 1)] >= h) --x0;
+      while (x1 + 1 < bw && height[static_cast<std::size_t>(x1 + 1)] >= h) ++x1;
+      const std::int64_t area = static_cast<std::int64_t>(x1 - x0 + 1) * h;
+      if (area > best) {
+        best = area;
+        core_ = Band{0, 0, box_.x0 + x0, box_.y0 + y - h + 1, box_.x0 + x1, box_.y0 + y, true};
+        core_valid_ = true;
+      }
+    }
+  }
 }
 
 // Why: whether the footprint at (x, y) meets an occupied cell: the mask's bounding box settles
@@ -167,6 +207,7 @@ void CSpaceLayer::index_mask() {
 // run holding an obstacle ends the test.
 bool CSpaceLayer::meets(const CSpaceStack& stack, int x, int y) const {
   if (stack.occupied(x, y)) return true;
+  if (core_valid_ && stack.count(x + core_.x0, y + core_.y0, x + core_.x1, y + core_.y1) != 0) return true;
   if (box_exact_ && stack.count(x + box_.x0, y + box_.y0, x + box_.x1, y + box_.y1) == 0) return false;
   for (const Band& b : bands_) {
     if (b.exact && stack.count(x + b.x0, y + b.y0, x + b.x1, y + b.y1) == 0) continue;

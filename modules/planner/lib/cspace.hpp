@@ -81,6 +81,7 @@ class CSpaceLayer {
   static constexpr std::size_t kBandRuns = 4;  // runs per band
 
   void index_mask();
+  void index_core();
   bool meets(const CSpaceStack& stack, int x, int y) const;
   // Where a build or an update writes (cspace.cpp: the layer's classes, or one slice's bits).
   template <class Store>
@@ -93,6 +94,9 @@ class CSpaceLayer {
                  std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;
 
   FootprintMask mask_;
+  Band core_;                 // the largest box of cells wholly inside the mask (exact): an
+                              // obstacle in it settles a re-test at once (first = last = 0: none)
+  bool core_valid_ = false;   // core_ holds a box
   Band box_;                  // the whole mask's bounding box
   bool box_exact_ = false;    // box_ holds < 65,536 cells (the table's count is exact)
   std::vector<Band> bands_;   // kBandRuns runs each, in order
