@@ -3,6 +3,7 @@
 #include "modules/planner/lib/heading_search.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 #include "modules/planner/lib/footprint.hpp"
@@ -262,6 +263,12 @@ void HeadingSearch::start_turns(const LeanGraph& lg, double turn, double* cost) 
 
 bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   if (!run_.active) return true;
+  if (run_.settling) {
+    const std::size_t budget = max_pops > std::numeric_limits<std::size_t>::max() / kSettleStatesPerPop
+                                   ? std::numeric_limits<std::size_t>::max()
+                                   : std::size_t{max_pops} * kSettleStatesPerPop;
+    return settle_step(budget, out);
+  }
   // The search's inputs, and what begin() derived from them, as locals: the loop below reads
   // them from registers, not through `this` (its writes to meta_ may alias any member).
   const std::span<const PassGrid* const> slices = run_.slices;
@@ -512,16 +519,24 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     // pool ran out after the robot was reached, just below the key being expanded then (every
     // state below it was expanded whole). Out of pool before the robot: no tree.
     const bool reached_robot = best != CostField::kInfinity;
-    kept_ = !limit || run_.proven;
+    const bool keep = !limit || run_.proven;
+    kept_ = false;
     bound_ = best;
     settle_ = limit ? std::min(best + tree_margin(best), expanding - 2.0 * settle_slack(expanding))
                     : best + tree_margin(best);
-    run_.partial = r;  // expanded_so_far(): the whole tree
-    if (kept_) settle(reached);
-    r.status = !kept_ ? PlanStatus::SearchLimit : reached_robot ? PlanStatus::Found : PlanStatus::Unreachable;
+    r.status = !keep ? PlanStatus::SearchLimit : reached_robot ? PlanStatus::Found : PlanStatus::Unreachable;
     r.cost = best;
-    out = r;
-    return true;
+    run_.partial = r;  // expanded_so_far(): the whole tree
+    if (!keep) {
+      out = r;
+      return true;
+    }
+    // Kept: its states are settled in the next steps (settle_step), then it serves.
+    run_.active = true;
+    run_.settling = true;
+    run_.settle_page = 0;
+    run_.reached = reached;
+    return false;
   }
   if (limit) {
     r.status = PlanStatus::SearchLimit;

@@ -176,8 +176,12 @@ class HeadingSearch {
 
   // Why: at the end of a kept tree's search: mark the states whose cost is exact (kSettled):
   // those whose key is below the robot's cost (every queued key is at least that), and the
-  // states of the robot's own tree path from `reached` (an optimal path's).
-  void settle(std::uint32_t reached);
+  // states of the robot's own tree path from the state that reached it (an optimal path's). In
+  // steps like the search (a walk over every page the tree used: up to 6 ms at once in the seed
+  // 000 lab run): at most `max_states` pool states per call (whole pages, one at least); true
+  // once done, with the tree kept and `out` its result; until then growing() and not kept().
+  bool settle_step(std::size_t max_states, PlanResult& out);
+  static constexpr std::size_t kSettleStatesPerPop = 4;  // pool states a step marks per pop of its budget
   // Why: the kept tree's heuristic at stored cell (x, y) of index `cell` (begin_backward()),
   // consistent: a move changes only the cell's part, a turn of n slices only the slot's, by at
   // most n turn steps.
@@ -276,6 +280,8 @@ class HeadingSearch {
     HeadingSearch* tree = nullptr;            // forward: the kept tree it ends on, or null
     std::uint32_t reached_tree = kNoState;    // forward: the tree state the best end is on, or none
     bool proven = false;                      // backward: every queued key reached the robot's cost
+    bool settling = false;                    // backward: the search ended, its states being settled
+    std::size_t settle_page = 0;              // backward: the next page settle_step() marks
   };
   // Why: per-search tables (allowed moves, slots), the generation and the page size; returns
   // the move slots.

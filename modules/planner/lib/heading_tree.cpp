@@ -63,12 +63,14 @@ double HeadingSearch::tree_bound(int x, int y, int slot, std::uint32_t cell, std
   return std::max(0.0, settle_ - hf);
 }
 
-void HeadingSearch::settle(std::uint32_t reached) {
+bool HeadingSearch::settle_step(std::size_t max_states, PlanResult& out) {
   const PassGrid& g0 = *run_.slices[0];
   const auto stride = static_cast<std::uint32_t>(g0.stride);
   const std::size_t states = std::size_t{1} << page_shift_;
   const double below = settle_ + settle_slack(settle_);
-  for (std::size_t page = 0; page < used_; ++page) {
+  const std::size_t pages = std::max<std::size_t>(1, max_states / states);
+  const std::size_t end = used_ - run_.settle_page > pages ? run_.settle_page + pages : used_;
+  for (std::size_t page = run_.settle_page; page < end; ++page) {
     const PageOrigin& o = origin_[page];
     for (std::size_t i = 0; i < states; ++i) {
       const std::size_t s = (page << page_shift_) | i;
@@ -80,11 +82,17 @@ void HeadingSearch::settle(std::uint32_t reached) {
         meta_[s] = static_cast<std::uint8_t>(meta_[s] | kSettled);
     }
   }
-  if (bound_ == CostField::kInfinity) return;
-  for (std::uint32_t s = reached;;) {  // the robot's tree path, to a seed at the goal
+  run_.settle_page = end;
+  if (end < used_) return false;
+  run_.active = false;
+  run_.settling = false;
+  kept_ = true;
+  out = run_.partial;
+  if (bound_ == CostField::kInfinity) return true;
+  for (std::uint32_t s = run_.reached;;) {  // the robot's tree path, to a seed at the goal
     meta_[s] = static_cast<std::uint8_t>(meta_[s] | kSettled);
     const int p = meta_[s] & kParentMask;
-    if (p == kStartState) return;
+    if (p == kStartState) return true;
     int x, y, slot;
     place_of(s, x, y, slot);
     if (p < 8) {
