@@ -245,6 +245,7 @@ void PlannerModule::begin_scan(std::uint64_t tick) {
   stop_here(tick);
   state_ = PlannerState::scanning;
   settled_ = false;
+  step_waited_ = false;
   scan_tick_ = tick;
   ++scans_;
 }
@@ -411,7 +412,14 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   const std::int64_t t0 = cpu_us();
   auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
   const bool searching = planner_.searching();  // a search under way continues; its grids hold still
-  if (!searching) planner_.sync();  // the readings of this activation, before the field's check
+  if (!searching) sync_map();  // the readings of this activation, before the field's check
+  // A sync that freed cells (~1 ms each), or a picture, is this activation's work: the field's
+  // or the search's step waits for the next (once: then it goes on whatever that sync folded).
+  if (!searching && costly_now_ && !step_waited_) {
+    step_waited_ = true;
+    return;
+  }
+  step_waited_ = false;
   if (!searching && (prepared_seq_ != goal_.seq || !planner_.field_ready(goal))) {
     // A new goal, or a field a sync dropped (a cell made cheaper: sonar misses do it nearly every
     // scan): the cost field (a Dijkstra over the whole map) in steps of at most
@@ -498,7 +506,7 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   // A turn in place under way is finished first, so that the robot stops at a heading the
   // search can start from (a slice that carries moves), not half-way between two.
   if (const planner::Leg* leg = follower_.current(); leg != nullptr && leg->drive) {
-    planner_.sync();
+    sync_map();
     if (!follower_.turning() && planner::prefix_blocked(planner_, {prefix_.data(), prefix_len_}, leg->first)) {
       log::info("planner: obstacle on the path, stopping to scan");
       return begin_scan(tick);
@@ -519,6 +527,10 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   begin_scan(tick);
 }
 
+void PlannerModule::sync_map() {
+  if (planner_.sync().lowered > 0) costly_now_ = true;
+}
+
 void PlannerModule::keep_place_grid(const plan::Pose2& pose) {
   if (place_graph_ == nullptr || place_grids_ == nullptr) return;
   const std::optional<std::size_t> at = place_graph_->place_at(places::Vec2(pose.x, pose.y));
@@ -535,6 +547,9 @@ void PlannerModule::run(Kernel& k) {
   kernel_ = &k;
   const std::uint64_t tick = k.tick();
   const plan::Pose2 pose = pose_now();
+  costly_now_ = false;
+  // The last activation's plan, pictured before anything changes the map or the layers.
+  take_picture();
   // After a window move the layers are rebuilt a few per activation (the robot is stopped, the
   // state reads scanning); the map takes no readings until they match it again.
   if (planner_.rebuilding()) rebuild_step(tick);
@@ -543,7 +558,7 @@ void PlannerModule::run(Kernel& k) {
   if (!interrupted(tick)) {
     serve_goal(tick);
     if (state_ == PlannerState::scanning && !planner_.rebuilding()) {
-      planner_.sync();  // fold the new readings into the layers now: the plan only searches
+      sync_map();  // fold the new readings into the layers now: the plan only searches
       if (scan_done(tick)) {
         state_ = PlannerState::planning;
         keep_place_grid(pose);
@@ -556,9 +571,10 @@ void PlannerModule::run(Kernel& k) {
     // While the robot drives and scans, the kept tree for the plan's goal grows, a step per
     // activation, so that a replan after new obstacles searches only where it broke
     // (docs/PLANNER.md, "The kept tree") — not in the activation that planned: a search step and
-    // a tree step together took up to 16 ms (the seed 000 lab run).
-    if (!planned && (state_ == PlannerState::moving || state_ == PlannerState::scanning) && planner_.tree_growing() &&
-        planner_.grow_tree_step(s_.search_pops_per_run))
+    // a tree step together took up to 16 ms (the seed 000 lab run) — nor in one whose syncs freed
+    // cells or that took a picture (with a tree step, up to 6.7 ms there).
+    if (!planned && !costly_now_ && (state_ == PlannerState::moving || state_ == PlannerState::scanning) &&
+        planner_.tree_growing() && planner_.grow_tree_step(s_.tree_pops_per_run))
       log::info("planner: plan {}: kept tree {}: {} states", plans_, planner_.tree_kept() ? "made" : "not kept",
                 planner_.tree_states());
   } else {
@@ -569,21 +585,28 @@ void PlannerModule::run(Kernel& k) {
   publish_window(tick, pose);
 }
 
-// One pass over the map's cells and the layers (a few hundred µs for 240 × 240 cells and 16
-// slices), only in the activations that plan.
+// The plan's outcome noted; the copy (one pass over the map's cells and the layers: 2.5-4.6 ms
+// for 320 x 320 cells and 32 slices) is take_picture()'s, at the next activation's start.
 void PlannerModule::picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal) {
   if (pictures_ == nullptr) return;
+  shot_ = Shot{true, r, pose, goal, tick, plans_, goal_.seq, prefix_len_};
+}
+
+void PlannerModule::take_picture() {
+  if (!shot_.due) return;
+  shot_.due = false;
+  costly_now_ = true;
   plan::PlanSnapshot* snap = pictures_->try_fill();
   if (snap == nullptr) {  // the writer still draws the previous picture: this plan's is dropped, and said so
     log::warn("planner: picture of plan {} for goal {} dropped (the writer is still drawing; {} dropped so far)",
-              plans_, goal_.seq, pictures_->dropped());
+              shot_.plan, shot_.goal_seq, pictures_->dropped());
     return;
   }
-  if (snap->capture(planner_, r, pose, goal)) {
-    snap->prefix_len = std::min(prefix_len_, snap->path_len);
-    snap->goal_seq = goal_.seq;
-    snap->plan_number = plans_;
-    snap->tick = tick;
+  if (snap->capture(planner_, shot_.result, shot_.pose, shot_.goal)) {
+    snap->prefix_len = std::min(shot_.prefix_len, snap->path_len);
+    snap->goal_seq = shot_.goal_seq;
+    snap->plan_number = shot_.plan;
+    snap->tick = shot_.tick;
   }
   pictures_->publish();
 }

@@ -128,6 +128,9 @@ class PlannerModule final : public Process {
   bool add_turn(const plan::Pose2& pose, std::int32_t theta);
   // The same to the unwrapped heading `target` (rad; a full circle for an exploration's scan).
   bool add_turn_to(const plan::Pose2& pose, double target);
+  // Folds the map's new readings into the layers, and counts the freed cells it folded in this
+  // activation (the costly part of a sync: no search or tree step then, docs/PLANNER.md "The module").
+  void sync_map();
   // One control step; a new obstacle on the prefix or its end leads to a scan.
   void move_step(std::uint64_t tick, const plan::Pose2& pose);
   // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.
@@ -138,8 +141,11 @@ class PlannerModule final : public Process {
   void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
   // Cuts the grid of the place the robot scanned in into the place grid mailbox, if kept.
   void keep_place_grid(const plan::Pose2& pose);
-  // Copies the plan just made into the picture mailbox, if pictures are on (no allocation).
+  // Notes the plan just made for a picture, if pictures are on: take_picture() copies it into
+  // the mailbox at the start of the next activation (no allocation; the copy, a pass over the map
+  // and every layer, took 2.5-4.6 ms in the seed 000 lab run: an activation's work of its own).
   void picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal);
+  void take_picture();
   void publish_status(std::uint64_t tick);
   void publish_window(std::uint64_t tick, const plan::Pose2& pose);
   // The odometry posture in m and rad, the heading unwrapped (continuous across ±π).
@@ -192,6 +198,20 @@ class PlannerModule final : public Process {
   std::uint32_t paused_replans_ = 0;       // replans in a row after such pauses, with no prefix driven since
   std::uint32_t plan_us_ = 0;              // µs, thread CPU time: the last search (all its steps)
   std::uint32_t run_us_max_ = 0;           // µs, thread CPU time: the longest activation
+  bool costly_now_ = false;                // this activation synced freed cells or took a picture
+  // A plan noted for its picture (picture()), taken at the next activation's start.
+  struct Shot {
+    bool due = false;            // noted, not yet taken
+    plan::PlanResult result{};   // the plan's outcome
+    plan::Pose2 pose{};          // m, rad: where it was planned from
+    plan::Point2 goal{};         // m: what it was planned to
+    std::uint64_t tick = 0;      // kernel tick of the plan
+    std::uint32_t plan = 0;      // the plan's number for its goal
+    std::uint32_t goal_seq = 0;  // the goal's sequence number
+    std::size_t prefix_len = 0;  // waypoints of the path followed
+  };
+  Shot shot_{};
+  bool step_waited_ = false;               // the last activation put a search's first step off for a sync
   std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
   std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request

@@ -59,13 +59,15 @@ void Planner::set_map(const OccupancyMap& map) {
   waypoints_.reserve(2 * map_.cell_count() + layers_.size());
 }
 
-void Planner::sync() {
-  if (stepping()) return;  // prepare_step() or plan_step() under way: their grids hold still
+SyncWork Planner::sync() {
+  if (stepping()) return {};  // prepare_step() or plan_step() under way: their grids hold still
   const auto changed = map_.changes();
-  if (changed.empty()) return;
+  if (changed.empty()) return {};
+  SyncWork work{static_cast<std::uint32_t>(changed.size()), 0};
   const bool rect = cfg_.footprint == FootprintKind::Rectangle;
   field_changes_.clear();
   cspace_.begin_sync(map_, changed);
+  for (const std::uint32_t c : changed) work.lowered += cspace_.kind(c) == kLowered ? 1 : 0;
   for (std::size_t k = 0; k < layers_.size(); ++k)
     layers_[k].update(cspace_, map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
   for (std::size_t k = 0; k < turn_layers_.size(); ++k)
@@ -98,6 +100,7 @@ void Planner::sync() {
     }
   }
   map_.clear_changes();
+  return work;
 }
 
 // Known structure takes the most hits a cell holds (OccupancyMap::kMaxCount), so that the ring's
