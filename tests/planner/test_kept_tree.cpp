@@ -335,15 +335,25 @@ TEST(KeptTree, TheValidityMemoHoldsAcrossItsTagsWrapping) {
   }
 }
 
+// Why: two planners on one random 90 x 70 map (seeded), one to plan at once, one in steps.
+struct Twins {
+  explicit Twins(unsigned seed) : rng(seed), base(random_map(rng, 90, 70, 14, false)), once(cfg), steps(cfg) {
+    once.set_map(base);
+    steps.set_map(base);
+  }
+  std::mt19937 rng;                             // the map's draws, then the test's own
+  PlannerConfig cfg = rectangle(0.05);          // both planners' configuration
+  OccupancyMap base;                            // the map both start from
+  Planner once, steps;                          // plans at once, and in steps
+};
+
 // Why: the module plans in steps (a field, the tree, the search, one per activation): the same
 // plans as at once, round after round of new obstacles and moves.
 TEST(KeptTree, InStepsEqualsAtOnce) {
-  std::mt19937 rng(7);
-  const PlannerConfig cfg = rectangle(0.05);
-  const OccupancyMap base = random_map(rng, 90, 70, 14, false);
-  Planner once(cfg), steps(cfg);
-  once.set_map(base);
-  steps.set_map(base);
+  Twins t(7);
+  std::mt19937& rng = t.rng;
+  Planner& once = t.once;
+  Planner& steps = t.steps;
   Pose2 robot{0.5, 0.5, 0.0};
   const Point2 goal{4.0, 3.0};
   int calls_max = 0;
@@ -376,12 +386,9 @@ TEST(KeptTree, InStepsEqualsAtOnce) {
 // popped, steps of a small budget still follow, the tree not kept until the last; and it answers
 // the same replan as a tree grown at once.
 TEST(KeptTree, ItsStatesAreSettledInSteps) {
-  std::mt19937 rng(11);
-  const PlannerConfig cfg = rectangle(0.05);
-  const OccupancyMap base = random_map(rng, 90, 70, 14, false);
-  Planner once(cfg), steps(cfg);
-  once.set_map(base);
-  steps.set_map(base);
+  Twins t(11);
+  Planner& once = t.once;
+  Planner& steps = t.steps;
   const Pose2 robot{0.5, 0.5, 0.0};
   const Point2 goal{4.0, 3.0};
   ASSERT_TRUE(once.plan(robot, goal).found());
