@@ -470,6 +470,40 @@ TEST(GoToPlace, ExploringTurnsAFullCircleAtEachPlaceAndSavesItsGrid) {
   std::filesystem::remove_all(dir);
 }
 
+// Why: an exploration's full turn is the planner's like any route's motion: XH, or the
+// operator's own command, ends it mid-turn, the robot stops turning within an emergency period
+// and nothing resumes by itself (the turn is not taken up again, the route is over).
+TEST(GoToPlace, XHOrTheOperatorEndsAnExplorationMidTurnForGood) {
+  const places::PlaceGraph& g = floor_graph();
+  for (const char* command : {"XH", "AM 0 0"}) {
+    SCOPED_TRACE(command);
+    OnTheFloor floor(place("corridor-ew-1"), floor_config());
+    SimFirmware& fw = floor.fw;
+    ASSERT_TRUE(fw.ok()) << fw.error();
+    ASSERT_TRUE(floor.start());
+    const places::Vec2 c = g.places()[place("corridor-ew-1")].centre;
+    ASSERT_EQ(fw.ask("XQ " + std::to_string(place("corridor-ew-3") + 1) + " 1"), "ack");
+    double turned = 0.0, last = fw.sim().robot().pose().theta;
+    for (int i = 0; i < 20'000 && turned < M_PI / 2.0; ++i) {  // a quarter of the circle at the centre
+      fw.step();
+      const auto& p = fw.sim().robot().pose();
+      if (std::hypot(p.x - c.x(), p.y - c.y()) < 0.35) turned += std::abs(std::remainder(p.theta - last, 2.0 * M_PI));
+      last = p.theta;
+    }
+    ASSERT_GE(turned, M_PI / 2.0) << "the exploration's turn at the start place's centre began";
+    ASSERT_EQ(fw.ask(command), "ack");
+    fw.run_ticks(30);  // the emergency's and the planner's next activations
+    const PlannerState ended = fw.bb().planner_status.reader().peek().state;
+    EXPECT_EQ(ended, std::string(command) == "XH" ? PlannerState::cancelled : PlannerState::operator_ended);
+    const auto at = fw.sim().robot().pose();
+    fw.run_ticks(3000);
+    const auto& now = fw.sim().robot().pose();
+    EXPECT_NEAR(std::remainder(now.theta - at.theta, 2.0 * M_PI), 0.0, 0.02) << "the turn did not resume";
+    EXPECT_NEAR(std::hypot(now.x - at.x, now.y - at.y), 0.0, 0.02) << "nothing resumed";
+    EXPECT_EQ(fw.bb().planner_status.reader().peek().state, ended);
+  }
+}
+
 // Why: experiments (ROBUTER_XQ_FROM, ROBUTER_XQ_TO: place names; ROBUTER_XQ_LOG=1 the log), run with
 // --gtest_also_run_disabled_tests --gtest_filter=GoToPlace.DISABLED_Named.
 TEST(GoToPlace, DISABLED_Named) {  // --gtest_also_run_disabled_tests
