@@ -526,7 +526,7 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
 }
 
 void PlannerModule::sync_map() {
-  if (planner_.sync().lowered > 0) costly_now_ = true;
+  if (planner_.sync() > 0) costly_now_ = true;
 }
 
 void PlannerModule::keep_place_grid(const plan::Pose2& pose) {

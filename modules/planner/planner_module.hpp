@@ -128,8 +128,8 @@ class PlannerModule final : public Process {
   bool add_turn(const plan::Pose2& pose, std::int32_t theta);
   // The same to the unwrapped heading `target` (rad; a full circle for an exploration's scan).
   bool add_turn_to(const plan::Pose2& pose, double target);
-  // Folds the map's new readings into the layers, and counts the freed cells it folded in this
-  // activation (the costly part of a sync: no search or tree step then, docs/PLANNER.md "The module").
+  // Folds the map's new readings into the layers; a sync that freed cells (its costly part) makes
+  // the activation costly_now_: no search or tree step then (docs/PLANNER.md "Real time").
   void sync_map();
   // One control step; a new obstacle on the prefix or its end leads to a scan.
   void move_step(std::uint64_t tick, const plan::Pose2& pose);

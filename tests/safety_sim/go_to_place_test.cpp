@@ -471,8 +471,8 @@ TEST(GoToPlace, ExploringTurnsAFullCircleAtEachPlaceAndSavesItsGrid) {
 }
 
 // Why: an exploration's full turn is the planner's like any route's motion: XH, or the
-// operator's own command, ends it mid-turn, the robot stops turning within an emergency period
-// and nothing resumes by itself (the turn is not taken up again, the route is over).
+// operator's own command, ends it mid-turn; 30 ticks later the route is over, and for the next
+// 30 s the robot neither turns nor moves (the turn is not taken up again).
 TEST(GoToPlace, XHOrTheOperatorEndsAnExplorationMidTurnForGood) {
   const places::PlaceGraph& g = floor_graph();
   for (const char* command : {"XH", "AM 0 0"}) {

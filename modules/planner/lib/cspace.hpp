@@ -94,9 +94,10 @@ class CSpaceLayer {
                  std::span<const std::uint32_t> cells, std::vector<ClassChange>* out) const;
 
   FootprintMask mask_;
-  Band core_;                 // the largest box of cells wholly inside the mask (exact): an
-                              // obstacle in it settles a re-test at once (first = last = 0: none)
-  bool core_valid_ = false;   // core_ holds a box
+  Band core_;                 // the largest box of cells wholly inside the mask (its runs unused):
+                              // an obstacle in it settles a re-test at once
+  bool core_valid_ = false;   // core_ holds a box (not for an empty mask, nor one the table
+                              // cannot count exactly)
   Band box_;                  // the whole mask's bounding box
   bool box_exact_ = false;    // box_ holds < 65,536 cells (the table's count is exact)
   std::vector<Band> bands_;   // kBandRuns runs each, in order

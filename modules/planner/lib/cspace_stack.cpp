@@ -116,16 +116,18 @@ void CSpaceStack::dilate_row(std::span<const MaskRun> runs, int y, std::uint64_t
   if ((w_ & 63) != 0) out[wpr_ - 1] &= (std::uint64_t{1} << (w_ & 63)) - 1;
 }
 
-void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells) {
+std::uint32_t CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells) {
   // Only the rows holding a changed cell are retaken (their bits, spans and classes), and the
   // table from the first row whose occupancy changed.
   int first_moved = h_, y_lo = h_, y_hi = -1;
+  std::uint32_t lowered = 0;
   for (std::uint32_t o : cells) {
     const Cell c = map.cell_of_index(o);
     const bool occ = map.state_at(o) == CellState::Occupied;
     const bool was = occupied(c.x, c.y);
     const CellChange k = occ == was ? kRelabelled : occ ? kRaised : kLowered;
     marks_[o] = static_cast<std::uint8_t>((marks_[o] & ~kKindBits) | k);
+    lowered += k == kLowered ? 1 : 0;
     row_dirty_[static_cast<std::size_t>(c.y)] = 1;
     y_lo = std::min(y_lo, c.y);
     y_hi = std::max(y_hi, c.y);
@@ -137,6 +139,7 @@ void CSpaceStack::begin_sync(const OccupancyMap& map, std::span<const std::uint3
     row_dirty_[static_cast<std::size_t>(y)] = 0;
     rebuild_row(map, y);
   }
+  return lowered;
 }
 
 void CSpaceStack::end_sync(std::span<const std::uint32_t> cells) {

@@ -42,7 +42,8 @@ class CSpaceStack {
 
   // Why: fold the map's logged changes before the layers update: each cell's kind is set, and
   // the table is rebuilt when the occupancy changed. end_sync() must follow the layers.
-  void begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells);
+  // Returns the cells of kind kLowered (the layers' costly kind: Planner::sync()).
+  std::uint32_t begin_sync(const OccupancyMap& map, std::span<const std::uint32_t> cells);
   // Why: clear the kinds set by begin_sync.
   void end_sync(std::span<const std::uint32_t> cells);
 

@@ -3,7 +3,6 @@
 #include "modules/planner/lib/heading_search.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 
 #include "modules/planner/lib/footprint.hpp"
@@ -263,12 +262,7 @@ void HeadingSearch::start_turns(const LeanGraph& lg, double turn, double* cost) 
 
 bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   if (!run_.active) return true;
-  if (run_.settling) {
-    const std::size_t budget = max_pops > std::numeric_limits<std::size_t>::max() / kSettleStatesPerPop
-                                   ? std::numeric_limits<std::size_t>::max()
-                                   : std::size_t{max_pops} * kSettleStatesPerPop;
-    return settle_step(budget, out);
-  }
+  if (run_.settling) return settle_step(std::size_t{max_pops} * kSettleStatesPerPop, out);
   // The search's inputs, and what begin() derived from them, as locals: the loop below reads
   // them from registers, not through `this` (its writes to meta_ may alias any member).
   const std::span<const PassGrid* const> slices = run_.slices;
@@ -519,8 +513,7 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
     // pool ran out after the robot was reached, just below the key being expanded then (every
     // state below it was expanded whole). Out of pool before the robot: no tree.
     const bool reached_robot = best != CostField::kInfinity;
-    const bool keep = !limit || run_.proven;
-    kept_ = false;
+    const bool keep = !limit || run_.proven;  // kept_ stays false until settle_step() ends
     bound_ = best;
     settle_ = limit ? std::min(best + tree_margin(best), expanding - 2.0 * settle_slack(expanding))
                     : best + tree_margin(best);

@@ -69,7 +69,7 @@ bool HeadingSearch::settle_step(std::size_t max_states, PlanResult& out) {
   const std::size_t states = std::size_t{1} << page_shift_;
   const double below = settle_ + settle_slack(settle_);
   const std::size_t pages = std::max<std::size_t>(1, max_states / states);
-  const std::size_t end = used_ - run_.settle_page > pages ? run_.settle_page + pages : used_;
+  const std::size_t end = std::min(used_, run_.settle_page + pages);
   for (std::size_t page = run_.settle_page; page < end; ++page) {
     const PageOrigin& o = origin_[page];
     for (std::size_t i = 0; i < states; ++i) {

@@ -59,15 +59,13 @@ void Planner::set_map(const OccupancyMap& map) {
   waypoints_.reserve(2 * map_.cell_count() + layers_.size());
 }
 
-SyncWork Planner::sync() {
-  if (stepping()) return {};  // prepare_step() or plan_step() under way: their grids hold still
+std::uint32_t Planner::sync() {
+  if (stepping()) return 0;  // prepare_step() or plan_step() under way: their grids hold still
   const auto changed = map_.changes();
-  if (changed.empty()) return {};
-  SyncWork work{static_cast<std::uint32_t>(changed.size()), 0};
+  if (changed.empty()) return 0;
   const bool rect = cfg_.footprint == FootprintKind::Rectangle;
   field_changes_.clear();
-  cspace_.begin_sync(map_, changed);
-  for (const std::uint32_t c : changed) work.lowered += cspace_.kind(c) == kLowered ? 1 : 0;
+  const std::uint32_t freed = cspace_.begin_sync(map_, changed);
   for (std::size_t k = 0; k < layers_.size(); ++k)
     layers_[k].update(cspace_, map_, changed, !rect && k == 0 ? &field_changes_ : nullptr);
   for (std::size_t k = 0; k < turn_layers_.size(); ++k)
@@ -100,7 +98,7 @@ SyncWork Planner::sync() {
     }
   }
   map_.clear_changes();
-  return work;
+  return freed;
 }
 
 // Known structure takes the most hits a cell holds (OccupancyMap::kMaxCount), so that the ring's

@@ -48,14 +48,6 @@ struct Waypoint {
                   // of travel (Disc)
 };
 
-// What one Planner::sync() folded. A freed cell is its costly part (each layer re-tests the
-// blocked cells whose footprint covered it: ~1 ms per cell on the default map, the 64 layers);
-// new obstacles and free <-> unknown changes cost a few µs per cell.
-struct SyncWork {
-  std::uint32_t cells = 0;    // map cells folded
-  std::uint32_t lowered = 0;  // of which were occupied and no longer are
-};
-
 // Owns the map and everything derived from it. All buffers are sized by set_map(); plan() and
 // map updates do not allocate afterwards. Map changes (integrate_beam, mark_*) made through
 // map() are folded into the layers and the cost field at the next plan() (or sync()).
@@ -70,9 +62,11 @@ class Planner {
   const PlannerConfig& config() const { return cfg_; }
 
   // Why: fold the map's logged changes into the layers and the cost field (deferred while a
-  // prepare_step() or a plan_step() is under way). Returns what it folded: a caller with a time
-  // budget keeps a costly sync apart from its other steps.
-  SyncWork sync();
+  // prepare_step() or a plan_step() is under way). Returns the cells it freed (occupied no
+  // longer): a sync's costly part (each layer re-tests the blocked cells whose footprint covered
+  // one: ~1 ms per cell over the default map's 65 layers; new obstacles and free <-> unknown
+  // changes cost a few µs a cell), which a caller with a time budget keeps apart from other steps.
+  std::uint32_t sync();
 
   // Why: the window moves by whole cells (docs/PLANNER.md, "The window"): the map's counts move
   // in place (OccupancyMap::shift) and the shared occupancy table is retaken, in one call; the
