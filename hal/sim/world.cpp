@@ -2,25 +2,107 @@
 // World finalisation: polygon edges, bounds and the spatial grid.
 #include "hal/sim/world.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace robuter::sim {
 
-// Each polygon contributes its closing edge too; two-vertex obstacles are a single edge.
+namespace {
+
+constexpr double kOnBoundary = 1e-9;  // a point this near a polygon's edge is on it, not inside, m
+
+// Whether p lies inside the polygon and off its edges.
+bool strictly_inside(const Vec2& p, const std::vector<Vec2>& v) {
+  if (!point_in_polygon(p, v)) return false;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (point_segment_distance(p, v[k], v[(k + 1) % v.size()]) <= kOnBoundary) return false;
+  }
+  return true;
+}
+
+// The box of a polygon's vertices.
+Box box_of(const std::vector<Vec2>& v) {
+  Box b{v.front(), v.front()};
+  for (const auto& p : v) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
+}  // namespace
+
+// Each polygon contributes its closing edge too; two-vertex obstacles are a single edge. An edge
+// contributes only its parts that lie strictly inside no other polygon: where solids overlap (a
+// wall's squared end inside the wall it meets, a box against a wall) the hidden faces are not
+// surfaces, and their ends are not corners a beam may find. (Until 2026-12-05 they were: the end
+// of a room's wall, flush with a corridor's face, echoed to a ring sensor 68° off that
+// face, and the firmware stopped for an obstacle in an open corridor, docs/SIMULATOR.md.)
 void World::finalize(double cell) {
   segments_.clear();
+  std::vector<Box> boxes;
+  boxes.reserve(obstacles_.size());
+  for (const auto& ob : obstacles_) boxes.push_back(ob.vertices.empty() ? Box{} : box_of(ob.vertices));
+  std::vector<double> cuts;
+  // Adds the visible parts of edge (a, b) of obstacle idx.
+  auto add_edge = [&](const Vec2& a, const Vec2& b, int idx) {
+    const Vec2 ab = b - a;
+    const double len = ab.norm();
+    if (len <= 0.0) return;
+    const Box eb{a.cwiseMin(b), a.cwiseMax(b)};
+    cuts.assign({0.0, 1.0});
+    std::vector<int> near;
+    for (std::size_t j = 0; j < obstacles_.size(); ++j) {
+      const auto& v = obstacles_[j].vertices;
+      if (static_cast<int>(j) == idx || v.size() < 3) continue;
+      const Box& ob = boxes[j];
+      if ((eb.lo.array() > ob.hi.array()).any() || (eb.hi.array() < ob.lo.array()).any()) continue;
+      near.push_back(static_cast<int>(j));
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const Vec2& c = v[k];
+        const Vec2 cd = v[(k + 1) % v.size()] - c;
+        const double denom = cross(ab, cd);
+        if (std::abs(denom) > 1e-12 * len * cd.norm()) {
+          const double t = cross(c - a, cd) / denom;
+          const double u = cross(c - a, ab) / denom;
+          if (u >= -1e-12 && u <= 1.0 + 1e-12 && t > 0.0 && t < 1.0) cuts.push_back(t);
+        } else if (std::abs(cross(ab, c - a)) <= kOnBoundary * len) {  // collinear: its ends
+          for (const Vec2& e : {c, Vec2(c + cd)}) {
+            const double t = (e - a).dot(ab) / (len * len);
+            if (t > 0.0 && t < 1.0) cuts.push_back(t);
+          }
+        }
+      }
+    }
+    if (near.empty()) {
+      segments_.push_back({a, b, idx});
+      return;
+    }
+    std::sort(cuts.begin(), cuts.end());
+    double open = -1.0;  // start of the visible run being built, or -1
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const double t0 = cuts[k], t1 = cuts[k + 1];
+      if ((t1 - t0) * len <= kOnBoundary) continue;
+      const Vec2 mid = a + 0.5 * (t0 + t1) * ab;
+      const bool hidden = std::any_of(near.begin(), near.end(),
+                                      [&](int j) { return strictly_inside(mid, obstacles_[j].vertices); });
+      if (!hidden && open < 0.0) open = t0;
+      if (hidden && open >= 0.0) {
+        segments_.push_back({a + open * ab, a + t0 * ab, idx});
+        open = -1.0;
+      }
+    }
+    if (open >= 0.0) segments_.push_back({open == 0.0 ? a : Vec2(a + open * ab), b, idx});
+  };
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     const auto& v = obstacles_[i].vertices;
     const int idx = static_cast<int>(i);
     if (v.size() == 2) {
-      segments_.push_back({v[0], v[1], idx});
+      add_edge(v[0], v[1], idx);
       continue;
     }
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      const Vec2& a = v[k];
-      const Vec2& b = v[(k + 1) % v.size()];
-      if ((a - b).squaredNorm() > 0.0) segments_.push_back({a, b, idx});
-    }
+    for (std::size_t k = 0; k < v.size(); ++k) add_edge(v[k], v[(k + 1) % v.size()], idx);
   }
   if (segments_.empty()) {
     bounds_ = {Vec2::Zero(), Vec2::Zero()};

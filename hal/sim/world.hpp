@@ -49,7 +49,8 @@ class World {
   // Adds an obstacle; call finalize() once all are in.
   void add_obstacle(Obstacle obstacle) { obstacles_.push_back(std::move(obstacle)); }
 
-  // Builds the edge list and the spatial grid (cells of `cell` metres).
+  // Builds the edge list (each edge less its parts strictly inside another polygon: only the
+  // solids' outer faces are surfaces) and the spatial grid (cells of `cell` metres).
   void finalize(double cell = 0.5);
 
   const std::vector<Obstacle>& obstacles() const { return obstacles_; }

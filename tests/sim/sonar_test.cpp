@@ -174,6 +174,43 @@ TEST(Sonar, NearestEchoWins) {
   EXPECT_NEAR(e.range, std::hypot(1.5, 0.2), 1e-12);  // the box's nearest corner, face x = 1.5
 }
 
+// A T-junction of two walls 0.1 m thick: the west room's wall ends (squared off) inside the
+// corridor's wall, flush with its face. Seen from the corridor at 68° to that face, the
+// junction is a flat wall too oblique to echo; the end of the room's wall inside it is no
+// surface. Before 2026-12-05 each polygon's edges were whole, and the end of the room wall's
+// lower face echoed at 22° (the corner a ring sensor found on the building floor's corridors,
+// docs/SIMULATOR.md).
+TEST(Sonar, AFaceInsideAnotherSolidIsNoSurface) {
+  World w;
+  w.add_obstacle({"corridor wall", test::rect(-0.05, -5.0, 0.05, 5.0), 0});
+  w.add_obstacle({"room wall", test::rect(-5.0, -0.05, 0.05, 0.05), 0});
+  w.finalize();
+  for (const Segment& sg : w.segments()) {  // no edge runs inside the other solid
+    const Vec2 mid = 0.5 * (sg.a + sg.b);
+    const auto& other = w.obstacles()[static_cast<std::size_t>(1 - sg.obstacle)].vertices;
+    double off = 1.0;  // distance from the other solid's outline, m
+    for (std::size_t k = 0; k < other.size(); ++k)
+      off = std::min(off, point_segment_distance(mid, other[k], other[(k + 1) % other.size()]));
+    EXPECT_FALSE(point_in_polygon(mid, other) && off > 1e-9)
+        << "edge (" << sg.a.transpose() << ") - (" << sg.b.transpose() << ")";
+  }
+  SonarModel model(w, SonarParams{});
+  const Vec2 o(0.45, -0.95);
+  const Vec2 corner(0.05, -0.05);  // the room wall's end, on the corridor's face
+  const Echo e = model.trace(o, std::atan2(corner.y() - o.y(), corner.x() - o.x()));
+  EXPECT_FALSE(e.found) << "echo at " << e.range << " m off " << e.point.transpose();
+  // The faces that are surfaces still echo: the corridor's face square on, the room wall's
+  // lower face from the room's side.
+  EXPECT_NEAR(model.trace({1.0, 2.0}, kPi).range, 0.95, 1e-12);
+  EXPECT_NEAR(model.trace({-2.0, -1.0}, kPi / 2).range, 0.95, 1e-12);
+  // Disjoint solids keep every edge.
+  World d;
+  d.add_obstacle({"a", test::rect(0.0, 0.0, 1.0, 1.0), 0});
+  d.add_obstacle({"b", test::rect(2.0, 0.0, 3.0, 1.0), 0});
+  d.finalize();
+  EXPECT_EQ(d.segments().size(), 8u);
+}
+
 // Robot-mounted: sensor 1 sits on the front face, 0.695 m ahead of the axle.
 TEST(Sonar, RingSensorOnTheRobot) {
   const World world = one_wall({3.0, 0.0}, 0.0);
