@@ -22,7 +22,8 @@ EvidenceGrid::EvidenceGrid(const GridSettings& s) : s_(s) {
   s_.side = power_of_two(std::max(s_.side, 8));
   mask_ = s_.side - 1;
   cells_.assign(static_cast<std::size_t>(s_.side) * static_cast<std::size_t>(s_.side), Cell{});
-  from_carry_.assign(cells_.size(), 0);
+  flags_.assign(cells_.size(), 0);
+  sight_.assign(cells_.size(), 0);
   carried_.reserve(kCarried);
   next_.reserve(kCarried);
 }
@@ -41,7 +42,7 @@ bool EvidenceGrid::for_box(const Carried& c, Visit visit) const {
 bool EvidenceGrid::still_there(const Carried& c) const {
   return for_box(c, [&](int gx, int gy) {
     const Cell& cell = at(gx, gy);
-    return from_carry_[slot(gx, gy)] != 0 && cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
+    return (flags_[slot(gx, gy)] & kFromCarry) != 0 && cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
   });
 }
 
@@ -59,7 +60,7 @@ void EvidenceGrid::collect(const Eigen::Vector2d& robot, double radius, bool nea
     for (int gx = ox_; gx < ox_ + s_.side; ++gx) {
       const Cell& cell = at(gx, gy);
       if (cell.hit_tick == 0 || cell.hit_tick < cell.free_tick) continue;
-      if (from_carry_[slot(gx, gy)] != 0) continue;  // in carried_
+      if ((flags_[slot(gx, gy)] & kFromCarry) != 0) continue;  // in carried_
       const Eigen::Vector2d c((gx + 0.5) * s_.cell, (gy + 0.5) * s_.cell);
       if (((c - robot).squaredNorm() <= r2) != near) continue;
       if (next_.size() == kCarried) return;
@@ -97,12 +98,24 @@ void EvidenceGrid::carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d&
     for_box(c, [&](int gx, int gy) {
       Cell& cell = cells_[slot(gx, gy)];
       cell.hit_tick = std::max(cell.hit_tick, c.tick);
-      from_carry_[slot(gx, gy)] = 1;
+      flags_[slot(gx, gy)] = kFromCarry;  // carried evidence is never soft
       return false;
     });
     carried_.push_back(c);
   }
   next_.clear();
+}
+
+// A direction in 256 steps of a turn.
+std::uint8_t EvidenceGrid::sight_code(double angle) {
+  constexpr double kSteps = 256.0 / (2.0 * 3.14159265358979323846);
+  return static_cast<std::uint8_t>(static_cast<int>(std::lround(angle * kSteps)) & 255);
+}
+
+bool EvidenceGrid::along_sight(std::size_t sl, double dx, double dy) const {
+  const int steps = std::abs(static_cast<int>(static_cast<std::int8_t>(
+      static_cast<std::uint8_t>(sight_code(std::atan2(dy, dx)) - sight_[sl]))));
+  return steps * (2.0 * 3.14159265358979323846 / 256.0) <= s_.narrow_sight;
 }
 
 void EvidenceGrid::reset() {
@@ -113,7 +126,7 @@ void EvidenceGrid::reset() {
 
 void EvidenceGrid::clear_cells() {
   std::fill(cells_.begin(), cells_.end(), Cell{});
-  std::fill(from_carry_.begin(), from_carry_.end(), std::uint8_t{0});
+  std::fill(flags_.begin(), flags_.end(), std::uint8_t{0});
 }
 
 int EvidenceGrid::index(double v) const { return static_cast<int>(std::floor(v / s_.cell)); }
@@ -122,14 +135,14 @@ void EvidenceGrid::clear_column(int gx) {
   const int x = gx & mask_;
   for (int y = 0; y < s_.side; ++y) {
     cells_[static_cast<std::size_t>(y * s_.side + x)] = Cell{};
-    from_carry_[static_cast<std::size_t>(y * s_.side + x)] = 0;
+    flags_[static_cast<std::size_t>(y * s_.side + x)] = 0;
   }
 }
 
 void EvidenceGrid::clear_row(int gy) {
   const int y = gy & mask_;
   std::fill_n(cells_.begin() + static_cast<std::ptrdiff_t>(y * s_.side), s_.side, Cell{});
-  std::fill_n(from_carry_.begin() + static_cast<std::ptrdiff_t>(y * s_.side), s_.side, std::uint8_t{0});
+  std::fill_n(flags_.begin() + static_cast<std::ptrdiff_t>(y * s_.side), s_.side, std::uint8_t{0});
 }
 
 // Cells leaving the window are cleared: what was known there is forgotten, never misplaced.
@@ -201,7 +214,11 @@ void EvidenceGrid::certify_cone(std::uint64_t tick, const Eigen::Vector2d& origi
         if (along <= 0.0 || along * along < r2 * ch * ch) continue;  // outside the cone
         Cell& cell = at(gx, gy);
         const bool evidence = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
-        if (evidence && !contradicts) continue;
+        // A no-echo clears only soft evidence (an explained arc's, mark_arc), and only looking
+        // along nearly the line of sight it was seen along; ties of a tick go to the evidence.
+        if (evidence && !contradicts &&
+            ((flags_[slot(gx, gy)] & kSoft) == 0 || cell.hit_tick >= tick || !along_sight(slot(gx, gy), dx, dy)))
+          continue;
         cell.free_tick = tick;
       }
     }
@@ -253,6 +270,8 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
   }
   std::array<std::uint32_t, kArcCells> arc;        // slots of the arc's cells, in order, without repeats
   std::array<std::uint8_t, kArcCells> possible{};  // some point of the cell on the arc is not ruled out
+  std::array<std::uint8_t, kArcCells> on_structure{};  // some point of the cell on the arc is on known structure
+  std::array<std::uint8_t, kArcCells> sight{};         // the line of sight to the cell (sight_code)
   int cells = 0;
   bool explained = false;
   const int n = std::max(2, static_cast<int>(std::ceil(2.0 * s_.half_angle * range / (0.5 * s_.cell)))) + 1;
@@ -260,6 +279,10 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
     const double a = direction - s_.half_angle + 2.0 * s_.half_angle * i / (n - 1);
     const Eigen::Vector2d p = origin + range * Eigen::Vector2d(std::cos(a), std::sin(a));
     const int gx = index(p.x()), gy = index(p.y());
+    // The structure explains the echo wherever the arc meets it, inside the window or not (an
+    // echo off a wall at the cone's edge, 2.5 m away, meets it just outside).
+    const bool structure = narrowing && known_->occupied(p);
+    explained = explained || structure;
     if (!contains(gx, gy)) continue;
     const auto sl = static_cast<std::uint32_t>(slot(gx, gy));
     if (cells == 0 || arc[static_cast<std::size_t>(cells - 1)] != sl) {
@@ -267,8 +290,8 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
       arc[static_cast<std::size_t>(cells++)] = sl;
     }
     if (!narrowing) continue;
-    const bool structure = known_->occupied(p);
-    explained = explained || structure;
+    sight[static_cast<std::size_t>(cells - 1)] = sight_code(a);
+    if (structure) on_structure[static_cast<std::size_t>(cells - 1)] = 1;
     bool out = !structure;
     if (out) {
       out = false;
@@ -283,8 +306,14 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
       ++narrowed_cells_;
       continue;
     }
-    cells_[arc[k]].hit_tick = tick;
-    from_carry_[arc[k]] = 0;  // observed here
+    // Soft: a point of an explained arc off the structure that nothing ruled out; a later free
+    // certificate of any reading clears it. Hard evidence stays hard.
+    Cell& cell = cells_[arc[k]];
+    const bool hard_before = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick && (flags_[arc[k]] & kSoft) == 0;
+    const bool soft = explained && on_structure[k] == 0 && !hard_before;
+    cell.hit_tick = tick;
+    flags_[arc[k]] = soft ? kSoft : 0;  // observed here
+    sight_[arc[k]] = sight[k];
   }
 }
 

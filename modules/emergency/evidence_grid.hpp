@@ -83,7 +83,10 @@ class EvidenceGrid {
   void add_reading(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
                    bool contradicts);
   // The two halves of add_reading, for a batch of readings taken together (every cone, then every
-  // arc). mark_arc narrows the arc by `seen`, recent cones with an echo (docs/SAFETY.md §13).
+  // arc). mark_arc narrows the arc by `seen`, recent cones with an echo (docs/SAFETY.md §13); what
+  // is left of an explained arc off the known structure is *soft* evidence, which a later
+  // certificate along nearly the same line of sight (within narrow_sight) clears even without an
+  // echo. certify_cone never clears hard evidence unless `contradicts`.
   void certify_cone(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
                     bool contradicts);
   void mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
@@ -119,6 +122,11 @@ class EvidenceGrid {
     std::uint64_t free_tick = 0;  // last free certificate, ticks
     std::uint64_t hit_tick = 0;   // newest obstacle evidence, ticks
   };
+  // A direction (rad) in 256 steps of a turn (the line of sight a soft cell was seen along).
+  static std::uint8_t sight_code(double angle);
+  // Whether the line of sight (dx, dy) to slot sl's cell lies within narrow_sight of the one its
+  // soft evidence was seen along (to the code's step, 1.4°).
+  bool along_sight(std::size_t sl, double dx, double dy) const;
   // Whether the global cell (gx, gy) is inside the window.
   bool contains(int gx, int gy) const { return gx - ox_ >= 0 && gx - ox_ < s_.side && gy - oy_ >= 0 && gy - oy_ < s_.side; }
   // The storage slot of global cell (gx, gy) (toroidal: the window's cells are a mask away).
@@ -150,7 +158,10 @@ class EvidenceGrid {
   GridSettings s_;
   std::vector<Carried> carried_;         // evidence in the grid that carry() put there, kCarried reserved
   std::vector<Carried> next_;            // scratch of carry(), kCarried reserved at construction
-  std::vector<std::uint8_t> from_carry_;  // per slot: 1 when the cell's evidence came from carry()
+  static constexpr std::uint8_t kFromCarry = 1;  // flag: the cell's evidence came from carry()
+  static constexpr std::uint8_t kSoft = 2;       // flag: the cell's evidence is only explained arcs' (mark_arc)
+  std::vector<std::uint8_t> flags_;              // per slot: kFromCarry, kSoft
+  std::vector<std::uint8_t> sight_;              // per slot: the line of sight of its last echo (sight_code)
   int mask_ = 255;           // side − 1
   std::vector<Cell> cells_;  // side² cells, slot (gx mod side, gy mod side)
   int ox_ = 0;               // global index of the window's first column

@@ -21,6 +21,7 @@ namespace {
 using Eigen::Vector2d;
 
 constexpr std::uint64_t kAge = 300;  // free certificates count this long, ticks
+constexpr double kPi = 3.14159265358979323846;
 
 // A grid placed around the origin.
 EvidenceGrid placed_grid() {
@@ -159,6 +160,57 @@ TEST(EvidenceGrid, OnlyARecentConeAlongNearlyTheSameLineOfSightRulesAPointOut) {
   ASSERT_TRUE(probe.sees_through(across, p, side, 12)) << "the cone does contain p";
   EXPECT_FALSE(probe.sees_through(across, p, kB, 12)) << "but not along B's line of sight";
   EXPECT_EQ(after_b(&kJamb, 12, across).state(p, 12, kAge), CellState::obstacle);
+}
+
+// A wall's echo at the edge of a cone, 2 m away, across the window's edge: the wall is outside
+// the window, the rest of the arc inside. The wall explains the echo all the same (before
+// 2026-12-05 only samples inside the window were tested: the echo was unexplained and its arc
+// hard evidence for good — a robot in a corridor of the building floor stopped 0.7 m short of
+// such an arc, with nothing there).
+TEST(EvidenceGrid, AWallOutsideTheWindowExplainsAnEcho) {
+  const Vector2d o(3.0, 0.0);                      // the window holds x < 3.2 m
+  const double wall_at = kPi / 2 - 0.218166;       // the cone's right edge
+  const Discs wall({{on_arc(o, 2.0, wall_at), 0.03}});
+  EvidenceGrid g = narrowing_grid(&wall);
+  g.add_reading(10, o, kPi / 2, 2.0, false, true);
+  EXPECT_EQ(g.unexplained_echoes(), 0u);
+  const Vector2d inside = on_arc(o, 2.0, kPi / 2 + 0.15);
+  EXPECT_EQ(g.state(inside, 10, kAge), CellState::obstacle) << "nothing ruled it out";
+  g.add_reading(20, o, kPi / 2, 4.95, true, false);  // no echo along the same line
+  EXPECT_EQ(g.state(inside, 20, kAge), CellState::free);
+}
+
+// What is left of an explained arc off the structure is soft evidence: a later no-echo looking
+// along nearly the same line of sight clears it (the structure, not something in the open,
+// explains the echo, and now nothing answers from there); the structure's own cells, an
+// unexplained arc, and a no-echo from the side (a face turned to the echo's transducer may be
+// too oblique for it) leave their evidence.
+TEST(EvidenceGrid, ANoEchoAlongTheSameLineClearsOnlySoftEvidence) {
+  const Vector2d o(0.0, 0.0);
+  const Discs corner({{on_arc(o, 1.5, 0.2), 0.03}});  // a wall corner at the cone's edge
+  const Vector2d open = on_arc(o, 1.5, -0.1);         // the arc, in the open
+  const Vector2d wall = on_arc(o, 1.5, 0.2);
+  for (const KnownStructure* known : {static_cast<const KnownStructure*>(&corner),
+                                      static_cast<const KnownStructure*>(nullptr)}) {
+    EvidenceGrid g = narrowing_grid(known);
+    g.add_reading(10, o, 0.0, 1.5, false, true);
+    ASSERT_EQ(g.state(open, 10, kAge), CellState::obstacle);
+    // From the side: 1.2 m away, 59° off the line of sight.
+    const Vector2d side = open + Vector2d(0.0, 1.0) - 0.5 * Vector2d(std::cos(-0.1), std::sin(-0.1));
+    const Vector2d to_open = open - side;
+    g.add_reading(20, side, std::atan2(to_open.y(), to_open.x()), 4.95, true, false);
+    EXPECT_EQ(g.state(open, 20, kAge), CellState::obstacle) << "a no-echo from the side";
+    // Along the line of sight, from 0.3 m nearer.
+    const Vector2d nearer = 0.3 * Vector2d(std::cos(-0.1), std::sin(-0.1));
+    g.add_reading(30, nearer, -0.1, 4.95, true, false);
+    if (known != nullptr) {
+      EXPECT_EQ(g.state(open, 30, kAge), CellState::free) << "soft evidence, looked at again";
+      g.add_reading(40, o, 0.2, 4.95, true, false);  // no echo, looking straight at the corner
+      EXPECT_EQ(g.state(wall, 40, kAge), CellState::obstacle) << "the structure's own cell is hard";
+    } else {
+      EXPECT_EQ(g.state(open, 30, kAge), CellState::obstacle) << "an unexplained echo is hard";
+    }
+  }
 }
 
 // AC sets the odometry: the robot stays, its coordinates move. Evidence goes with the world into
