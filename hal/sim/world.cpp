@@ -41,10 +41,22 @@ Box box_of(const std::vector<Vec2>& v) {
 // face, and the firmware stopped for an obstacle in an open corridor, docs/SIMULATOR.md.)
 void World::finalize(double cell) {
   segments_.clear();
-  std::vector<Box> boxes;
-  boxes.reserve(obstacles_.size());
-  for (const auto& ob : obstacles_) boxes.push_back(ob.vertices.empty() ? Box{} : box_of(ob.vertices));
-  std::vector<double> cuts;
+  // The solids' bounding boxes, each as its diagonal, bucketed in a SegmentGrid: an edge is
+  // tested against the solids near it only (with all pairs, `robuter-sim render` of a world of
+  // 8,000 boxes took 1.73 s; so, 0.23 s).
+  std::vector<Segment> solids;
+  for (std::size_t j = 0; j < obstacles_.size(); ++j) {
+    const auto& v = obstacles_[j].vertices;
+    if (v.size() < 3) continue;
+    const Box b = box_of(v);
+    solids.push_back({b.lo, b.hi, static_cast<int>(j)});
+  }
+  SegmentGrid solid_grid;
+  solid_grid.build(solids, cell);
+  GridScratch scratch;
+  scratch.prepare(solids.size());
+  std::vector<double> cuts;  // where the edge crosses a near solid's outline, fractions of it
+  std::vector<int> near;     // the solids whose boxes meet the edge's
   // Adds the visible parts of edge (a, b) of obstacle idx.
   auto add_edge = [&](const Vec2& a, const Vec2& b, int idx) {
     const Vec2 ab = b - a;
@@ -52,16 +64,16 @@ void World::finalize(double cell) {
     if (len <= 0.0) return;
     const Box eb{a.cwiseMin(b), a.cwiseMax(b)};
     cuts.assign({0.0, 1.0});
-    std::vector<int> near;
-    for (std::size_t j = 0; j < obstacles_.size(); ++j) {
-      const auto& v = obstacles_[j].vertices;
-      if (static_cast<int>(j) == idx || v.size() < 3) continue;
-      const Box& ob = boxes[j];
-      if ((eb.lo.array() > ob.hi.array()).any() || (eb.hi.array() < ob.lo.array()).any()) continue;
-      near.push_back(static_cast<int>(j));
-      for (std::size_t k = 0; k < v.size(); ++k) {
-        const Vec2& c = v[k];
-        const Vec2 cd = v[(k + 1) % v.size()] - c;
+    near.clear();
+    solid_grid.for_each_near(eb.lo, eb.hi, scratch, [&](std::uint32_t k) {
+      const Segment& box = solids[k];
+      if (box.obstacle == idx) return;
+      if ((eb.lo.array() > box.b.array()).any() || (eb.hi.array() < box.a.array()).any()) return;
+      near.push_back(box.obstacle);
+      const auto& v = obstacles_[static_cast<std::size_t>(box.obstacle)].vertices;
+      for (std::size_t m = 0; m < v.size(); ++m) {
+        const Vec2& c = v[m];
+        const Vec2 cd = v[(m + 1) % v.size()] - c;
         const double denom = cross(ab, cd);
         if (std::abs(denom) > 1e-12 * len * cd.norm()) {
           const double t = cross(c - a, cd) / denom;
@@ -74,7 +86,7 @@ void World::finalize(double cell) {
           }
         }
       }
-    }
+    });
     if (near.empty()) {
       segments_.push_back({a, b, idx});
       return;
@@ -85,8 +97,9 @@ void World::finalize(double cell) {
       const double t0 = cuts[k], t1 = cuts[k + 1];
       if ((t1 - t0) * len <= kOnBoundary) continue;
       const Vec2 mid = a + 0.5 * (t0 + t1) * ab;
-      const bool hidden = std::any_of(near.begin(), near.end(),
-                                      [&](int j) { return strictly_inside(mid, obstacles_[j].vertices); });
+      const bool hidden = std::any_of(near.begin(), near.end(), [&](int j) {
+        return strictly_inside(mid, obstacles_[static_cast<std::size_t>(j)].vertices);
+      });
       if (!hidden && open < 0.0) open = t0;
       if (hidden && open >= 0.0) {
         segments_.push_back({a + open * ab, a + t0 * ab, idx});

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 namespace robuter::safety {
 
@@ -107,15 +108,16 @@ void EvidenceGrid::carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d&
 }
 
 // A direction in 256 steps of a turn.
+constexpr double kSightStep = 2.0 * std::numbers::pi / 256.0;  // rad
+
 std::uint8_t EvidenceGrid::sight_code(double angle) {
-  constexpr double kSteps = 256.0 / (2.0 * 3.14159265358979323846);
-  return static_cast<std::uint8_t>(static_cast<int>(std::lround(angle * kSteps)) & 255);
+  return static_cast<std::uint8_t>(static_cast<int>(std::lround(angle / kSightStep)) & 255);
 }
 
 bool EvidenceGrid::along_sight(std::size_t sl, double dx, double dy) const {
-  const int steps = std::abs(static_cast<int>(static_cast<std::int8_t>(
-      static_cast<std::uint8_t>(sight_code(std::atan2(dy, dx)) - sight_[sl]))));
-  return steps * (2.0 * 3.14159265358979323846 / 256.0) <= s_.narrow_sight;
+  // The difference of two codes, as a signed step count in [-128, 127].
+  const auto diff = static_cast<std::int8_t>(static_cast<std::uint8_t>(sight_code(std::atan2(dy, dx)) - sight_[sl]));
+  return std::abs(static_cast<int>(diff)) * kSightStep <= s_.narrow_sight;
 }
 
 void EvidenceGrid::reset() {
@@ -306,8 +308,9 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
       ++narrowed_cells_;
       continue;
     }
-    // Soft: a point of an explained arc off the structure that nothing ruled out; a later free
-    // certificate of any reading clears it. Hard evidence stays hard.
+    // Soft: a point of an explained arc off the structure that nothing ruled out; a later
+    // certificate along nearly the same line of sight clears it, even a no-echo's. Hard
+    // evidence stays hard.
     Cell& cell = cells_[arc[k]];
     const bool hard_before = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick && (flags_[arc[k]] & kSoft) == 0;
     const bool soft = explained && on_structure[k] == 0 && !hard_before;
