@@ -293,18 +293,11 @@ bool PlannerModule::add_turn_to(const plan::Pose2& pose, double target) {
   if (final_turn_) return false;
   final_turn_ = true;
   if (s_.planner.footprint == plan::FootprintKind::Rectangle) {
-    // The turn sweeps the slices between the two headings: each must leave room to turn.
-    const int k = planner_.slices();
-    const plan::Cell c = planner_.map().cell_of({pose.x, pose.y});
-    if (!planner_.map().contains(c)) return false;
-    const double step = 2.0 * plan::kPi / k;
-    const double lo = std::min(pose.heading, target), hi = std::max(pose.heading, target);
-    for (double h = lo; h < hi + step; h += step) {
-      const int slice = plan::slice_of_heading(std::min(h, hi), k);
-      if (!planner_.can_turn(c, slice)) {
-        log::info("planner: no room to turn to the heading asked");
-        return false;
-      }
+    // The turn measured from where the robot stands: the body keeps the turn clearance at
+    // every heading it sweeps.
+    if (!planner_.can_turn_at(pose, target)) {
+      log::info("planner: no room to turn to the heading asked");
+      return false;
     }
   }
   legs_[0] = planner::Leg{{pose.x, pose.y}, target, true, false, 0};

@@ -6,7 +6,8 @@
 
 namespace robuter::plan {
 
-Planner::Planner(const PlannerConfig& config) : cfg_(config) {
+Planner::Planner(const PlannerConfig& config)
+    : cfg_(config), turn_envelope_(config.rectangle, config.turn_clearance) {
   if (cfg_.heading_slices < 1) cfg_.heading_slices = 1;
   costs_.unknown_cost = cfg_.unknown_cost < 1.0 ? 1.0 : cfg_.unknown_cost;
   set_map(OccupancyMap(MapGeometry{1, 1, 0.05, {}}));
@@ -168,6 +169,11 @@ bool Planner::can_turn(Cell c, int slice) const {
   const int k = slice < 0 || slice >= slices() ? 0 : slice;
   if (turn_layers_.empty()) return layers_[static_cast<std::size_t>(k)].grid().at(c) != kBlocked;
   return !turn_room_.blocked(c, k);
+}
+
+bool Planner::can_turn_at(const Pose2& pose, double target) const {
+  if (!map_.contains(map_.cell_of({pose.x, pose.y}))) return false;
+  return turn_envelope_.turn_is_clear(map_, pose, target);
 }
 
 // Why: the cost field is recomputed only when the goal moves; map changes repair it.

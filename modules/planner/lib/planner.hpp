@@ -15,6 +15,7 @@
 #include "modules/planner/lib/pass_grid.hpp"
 #include "modules/planner/lib/plan_result.hpp"
 #include "modules/planner/lib/slice_bits.hpp"
+#include "modules/planner/lib/turn_room.hpp"
 
 namespace robuter::plan {
 
@@ -144,6 +145,13 @@ class Planner {
   // slice (the slice's grown body is clear there; the body itself when no turn clearance is
   // configured). False off the map.
   bool can_turn(Cell c, int slice) const;
+  // Why: a turn in place where the robot stands (the follower's via, final and exploring turns)
+  // measured from its pose (turn_room.hpp; it errs only towards refusing): the body keeps
+  // more than turn_clearance, rounded, from every occupied cell at every heading from
+  // pose.heading to target (rad). Finer than can_turn's cells and square-grown bodies, which
+  // forbid every turn in a 2.10 m corridor where the body's corners pass 0.27 m from the walls
+  // (docs/PLANNER.md, "A turn where the robot stands"). Rectangle only; false off the map.
+  bool can_turn_at(const Pose2& pose, double target) const;
   // Why: tests compare the turn layers (one bit per slice per cell; empty without clearance).
   const SliceBits& turn_room() const { return turn_room_; }
   int slices() const { return static_cast<int>(layers_.size()); }
@@ -173,6 +181,7 @@ class Planner {
   std::vector<FootprintMask> turn_masks_;     // Rectangle with turn_clearance: grown body per slice
   std::vector<CSpaceLayer> turn_layers_;      // per slice: the grown body's mask, kept as bits
   SliceBits turn_room_;                       // bit k set: turning at the cell blocked in slice k
+  TurnEnvelope turn_envelope_;                // Rectangle: the body grown by turn_clearance, per bearing
   std::vector<ClassChange> field_changes_;    // changes of the field's grid in one sync
   CostField field_;                     // cost to the goal on the field grid
   bool field_ready_ = false;            // field_ matches the current goal and grid
