@@ -270,7 +270,9 @@ plan::Status save_place_grid(const PlaceGrid& grid, const std::string& path) {
 }
 
 plan::Result<PlaceGrid> load_place_grid(const std::string& path) {
-  auto text = plan::read_text_file(path);
+  // The largest grid a file may hold (kMaxSide squared, a newline per row) and its header.
+  constexpr std::size_t kMaxBytes = static_cast<std::size_t>(kMaxSide) * (kMaxSide + 1) + 4096;
+  auto text = plan::read_text_file(path, kMaxBytes);
   if (!text) return text.error();
   return parse_place_grid(*text, path);
 }

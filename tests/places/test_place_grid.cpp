@@ -2,6 +2,7 @@
 // Seed 003's local grid per place: cut from the map, its text, its files, applied to a map.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -188,6 +189,35 @@ TEST(PlaceGrid, SavedAndLoaded) {
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().file, missing);
   EXPECT_FALSE(load_place_grid(missing).ok());
+  std::filesystem::remove_all(dir);
+}
+
+// Why: [places] load_grids reads `<dir>/<place>.txt` at start-up, a folder anyone may write to:
+// a FIFO there must not hang the firmware, nor a huge file (or /dev/zero behind a link) fill its
+// memory. Each is refused with the reason, like every other file robuterd reads.
+TEST(PlaceGrid, AFifoAFolderOrAHugeFileIsRefusedWithoutReadingIt) {
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("place_grid_odd_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string fifo = (dir / "fifo.txt").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto f = load_place_grid(fifo);  // opened for reading with no writer: used to wait for ever
+  ASSERT_FALSE(f.ok());
+  EXPECT_NE(f.error().text().find("not a regular file"), std::string::npos) << f.error().text();
+  std::filesystem::create_directories(dir / "folder.txt");
+  const auto d = load_place_grid((dir / "folder.txt").string());
+  ASSERT_FALSE(d.ok());
+  EXPECT_NE(d.error().text().find("folder"), std::string::npos) << d.error().text();
+  const std::string huge = (dir / "huge.txt").string();
+  { std::ofstream(huge).put('x'); }
+  std::filesystem::resize_file(huge, 4ull << 30);  // 4 GiB, sparse: no disk used
+  const auto h = load_place_grid(huge);
+  ASSERT_FALSE(h.ok());
+  EXPECT_NE(h.error().text().find("larger than"), std::string::npos) << h.error().text();
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.txt");
+  const auto z = load_place_grid((dir / "zero.txt").string());
+  ASSERT_FALSE(z.ok());
+  EXPECT_NE(z.error().text().find("not a regular file"), std::string::npos) << z.error().text();
   std::filesystem::remove_all(dir);
 }
 

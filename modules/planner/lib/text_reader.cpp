@@ -2,22 +2,17 @@
 // Whole-file reads, line splitting, strict number parsing and a line-counting tokenizer.
 #include "modules/planner/lib/text_reader.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+
+#include "kernel/input_file.hpp"
 
 namespace robuter::plan {
 
-Result<std::string> read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, std::string("cannot open: ") + std::strerror(errno)};
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) return Error{path, 0, "read error"};
-  return ss.str();
+Result<std::string> read_text_file(const std::string& path, std::size_t max_bytes) {
+  std::string text;
+  if (auto why = read_input_file(path, text, max_bytes)) return Error{path, 0, *why};
+  return text;
 }
 
 std::vector<std::string_view> split_lines(std::string_view text) {

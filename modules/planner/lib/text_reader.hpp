@@ -2,6 +2,7 @@
 // Reading text files for the loaders: whole-file read, line splitting, tokens with line numbers.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,8 +12,12 @@
 
 namespace robuter::plan {
 
-// Why: the loaders parse from memory; this is their only file access.
-Result<std::string> read_text_file(const std::string& path);
+inline constexpr std::size_t kMaxTextFileBytes = 64u * 1024u * 1024u;  // largest file a loader reads, bytes
+
+// Why: the loaders parse from memory; this is their only file access. A regular file of at most
+// `max_bytes`, or an error with the reason (kernel/input_file.hpp: a folder, a FIFO or /dev/zero
+// never hangs or fills memory).
+Result<std::string> read_text_file(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
 
 // Why: lines without their terminator; a trailing '\r' (CRLF files) is dropped.
 std::vector<std::string_view> split_lines(std::string_view text);
