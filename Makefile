@@ -88,6 +88,7 @@ fuzz: deps
 
 bench: deps build
 	@tools/deps/ensure.sh tools/deps/bench-packages.txt
+	cmake --build $(BUILD) -j $(JOBS) --target robuter_bench_programs
 	@ROBUTER_BUILD=$(BUILD) tools/bench/run.sh
 
 # The prefix is set at configure time: the unit and the config paths depend on it (docs/INSTALL.md).

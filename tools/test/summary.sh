@@ -11,9 +11,10 @@ for log in "$@"; do
   n=$(sed -E 's/.* failed out of ([0-9]+).*/\1/' <<<"$line")
   passed=$((passed + n - f)); failed=$((failed + f))
   # ctest --output-on-failure: a failed test's output follows its "Test #N: name ... ***" line,
-  # up to the next "Start N:" or "k/n Test #" line.
+  # up to the next "Start N:" or "k/n Test #" line. A disabled test ("***Not Run (Disabled)") has
+  # not failed: ctest leaves it out of its own count too.
   awk -v logname="$log" '
-    /^ *[0-9]+\/[0-9]+ Test +#[0-9]+: .*\*\*\*/ { name = $4; n = 0; grab = 1; next }
+    /^ *[0-9]+\/[0-9]+ Test +#[0-9]+: .*\*\*\*/ && !/\*\*\*Not Run \(Disabled\)/ { name = $4; n = 0; grab = 1; next }
     /^ *Start +[0-9]+: / || /^ *[0-9]+\/[0-9]+ Test +#/ || /^[0-9]+% tests passed/ {
       if (grab) { print "summary: FAILED " name " (" logname "), its output'"'"'s last lines:";
                   s = n > 40 ? n - 40 : 0; for (i = s + 1; i <= n; ++i) print "  | " buf[i] }
