@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// KLD-sampling's bound and bin set (kld_bins.hpp).
+#include "modules/localise/lib/kld_bins.hpp"
+
+#include <cmath>
+
+namespace robuter::loc {
+
+double kld_needed(int bins, double epsilon, double z) {
+  if (bins <= 1) return 1.0;
+  const double k = bins - 1;
+  const double a = 2.0 / (9.0 * k);
+  const double c = 1.0 - a + std::sqrt(a) * z;
+  return k / (2.0 * epsilon) * c * c * c;
+}
+
+KldBins::KldBins(int capacity)
+    : keys_(static_cast<std::size_t>(capacity) * 2 + 1, 0), capacity_(capacity) {
+  used_.reserve(static_cast<std::size_t>(capacity));
+}
+
+bool KldBins::insert(int bx, int by, int bt) {
+  if (size_ >= capacity_) return false;
+  const auto pack = [](int v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1FFFFFu); };
+  const std::uint64_t key = ((pack(bx) << 42) | (pack(by) << 21) | pack(bt)) + 1;
+  const std::uint64_t h = key * 0x9E3779B97F4A7C15ull;
+  const std::size_t n = keys_.size();
+  std::size_t i = static_cast<std::size_t>(h >> 20) % n;
+  for (;;) {
+    if (keys_[i] == key) return false;
+    if (keys_[i] == 0) {
+      keys_[i] = key;
+      used_.push_back(static_cast<std::uint32_t>(i));
+      ++size_;
+      return true;
+    }
+    i = i + 1 == n ? 0 : i + 1;
+  }
+}
+
+void KldBins::clear() {
+  for (const auto i : used_) keys_[i] = 0;
+  used_.clear();
+  size_ = 0;
+}
+
+}  // namespace robuter::loc

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// KLD-sampling's count of occupied pose bins, in a fixed table (no allocation after construction).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace robuter::loc {
+
+// The number of particles KLD-sampling asks for when the samples so far fill `bins` bins (Fox
+// 2003): the Wilson-Hilferty approximation of the chi-square quantile, for error `epsilon` and
+// standard normal upper quantile `z`.
+double kld_needed(int bins, double epsilon, double z);
+
+// A set of (x, y, theta) bin keys with room for `capacity` distinct ones: open addressing over a
+// table of twice the capacity, cleared in time proportional to what was inserted.
+class KldBins {
+ public:
+  explicit KldBins(int capacity = 0);
+  // Adds the bin; true when it was not there yet (false also when the table is full).
+  bool insert(int bx, int by, int bt);
+  int size() const { return size_; }
+  void clear();
+
+ private:
+  std::vector<std::uint64_t> keys_;  // 0 = empty slot; key = packed bin + 1
+  std::vector<std::uint32_t> used_;  // slots filled since the last clear
+  int size_ = 0;                     // distinct bins inserted
+  int capacity_ = 0;                 // most bins kept
+};
+
+}  // namespace robuter::loc

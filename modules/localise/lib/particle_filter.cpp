@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The particle filter (particle_filter.hpp).
+#include "modules/localise/lib/particle_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace robuter::loc {
+
+ParticleFilter::ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed)
+    : field_(field), params_(params), rng_(seed), bins_(std::max(1, params.max_particles)),
+      arc_(arc_table(params.sonar)) {
+  params_.max_particles = std::max(1, params_.max_particles);
+  params_.min_particles = std::clamp(params_.min_particles, 1, params_.max_particles);
+  const auto n = static_cast<std::size_t>(params_.max_particles);
+  particles_.resize(n);
+  next_.resize(n);
+  cdf_.resize(n);
+  log_lik_.resize(n);
+  const auto& g = field_.geometry();
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      if (field_.cell(x, y) >= params_.body_clearance)
+        free_.push_back(static_cast<std::uint32_t>(y * g.width + x));
+}
+
+void ParticleFilter::set_pose(const Pose& mean, const Eigen::Vector3d& sigma) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  stepping_ = false;  // a step under way is dropped: its particles are replaced
+  count_ = params_.max_particles;
+  for (int i = 0; i < count_; ++i) {
+    auto& p = particles_[static_cast<std::size_t>(i)];
+    p.pose = Pose(mean.x() + sigma.x() * unit(rng_), mean.y() + sigma.y() * unit(rng_),
+                  wrap_angle(mean.z() + sigma.z() * unit(rng_)));
+    p.weight = 1.0 / count_;
+  }
+  w_slow_ = w_fast_ = 0.0;
+}
+
+Pose ParticleFilter::random_free_pose() {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto& g = field_.geometry();
+  if (free_.empty()) return Pose::Zero();
+  const auto k = static_cast<std::size_t>(u(rng_) * static_cast<double>(free_.size())) % free_.size();
+  const auto cell = free_[k];
+  const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(g.width));
+  const int cy = static_cast<int>(cell / static_cast<std::uint32_t>(g.width));
+  return Pose(g.origin.x() + (cx + u(rng_)) * g.resolution, g.origin.y() + (cy + u(rng_)) * g.resolution,
+              wrap_angle(2.0 * std::numbers::pi * u(rng_)));
+}
+
+void ParticleFilter::set_global() {
+  stepping_ = false;
+  count_ = params_.max_particles;
+  for (int i = 0; i < count_; ++i) {
+    auto& p = particles_[static_cast<std::size_t>(i)];
+    p.pose = random_free_pose();
+    p.weight = 1.0 / count_;
+  }
+  w_slow_ = w_fast_ = 0.0;
+}
+
+bool ParticleFilter::step(const Pose& odometry, std::span<const SonarReading> readings) {
+  if (!begin_step(odometry, readings)) return false;
+  return weigh_some(count_);
+}
+
+bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReading> readings) {
+  if (stepping_) return false;
+  if (!have_odometry_) {
+    last_odometry_ = odometry;
+    have_odometry_ = true;
+    return false;
+  }
+  const OdometryStep s = odometry_step(last_odometry_, odometry);
+  const double turned = std::abs(wrap_angle(odometry.z() - last_odometry_.z()));
+  if (std::abs(s.trans) < params_.update_distance && turned < params_.update_angle) return false;
+  last_odometry_ = odometry;
+  for (int i = 0; i < count_; ++i) {
+    auto& p = particles_[static_cast<std::size_t>(i)];
+    p.pose = sample_motion(p.pose, s, params_.motion, rng_);
+  }
+  kept_count_ = 0;
+  for (const auto& r : readings) {
+    if (!informative(r, params_.sonar) || kept_count_ == kMaxReadings) continue;
+    kept_[static_cast<std::size_t>(kept_count_++)] =
+        Kept{r.mount, Eigen::Vector2d(std::cos(r.direction), std::sin(r.direction)), r.range};
+  }
+  stepping_ = true;
+  weighed_ = 0;
+  best_log_ = -1e300;
+  likelihood_sum_ = 0.0;
+  return true;
+}
+
+double ParticleFilter::log_likelihood(const Pose& pose) const {
+  const double c = std::cos(pose.z()), sn = std::sin(pose.z());
+  const Eigen::Vector2d at(pose.x(), pose.y());
+  double l = field_.at(at) < params_.body_clearance ? std::log(params_.inside_weight) : 0.0;
+  for (int k = 0; k < kept_count_; ++k) {
+    const auto& r = kept_[static_cast<std::size_t>(k)];
+    const Eigen::Vector2d origin = at + Eigen::Vector2d(c * r.mount.x() - sn * r.mount.y(), sn * r.mount.x() + c * r.mount.y());
+    const Eigen::Vector2d axis(c * r.axis.x() - sn * r.axis.y(), sn * r.axis.x() + c * r.axis.y());
+    l += std::log(sonar_likelihood(field_, origin, axis, r.range, params_.sonar, arc_));
+  }
+  return l;
+}
+
+bool ParticleFilter::weigh_some(int n) {
+  if (!stepping_) return false;
+  const int end = std::min(count_, weighed_ + std::max(0, n));
+  for (; weighed_ < end; ++weighed_) {
+    const auto k = static_cast<std::size_t>(weighed_);
+    const double l = log_likelihood(particles_[k].pose);
+    log_lik_[k] = l;
+    best_log_ = std::max(best_log_, l);
+    if (kept_count_ > 0) likelihood_sum_ += std::exp(l / kept_count_);
+  }
+  if (weighed_ < count_) return false;
+  finish_weighing();
+  resample();
+  stepping_ = false;
+  return true;
+}
+
+void ParticleFilter::finish_weighing() {
+  if (kept_count_ > 0 && count_ > 0) {
+    const double mean_lik = likelihood_sum_ / count_;  // the per-reading geometric mean, averaged
+    w_slow_ = w_slow_ == 0.0 ? mean_lik : w_slow_ + params_.alpha_slow * (mean_lik - w_slow_);
+    w_fast_ = w_fast_ == 0.0 ? mean_lik : w_fast_ + params_.alpha_fast * (mean_lik - w_fast_);
+  }
+  double total = 0.0;
+  for (int i = 0; i < count_; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    particles_[k].weight = std::exp(params_.likelihood_power * (log_lik_[k] - best_log_));
+    total += particles_[k].weight;
+  }
+  for (int i = 0; i < count_; ++i) particles_[static_cast<std::size_t>(i)].weight /= total;
+}
+
+void ParticleFilter::resample() {
+  if (count_ == 0) return;
+  double acc = 0.0;
+  for (int i = 0; i < count_; ++i) {
+    acc += particles_[static_cast<std::size_t>(i)].weight;
+    cdf_[static_cast<std::size_t>(i)] = acc;
+  }
+  const double inject = w_slow_ > 0.0 ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  bins_.clear();
+  injected_ = 0;
+  int n = 0;
+  for (;;) {
+    Pose pose;
+    if (u(rng_) < inject) {
+      pose = random_free_pose();
+      ++injected_;
+    } else {
+      const double x = u(rng_) * acc;
+      const auto it = std::upper_bound(cdf_.begin(), cdf_.begin() + count_, x);
+      const auto k = std::min<std::ptrdiff_t>(it - cdf_.begin(), count_ - 1);
+      pose = particles_[static_cast<std::size_t>(k)].pose;
+    }
+    next_[static_cast<std::size_t>(n)] = Particle{pose, 0.0};
+    ++n;
+    bins_.insert(static_cast<int>(std::floor(pose.x() / params_.bin_xy)),
+                 static_cast<int>(std::floor(pose.y() / params_.bin_xy)),
+                 static_cast<int>(std::floor(pose.z() / params_.bin_theta)));
+    const double needed = std::max<double>(params_.min_particles,
+                                           kld_needed(bins_.size(), params_.kld_epsilon, params_.kld_z));
+    if (n >= params_.max_particles || n >= needed) break;
+  }
+  std::swap(particles_, next_);
+  count_ = n;
+  for (int i = 0; i < count_; ++i) particles_[static_cast<std::size_t>(i)].weight = 1.0 / count_;
+}
+
+Estimate ParticleFilter::estimate() const {
+  Estimate e;
+  e.particles = count_;
+  if (count_ == 0) return e;
+  double sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
+  for (int i = 0; i < count_; ++i) {
+    const auto& p = particles_[static_cast<std::size_t>(i)];
+    sx += p.weight * p.pose.x();
+    sy += p.weight * p.pose.y();
+    sc += p.weight * std::cos(p.pose.z());
+    ss += p.weight * std::sin(p.pose.z());
+  }
+  e.pose = Pose(sx, sy, std::atan2(ss, sc));
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < count_; ++i) {
+    const auto& p = particles_[static_cast<std::size_t>(i)];
+    const Eigen::Vector3d d(p.pose.x() - sx, p.pose.y() - sy, wrap_angle(p.pose.z() - e.pose.z()));
+    cov += p.weight * d * d.transpose();
+  }
+  e.covariance = cov;
+  return e;
+}
+
+}  // namespace robuter::loc

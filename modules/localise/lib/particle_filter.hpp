@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Monte Carlo localisation on a distance field: odometry motion, sonar weights, KLD resampling.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "modules/localise/lib/distance_field.hpp"
+#include "modules/localise/lib/kld_bins.hpp"
+#include "modules/localise/lib/motion_model.hpp"
+#include "modules/localise/lib/sonar_likelihood.hpp"
+
+namespace robuter::loc {
+
+// The filter's constants (docs/LOCALISATION.md, "The filter").
+struct FilterParams {
+  int min_particles = 200;         // KLD-sampling never keeps fewer
+  int max_particles = 2000;        // nor more (every buffer is this size, from construction)
+  double kld_epsilon = 0.05;       // KLD-sampling's error bound
+  double kld_z = 2.33;             // its upper standard normal quantile (1 - delta = 0.99)
+  double bin_xy = 0.25;            // KLD bin side, m
+  double bin_theta = 0.1745;       // KLD bin width, rad (10°)
+  double update_distance = 0.10;   // the filter steps once the odometry has moved this far, m
+  double update_angle = 0.10;      // or turned this much, rad
+  double alpha_slow = 0.001;       // augmented MCL: the slow average of the measurement likelihood
+  double alpha_fast = 0.1;         // and the fast one; fast < slow injects random particles
+  double body_clearance = 0.30;    // an axle nearer than this to a mapped wall is not a pose, m
+  double inside_weight = 0.02;     // the likelihood factor of such a pose
+  double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
+                                   // readings of one step are not independent (AMCL's answer is
+                                   // to use fewer beams; this keeps them all and flattens each)
+  MotionNoise motion;              // the odometry model's noise
+  SonarModelParams sonar;          // the ring's model
+};
+
+// One hypothesis.
+struct Particle {
+  Pose pose = Pose::Zero();  // x, y (m), theta (rad) in the map frame
+  double weight = 0.0;       // normalised: the particles' weights add up to 1
+};
+
+// What the filter believes.
+struct Estimate {
+  Pose pose = Pose::Zero();                                 // weighted mean (theta: circular mean)
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity(); // of x (m), y (m), theta (rad)
+  int particles = 0;                                        // how many it keeps now
+};
+
+class ParticleFilter {
+ public:
+  // Allocates every buffer (max_particles particles, the field's free cells); nothing after.
+  ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed);
+
+  // A Gaussian cloud of max_particles about `mean` with standard deviations `sigma` (m, m, rad).
+  void set_pose(const Pose& mean, const Eigen::Vector3d& sigma);
+  // Global localisation: max_particles spread over the map's free cells, any heading.
+  void set_global();
+
+  static constexpr int kMaxReadings = 32;  // ranges kept per step (the ring's 24, the pan-tilt's)
+
+  // Feeds the odometry's pose (its own frame) and the ring's last readings (robot frame). The
+  // filter steps (moves every particle by the odometry since its last step, weighs, resamples)
+  // once the odometry has moved update_distance or turned update_angle; true when it stepped.
+  bool step(const Pose& odometry, std::span<const SonarReading> readings);
+
+  // The same step in parts, for a caller with a budget per activation: begin_step() moves the
+  // particles and keeps the readings (true when a step begins; false while one is under way or
+  // the robot has not moved enough), weigh_some() weighs up to `n` more particles and, once all
+  // are weighed, resamples (true when the step is done). step() is begin_step() and one
+  // weigh_some() of every particle: the same draws, the same result.
+  bool begin_step(const Pose& odometry, std::span<const SonarReading> readings);
+  bool weigh_some(int n);
+  bool stepping() const { return stepping_; }
+
+  Estimate estimate() const;
+  std::span<const Particle> particles() const { return {particles_.data(), static_cast<std::size_t>(count_)}; }
+  // The average measurement likelihoods of augmented MCL (per reading), slow and fast.
+  double w_slow() const { return w_slow_; }
+  double w_fast() const { return w_fast_; }
+  // Particles drawn at random from the free cells at the last step.
+  int injected() const { return injected_; }
+  const FilterParams& params() const { return params_; }
+
+ private:
+  // One informative reading, its direction worked out once per step.
+  struct Kept {
+    Eigen::Vector2d mount;  // transducer in the robot frame, m
+    Eigen::Vector2d axis;   // beam axis in the robot frame, unit
+    double range = 0.0;     // m
+  };
+  double log_likelihood(const Pose& pose) const;
+  void finish_weighing();
+  void resample();
+  Pose random_free_pose();
+
+  const DistanceField& field_;
+  FilterParams params_;
+  std::mt19937_64 rng_;
+  std::vector<Particle> particles_;  // the current set (max_particles slots, count_ used)
+  std::vector<Particle> next_;       // resampling's output
+  std::vector<double> cdf_;          // cumulative weights of the current set
+  std::vector<double> log_lik_;      // per particle, at the last weighing
+  std::vector<std::uint32_t> free_;  // cells whose centre is body_clearance from every wall
+  KldBins bins_;                     // KLD-sampling's bins
+  ArcTable arc_;                     // the sonar model's directions across the cone
+  std::array<Kept, kMaxReadings> kept_{};  // this step's informative readings
+  int kept_count_ = 0;               // how many
+  bool stepping_ = false;            // a step is under way (particles moved, not all weighed)
+  int weighed_ = 0;                  // particles weighed so far in this step
+  double best_log_ = 0.0;            // the largest log-likelihood so far in this step
+  double likelihood_sum_ = 0.0;      // sum of the per-reading geometric mean likelihoods so far
+  int count_ = 0;                    // particles in use
+  int injected_ = 0;                 // random particles at the last resampling
+  double w_slow_ = 0.0;              // slow average likelihood per reading
+  double w_fast_ = 0.0;              // fast average likelihood per reading
+  Pose last_odometry_ = Pose::Zero();// the odometry at the last step
+  bool have_odometry_ = false;       // step() has seen an odometry pose
+};
+
+}  // namespace robuter::loc

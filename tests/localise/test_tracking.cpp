@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The filter on the simulated lab: tracking where odometry drifts, and recovery from a kidnapping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "tests/localise/lab_tour.hpp"
+
+namespace robuter::loc {
+namespace {
+
+using test::lab_loop;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+TEST(Tracking, ThreeLapsOfTheLabStayWithin10cmWhereOdometryDrifts) {
+  const auto lab = test::load_lab("default.toml");
+  for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+    auto spec = lab_loop(seed);
+    spec.laps = 3;
+    const auto samples = test::run_tour(lab, spec);
+    ASSERT_GT(samples.size(), 100u);
+    std::vector<double> pos, head;
+    for (const auto& t : samples) {
+      pos.push_back(t.filter_error);
+      head.push_back(t.filter_heading);
+    }
+    const double p95 = test::quantile(pos, 0.95), h95 = test::quantile(head, 0.95);
+    const double worst = test::quantile(pos, 1.0);
+    const auto& last = samples.back();
+    std::printf("seed %llu: %zu steps over %.0f s; filter p95 %.0f mm %.2f deg, worst %.0f mm; "
+                "odometry at the end %.0f mm %.1f deg; particles at the end %d\n",
+                static_cast<unsigned long long>(seed), samples.size(), last.time, p95 * 1000, h95 / kDeg,
+                worst * 1000, last.odometry_error * 1000, last.odometry_heading / kDeg, last.particles);
+    EXPECT_LE(p95, 0.10);
+    EXPECT_LE(h95, 3.0 * kDeg);
+    EXPECT_LE(worst, 0.30);                      // never diverging
+    EXPECT_GT(last.odometry_error, 3.0 * p95);   // the tour is one odometry alone would lose
+  }
+}
+
+TEST(Tracking, AKidnappedRobotIsFoundAgain) {
+  const auto lab = test::load_lab("default.toml");
+  int recovered = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    auto spec = lab_loop(seed);
+    spec.laps = 3;
+    spec.kidnap_after = 20.0;
+    spec.kidnap_to_waypoint = 5;  // (6.6, 2.3): from the west room to the east one, over 3 m
+    const auto samples = test::run_tour(lab, spec);
+    const double at = test::found_after(samples, 20.0);
+    const double found = at < 0.0 ? -1.0 : at - 20.0;
+    std::printf("seed %llu: found %.1f s after the kidnapping\n", static_cast<unsigned long long>(seed), found);
+    if (found >= 0.0 && found <= 30.0) ++recovered;
+  }
+  EXPECT_GE(recovered, 2);
+}
+
+}  // namespace
+}  // namespace robuter::loc
+
+namespace robuter::loc {
+namespace {
+
+TEST(Tracking, GlobalLocalisationFindsTheRobotWithNoInitialPose) {
+  const auto lab = test::load_lab("default.toml");
+  int found_in_time = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    auto spec = lab_loop(seed);
+    spec.laps = 2;
+    spec.global_start = true;
+    const auto samples = test::run_tour(lab, spec);
+    const double found = test::found_after(samples);
+    std::printf("seed %llu: found after %.1f s of driving\n", static_cast<unsigned long long>(seed), found);
+    if (found >= 0.0 && found <= 60.0) ++found_in_time;
+  }
+  EXPECT_GE(found_in_time, 2);
+}
+
+}  // namespace
+}  // namespace robuter::loc
