@@ -59,6 +59,22 @@ TourSpec lab_loop(std::uint64_t seed) {
   return s;
 }
 
+void use_simulator_odometry_noise(TourSpec& spec) {
+  spec.odometry_scale_error = 0.0;
+  spec.odometry_drift = 0.004 / 0.60;
+  spec.odometry_noise = 0.003;  // 2 mm per sqrt(m) of each wheel and the slip's spread
+  spec.odometry_turn_error = 0.0;
+}
+
+TourSpec floor_loop(std::uint64_t seed) {
+  TourSpec s;
+  s.waypoints = {{6.0, 20.05},  {21.15, 20.05}, {21.15, 34.6}, {21.15, 5.45}, {21.15, 20.05},
+                 {43.1, 20.05}, {43.1, 34.6},   {43.1, 5.45},  {43.1, 20.05}, {59.0, 20.05}};
+  s.start = Pose(6.0, 20.05, 0.0);
+  s.seed = seed;
+  return s;
+}
+
 double found_after(const std::vector<TourSample>& samples, double after) {
   constexpr double kTenDegrees = 10.0 * std::numbers::pi / 180.0;
   for (std::size_t i = 0; i + 10 <= samples.size(); ++i) {
@@ -123,7 +139,7 @@ std::vector<TourSample> run_tour(const Lab& lab, const TourSpec& spec, const Fil
         truth = Pose(truth.x() + ds * std::cos(mid), truth.y() + ds * std::sin(mid), wrap_angle(truth.z() + dth));
         // The odometry: the same wheels' motion, misread.
         const double ods = ds * (1.0 + spec.odometry_scale_error) + spec.odometry_noise * std::sqrt(ds) * unit(odo_rng);
-        const double odth = dth * 1.01 + spec.odometry_drift * ds + 0.002 * std::sqrt(std::abs(dth)) * unit(odo_rng);
+        const double odth = dth * (1.0 + spec.odometry_turn_error) + spec.odometry_drift * ds + 0.002 * std::sqrt(std::abs(dth)) * unit(odo_rng);
         const double omid = odo.z() + 0.5 * odth;
         odo = Pose(odo.x() + ods * std::cos(omid), odo.y() + ods * std::sin(omid), wrap_angle(odo.z() + odth));
         time += dt;
@@ -158,6 +174,8 @@ std::vector<TourSample> run_tour(const Lab& lab, const TourSpec& spec, const Fil
         const Estimate e = filter.estimate();
         TourSample t;
         t.time = time;
+        t.truth = truth;
+        t.estimate = e.pose;
         t.filter_error = std::hypot(e.pose.x() - truth.x(), e.pose.y() - truth.y());
         t.filter_heading = std::abs(wrap_angle(e.pose.z() - truth.z()));
         t.odometry_error = std::hypot(odo.x() - truth.x(), odo.y() - truth.y());

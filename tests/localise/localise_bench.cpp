@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The filter's figures on the simulated lab (tools/bench/80-localise.sh): error against odometry's,
 // recovery times, and each step's CPU time.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,5 +68,42 @@ int main(int argc, char** argv) {
   }
   std::printf("kidnappings found within 30 s: %d of %d; global starts within 60 s: %d of %d\n", kidnap_found,
               seeds, global_found, seeds);
+
+  // The building floor's corridors: long, alike, their doors the only landmarks along them.
+  const auto floor = test::load_lab("building_floor.toml");
+  const int laps = argc > 2 ? std::atoi(argv[2]) : 3;
+  std::printf("localise: worlds/building_floor.toml corridors, %d laps, seeds 1-%d, the simulator's odometry noise\n", laps, std::min(seeds, 3));
+  for (int seed = 1; seed <= std::min(seeds, 3); ++seed) {
+    auto spec = test::floor_loop(static_cast<std::uint64_t>(seed));
+    spec.laps = laps;
+    test::use_simulator_odometry_noise(spec);
+    const auto tour = test::run_tour(floor, spec);
+    std::vector<double> fe, fh, oe, oh;
+    for (const auto& t : tour) {
+      fe.push_back(t.filter_error);
+      fh.push_back(t.filter_heading * deg);
+      oe.push_back(t.odometry_error);
+      oh.push_back(t.odometry_heading * deg);
+    }
+    std::printf("seed %d: %.0f s; filter p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; odometry p95 %.0f mm %.1f deg\n",
+                seed, tour.empty() ? 0.0 : tour.back().time, 1e3 * test::quantile(fe, 0.95), test::quantile(fh, 0.95),
+                1e3 * test::quantile(fe, 1.0), test::quantile(fh, 1.0), 1e3 * test::quantile(oe, 0.95),
+                test::quantile(oh, 0.95));
+    if (seed == 1) print_steps("floor tracking", tour);
+    // Where the error is: the filter's mean error per 5 m x 5 m square the robot drove through, the worst five.
+    std::vector<std::pair<double, std::pair<int, int>>> squares;
+    for (const auto& t : tour) {
+      const std::pair<int, int> sq{static_cast<int>(t.truth.x() / 5.0), static_cast<int>(t.truth.y() / 5.0)};
+      auto it = std::find_if(squares.begin(), squares.end(), [&](const auto& e) { return e.second == sq; });
+      if (it == squares.end()) squares.push_back({t.filter_error, sq});
+      else it->first = std::max(it->first, t.filter_error);
+    }
+    std::sort(squares.begin(), squares.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::printf("  worst squares (5 m, by their worst error):");
+    for (std::size_t i = 0; i < std::min<std::size_t>(5, squares.size()); ++i)
+      std::printf(" (%d-%d, %d-%d m) %.0f mm;", squares[i].second.first * 5, squares[i].second.first * 5 + 5,
+                  squares[i].second.second * 5, squares[i].second.second * 5 + 5, squares[i].first * 1e3);
+    std::printf("\n");
+  }
   return 0;
 }

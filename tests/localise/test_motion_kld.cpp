@@ -75,6 +75,20 @@ TEST(Kld, TheBoundGrowsWithTheBinsAndTheSetCountsEachBinOnce) {
   bins.clear();
   EXPECT_EQ(bins.size(), 0);
   EXPECT_TRUE(bins.insert(0, 0, 0));
+  // Counting (the estimate's cluster cells).
+  KldBins cells(4);
+  EXPECT_EQ(cells.add(2, -3, 0), 1);
+  EXPECT_EQ(cells.add(2, -3, 0), 2);
+  EXPECT_EQ(cells.add(-2, 3, 0), 1);
+  EXPECT_EQ(cells.count(2, -3, 0), 2);
+  EXPECT_EQ(cells.count(5, 5, 0), 0);
+  cells.add(7, 0, 0);
+  cells.add(8, 0, 0);
+  EXPECT_EQ(cells.add(9, 0, 0), 0);  // full: not counted
+  EXPECT_EQ(cells.add(8, 0, 0), 2);  // an existing bin still counts
+  cells.clear();
+  EXPECT_EQ(cells.count(2, -3, 0), 0);
+  EXPECT_EQ(cells.add(2, -3, 0), 1);
 }
 
 }  // namespace

@@ -19,14 +19,23 @@ class KldBins {
   explicit KldBins(int capacity = 0);
   // Adds the bin; true when it was not there yet (false also when the table is full).
   bool insert(int bx, int by, int bt);
+  // Counts one more in the bin (added if new and there is room); the bin's count after, 0 when full.
+  int add(int bx, int by, int bt);
+  // How many add() counted in the bin (0 when absent).
+  int count(int bx, int by, int bt) const;
   int size() const { return size_; }
   void clear();
 
  private:
   std::vector<std::uint64_t> keys_;  // 0 = empty slot; key = packed bin + 1
   std::vector<std::uint32_t> used_;  // slots filled since the last clear
+  std::vector<int> counts_;          // per slot: what add() counted
   int size_ = 0;                     // distinct bins inserted
   int capacity_ = 0;                 // most bins kept
+
+  // The slot holding the bin, or the empty slot where it would go.
+  std::size_t slot(std::uint64_t key) const;
+  static std::uint64_t key_of(int bx, int by, int bt);
 };
 
 }  // namespace robuter::loc

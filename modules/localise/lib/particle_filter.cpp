@@ -10,7 +10,7 @@ namespace robuter::loc {
 
 ParticleFilter::ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed)
     : field_(field), params_(params), rng_(seed), bins_(std::max(1, params.max_particles)),
-      arc_(arc_table(params.sonar)) {
+      arc_(arc_table(params.sonar)), cells_(std::max(1, params.max_particles)) {
   params_.max_particles = std::max(1, params_.max_particles);
   params_.min_particles = std::clamp(params_.min_particles, 1, params_.max_particles);
   const auto n = static_cast<std::size_t>(params_.max_particles);
@@ -36,6 +36,7 @@ void ParticleFilter::set_pose(const Pose& mean, const Eigen::Vector3d& sigma) {
     p.weight = 1.0 / count_;
   }
   w_slow_ = w_fast_ = 0.0;
+  update_estimate();
 }
 
 Pose ParticleFilter::random_free_pose() {
@@ -59,6 +60,7 @@ void ParticleFilter::set_global() {
     p.weight = 1.0 / count_;
   }
   w_slow_ = w_fast_ = 0.0;
+  update_estimate();
 }
 
 bool ParticleFilter::step(const Pose& odometry, std::span<const SonarReading> readings) {
@@ -119,7 +121,9 @@ bool ParticleFilter::weigh_some(int n) {
   }
   if (weighed_ < count_) return false;
   finish_weighing();
+  update_estimate();  // from the weighed particles, before resampling draws from them
   resample();
+  estimate_.particles = count_;
   stepping_ = false;
   return true;
 }
@@ -176,27 +180,62 @@ void ParticleFilter::resample() {
   for (int i = 0; i < count_; ++i) particles_[static_cast<std::size_t>(i)].weight = 1.0 / count_;
 }
 
-Estimate ParticleFilter::estimate() const {
+void ParticleFilter::update_estimate() {
   Estimate e;
   e.particles = count_;
-  if (count_ == 0) return e;
-  double sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
+  if (count_ == 0) {
+    estimate_ = e;
+    return;
+  }
+  const double cell = params_.cluster_cell;
+  const auto cx = [cell](const Pose& p) { return static_cast<int>(std::floor(p.x() / cell)); };
+  const auto cy = [cell](const Pose& p) { return static_cast<int>(std::floor(p.y() / cell)); };
+  cells_.clear();
+  for (int i = 0; i < count_; ++i) {
+    const auto& p = particles_[static_cast<std::size_t>(i)].pose;
+    cells_.add(cx(p), cy(p), 0);
+  }
+  // The densest 3 x 3 block of cells, by the particles in it (each particle's block tried).
+  int best = -1, bx = 0, by = 0;
+  for (int i = 0; i < count_; ++i) {
+    const auto& p = particles_[static_cast<std::size_t>(i)].pose;
+    const int x = cx(p), y = cy(p);
+    int n = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) n += cells_.count(x + dx, y + dy, 0);
+    if (n > best) {
+      best = n;
+      bx = x;
+      by = y;
+    }
+  }
+  double w = 0.0, sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
+  const auto in_block = [&](const Pose& p) { return std::abs(cx(p) - bx) <= 1 && std::abs(cy(p) - by) <= 1; };
   for (int i = 0; i < count_; ++i) {
     const auto& p = particles_[static_cast<std::size_t>(i)];
+    if (!in_block(p.pose)) continue;
+    w += p.weight;
     sx += p.weight * p.pose.x();
     sy += p.weight * p.pose.y();
     sc += p.weight * std::cos(p.pose.z());
     ss += p.weight * std::sin(p.pose.z());
   }
-  e.pose = Pose(sx, sy, std::atan2(ss, sc));
+  if (w <= 0.0) {  // the block's particles all weigh nothing: keep the last estimate's pose
+    e.pose = estimate_.pose;
+    estimate_ = e;
+    return;
+  }
+  e.pose = Pose(sx / w, sy / w, std::atan2(ss, sc));
+  e.cluster_weight = w;
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (int i = 0; i < count_; ++i) {
     const auto& p = particles_[static_cast<std::size_t>(i)];
-    const Eigen::Vector3d d(p.pose.x() - sx, p.pose.y() - sy, wrap_angle(p.pose.z() - e.pose.z()));
-    cov += p.weight * d * d.transpose();
+    if (!in_block(p.pose)) continue;
+    const Eigen::Vector3d d(p.pose.x() - e.pose.x(), p.pose.y() - e.pose.y(), wrap_angle(p.pose.z() - e.pose.z()));
+    cov += (p.weight / w) * d * d.transpose();
   }
   e.covariance = cov;
-  return e;
+  estimate_ = e;
 }
 
 }  // namespace robuter::loc

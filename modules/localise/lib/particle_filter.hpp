@@ -31,6 +31,8 @@ struct FilterParams {
   double alpha_fast = 0.1;         // and the fast one; fast < slow injects random particles
   double body_clearance = 0.30;    // an axle nearer than this to a mapped wall is not a pose, m
   double inside_weight = 0.02;     // the likelihood factor of such a pose
+  double cluster_cell = 1.0;       // the estimate's cells, m: it is the mean of the densest 3 x 3
+                                   // cells' particles, not of the whole cloud
   double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
                                    // readings of one step are not independent (AMCL's answer is
                                    // to use fewer beams; this keeps them all and flattens each)
@@ -45,9 +47,14 @@ struct Particle {
 };
 
 // What the filter believes.
+// What the filter believes: the densest part of the cloud (a cloud split between two places, or
+// with random particles injected, would put a mean of all in neither).
 struct Estimate {
-  Pose pose = Pose::Zero();                                 // weighted mean (theta: circular mean)
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity(); // of x (m), y (m), theta (rad)
+  Pose pose = Pose::Zero();                                 // weighted mean of the densest 3 x 3
+                                                            // cluster cells (theta: circular mean)
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity(); // of x (m), y (m), theta (rad), over those
+  double cluster_weight = 0.0;                              // the weight those particles hold, 0..1:
+                                                            // well below 1, the pose is ambiguous
   int particles = 0;                                        // how many it keeps now
 };
 
@@ -77,7 +84,8 @@ class ParticleFilter {
   bool weigh_some(int n);
   bool stepping() const { return stepping_; }
 
-  Estimate estimate() const;
+  // As of the last step (or set_pose / set_global).
+  const Estimate& estimate() const { return estimate_; }
   std::span<const Particle> particles() const { return {particles_.data(), static_cast<std::size_t>(count_)}; }
   // The average measurement likelihoods of augmented MCL (per reading), slow and fast.
   double w_slow() const { return w_slow_; }
@@ -95,6 +103,7 @@ class ParticleFilter {
   };
   double log_likelihood(const Pose& pose) const;
   void finish_weighing();
+  void update_estimate();
   void resample();
   Pose random_free_pose();
 
@@ -108,6 +117,8 @@ class ParticleFilter {
   std::vector<std::uint32_t> free_;  // cells whose centre is body_clearance from every wall
   KldBins bins_;                     // KLD-sampling's bins
   ArcTable arc_;                     // the sonar model's directions across the cone
+  KldBins cells_;                    // the estimate's cluster cells and their particle counts
+  Estimate estimate_;                // as of the last step
   std::array<Kept, kMaxReadings> kept_{};  // this step's informative readings
   int kept_count_ = 0;               // how many
   bool stepping_ = false;            // a step is under way (particles moved, not all weighed)
