@@ -21,11 +21,26 @@ void print_steps(const char* what, const std::vector<test::TourSample>& samples)
               test::quantile(cpu, 0.5), test::quantile(cpu, 0.99), test::quantile(cpu, 1.0));
 }
 
+// One tour's line: the filter's error beside the odometry's.
+void print_tour(int seed, const std::vector<test::TourSample>& tour) {
+  const double deg = 180.0 / std::numbers::pi;
+  std::vector<double> fe, fh, oe, oh;
+  for (const auto& t : tour) {
+    fe.push_back(t.filter_error);
+    fh.push_back(t.filter_heading * deg);
+    oe.push_back(t.odometry_error);
+    oh.push_back(t.odometry_heading * deg);
+  }
+  std::printf("seed %d: %.0f s; filter p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; odometry p95 %.0f mm %.1f deg\n",
+              seed, tour.empty() ? 0.0 : tour.back().time, 1e3 * test::quantile(fe, 0.95), test::quantile(fh, 0.95),
+              1e3 * test::quantile(fe, 1.0), test::quantile(fh, 1.0), 1e3 * test::quantile(oe, 0.95),
+              test::quantile(oh, 0.95));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const int seeds = argc > 1 ? std::atoi(argv[1]) : 10;
-  const double deg = 180.0 / std::numbers::pi;
   const auto lab = test::load_lab("default.toml");
   std::printf("localise: worlds/default.toml, %d seeds, odometry and sonar noise on\n", seeds);
   int kidnap_found = 0, global_found = 0;
@@ -33,17 +48,7 @@ int main(int argc, char** argv) {
     auto spec = test::lab_loop(static_cast<std::uint64_t>(seed));
     spec.laps = 10;  // about 9 minutes of driving
     const auto tour = test::run_tour(lab, spec);
-    std::vector<double> fe, fh, oe, oh;
-    for (const auto& t : tour) {
-      fe.push_back(t.filter_error);
-      fh.push_back(t.filter_heading * deg);
-      oe.push_back(t.odometry_error);
-      oh.push_back(t.odometry_heading * deg);
-    }
-    std::printf("seed %d: %.0f s; filter p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; odometry p95 %.0f mm %.1f deg\n",
-                seed, tour.back().time, 1e3 * test::quantile(fe, 0.95), test::quantile(fh, 0.95),
-                1e3 * test::quantile(fe, 1.0), test::quantile(fh, 1.0), 1e3 * test::quantile(oe, 0.95),
-                test::quantile(oh, 0.95));
+    print_tour(seed, tour);
     if (seed == 1) print_steps("tracking", tour);
     auto k = test::lab_loop(static_cast<std::uint64_t>(seed));
     k.laps = 3;
@@ -78,17 +83,7 @@ int main(int argc, char** argv) {
     spec.laps = laps;
     test::use_simulator_odometry_noise(spec);
     const auto tour = test::run_tour(floor, spec);
-    std::vector<double> fe, fh, oe, oh;
-    for (const auto& t : tour) {
-      fe.push_back(t.filter_error);
-      fh.push_back(t.filter_heading * deg);
-      oe.push_back(t.odometry_error);
-      oh.push_back(t.odometry_heading * deg);
-    }
-    std::printf("seed %d: %.0f s; filter p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; odometry p95 %.0f mm %.1f deg\n",
-                seed, tour.empty() ? 0.0 : tour.back().time, 1e3 * test::quantile(fe, 0.95), test::quantile(fh, 0.95),
-                1e3 * test::quantile(fe, 1.0), test::quantile(fh, 1.0), 1e3 * test::quantile(oe, 0.95),
-                test::quantile(oh, 0.95));
+    print_tour(seed, tour);
     if (seed == 1) print_steps("floor tracking", tour);
     // Where the error is: the filter's mean error per 5 m x 5 m square the robot drove through, the worst five.
     std::vector<std::pair<double, std::pair<int, int>>> squares;
