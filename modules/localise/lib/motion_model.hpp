@@ -17,8 +17,8 @@ using Pose = Eigen::Vector3d;
 // filter step (the odometry accumulated since the last), not per tick.
 struct MotionNoise {
   double rot_from_rot = 0.05;      // alpha1: rotation variance per rad² turned
-  double rot_from_trans = 0.02;    // alpha2: rotation variance (rad²) per m² driven
-  double trans_from_trans = 0.02;  // alpha3: travel variance per m² driven
+  double rot_from_trans = 0.005;   // alpha2: rotation variance (rad²) per m² driven
+  double trans_from_trans = 0.005; // alpha3: travel variance per m² driven
   double trans_from_rot = 0.005;   // alpha4: travel variance (m²) per rad² turned
 };
 
