@@ -133,19 +133,56 @@ void SerialModule::take(Link& l, std::span<const std::uint8_t> bytes) {
   handle(l, false);
 }
 
+std::optional<std::size_t> SerialModule::read_some(Kernel& k, Link& l) {
+  const hal::IoResult r = l.stream->read(l.in);
+  if (!r.closed) return r.bytes;
+  note_closed(l);
+  k.unwatch_fd(l.watched_fd);
+  l.watched_fd = -1;
+  return std::nullopt;
+}
+
+// The client events are looked at after each read, before its bytes are taken: a client opens
+// the pty before it writes, so the start of its session is always seen before its first line.
+// (Looked at before the read, a client could open and write between the two: its first lines
+// would be answered, and then its session started, dropping their settings and replies.)
 bool SerialModule::pump(Kernel& k, Link& l) {
-  hal::ByteStream& s = *l.stream;
   for (std::size_t reads = 0; reads < kMaxReadsPerRun; ++reads) {
-    const hal::IoResult r = s.read(l.in);
-    if (r.closed) {
-      note_closed(l);
-      k.unwatch_fd(l.watched_fd);
-      l.watched_fd = -1;
-      return false;
+    const auto n = read_some(k, l);
+    if (!n) return false;
+    std::span<const std::uint8_t> bytes(l.in.data(), *n);
+    if (!client_events(k, l, bytes)) return false;
+    if (!bytes.empty()) {
+      take(l, bytes);
+      flush(l);
     }
-    if (r.bytes == 0) break;
-    take(l, std::span<const std::uint8_t>(l.in.data(), r.bytes));
-    flush(l);
+    if (*n == 0) break;
+  }
+  return true;
+}
+
+bool SerialModule::client_events(Kernel& k, Link& l, std::span<const std::uint8_t>& bytes) {
+  for (hal::ClientEvent e = l.stream->next_client_event(); e != hal::ClientEvent::none;
+       e = l.stream->next_client_event()) {
+    if (e == hal::ClientEvent::session_start) {
+      start_session(l);
+    } else if (e == hal::ClientEvent::shared) {
+      // Not refused (a terminal and a logger may share a link on purpose), but said: replies
+      // go to whichever program reads first.
+      log::warn("serial: a second program opened {} while a client holds it: both read its replies", l.stream->name());
+    } else {
+      // What the leaving client wrote is served in its own session before the session ends.
+      if (!bytes.empty()) take(l, bytes);
+      bytes = {};
+      for (std::size_t reads = 0; reads < kMaxReadsPerRun; ++reads) {
+        const auto n = read_some(k, l);
+        if (!n) return false;
+        if (*n == 0) break;
+        take(l, std::span<const std::uint8_t>(l.in.data(), *n));
+        flush(l);
+      }
+      end_session(l);
+    }
   }
   return true;
 }
@@ -182,20 +219,6 @@ void SerialModule::serve(Kernel& k, Link& l) {
   if (l.watched_fd < 0 && k.watch_fd(s.fd(), this)) l.watched_fd = s.fd();
   if (l.watched_event_fd < 0 && s.event_fd() >= 0 && k.watch_fd(s.event_fd(), this)) l.watched_event_fd = s.event_fd();
 
-  // Client sessions in the order they happened; what a leaving client wrote is served in its
-  // own session before the session ends.
-  for (hal::ClientEvent e = s.next_client_event(); e != hal::ClientEvent::none; e = s.next_client_event()) {
-    if (e == hal::ClientEvent::session_start) {
-      start_session(l);
-    } else if (e == hal::ClientEvent::shared) {
-      // Not refused (a terminal and a logger may share a link on purpose), but said: replies
-      // go to whichever program reads first.
-      log::warn("serial: a second program opened {} while a client holds it: both read its replies", l.stream->name());
-    } else {
-      if (!pump(k, l)) return;
-      end_session(l);
-    }
-  }
   flush(l);
   handle(l, false);  // lines that waited for an owner, before the bytes read now
   flush(l);
