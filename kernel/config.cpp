@@ -413,11 +413,34 @@ void bind_places(Binder& b, PlacesConfig& p) {
   if (f.is_relative()) p.file = (folder / f).lexically_normal().string();
 }
 
+// Why: [localise] needs a map to localise on; its state file is resolved like places.file.
+void bind_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& planner, const PlacesConfig& places) {
+  constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
+  b.boolean("localise.enabled", l.enabled);
+  b.integer("localise.min_particles", l.min_particles, 10, 100'000);
+  b.integer("localise.max_particles", l.max_particles, 10, 100'000);
+  b.integer("localise.particles_per_run", l.particles_per_run, 10, 100'000);
+  b.integer("localise.initial_sigma_mm", l.initial_sigma_mm, 0, 100'000);
+  b.integer("localise.initial_sigma_deg", l.initial_sigma_deg, 0, 180);
+  b.boolean("localise.report_corrected", l.report_corrected);
+  b.string("localise.state_file", l.state_file);
+  b.integer("localise.seed", l.seed, 0, kU32);
+  if (b.error()) return;
+  if (l.min_particles > l.max_particles)
+    return b.fail_key("localise.min_particles",
+                      fmt::format("{} must not exceed localise.max_particles {}", l.min_particles, l.max_particles));
+  if (l.enabled && planner.map_file.empty() && places.file.empty())
+    return b.fail_key("localise.enabled", "needs a map: planner.map_file or places.file (its walls)");
+  if (l.state_file.empty()) return;
+  const std::filesystem::path f(l.state_file);
+  if (f.is_relative()) l.state_file = (std::filesystem::path(b.file()).parent_path() / f).lexically_normal().string();
+}
+
 // Binds every section of the schema.
 void bind(Binder& b, const toml::table& root, Config& c) {
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "demo", "process", "modules", "links", "hardware", "can", "places"})
+                        "demo", "process", "modules", "links", "hardware", "can", "places", "localise"})
     b.table(t);
 
   b.foreign("sim");  // the simulated robot's own parameters: hal/sitl checks them
@@ -469,6 +492,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 
   bind_planner(b, c.planner);
   bind_places(b, c.places);
+  bind_localise(b, c.localise, c.planner, c.places);
   bind_doors(b, c.ptu, c.gate, c.doors);
   bind_links(b, c.links);
   bind_gpio(b, root, c.gpio);

@@ -182,6 +182,19 @@ struct PlacesConfig {
   bool cross_doors = false;  // XQ: at a narrow door the planner lends the robot to the door crossing (which lowers the detections in the door): off unless configured
 };
 
+// Localisation on the robot's map (modules/localise, docs/LOCALISATION.md).
+struct LocaliseConfig {
+  bool enabled = false;               // run the particle filter on the map (planner.map_file or the place graph's walls)
+  std::uint32_t min_particles = 200;  // KLD-sampling keeps at least this many
+  std::uint32_t max_particles = 2000; // and at most this many (every buffer is this size, from start-up)
+  std::uint32_t particles_per_run = 200;  // particles weighed per activation (the bound on its work: ~1.5 ms with 24 readings)
+  std::uint32_t initial_sigma_mm = 100;   // spread of the start pose (the odometry's, a state file's, XA's), mm
+  std::uint32_t initial_sigma_deg = 5;    // and of its heading, degrees
+  bool report_corrected = false;      // BO, BV and the XS stream report the map pose instead of the odometry's
+  std::string state_file;             // the last estimate, kept across restarts (written off the periodic path); empty = none
+  std::uint64_t seed = 1;             // the filter's random draws (a run is reproducible)
+};
+
 struct SerialLinkConfig {
   std::string device;                        // its device, empty = none (robuterd --serial overrides)
   std::uint32_t baud = 9600;                 // line rate, bit/s (robuterd --baud overrides)
@@ -262,6 +275,7 @@ struct Config {
   PermissionsConfig permissions;
   PlannerModuleConfig planner;
   PlacesConfig places;                       // [places]
+  LocaliseConfig localise;                   // [localise]
   PanTiltConfig ptu;
   GateConfig gate;
   DoorsConfig doors;

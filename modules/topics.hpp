@@ -24,9 +24,11 @@ class PtuModule;
 class GateModule;
 class DoorsModule;
 class DemoModule;
+class LocaliseModule;
 
 // The vocabulary's enums (protocol/codec/vocabulary.hpp): one definition, with the words replies and logs print.
 using protocol::DemoPhase;
+using protocol::LocaliseState;
 using protocol::EmergencyCause;
 using protocol::ModeReason;
 using protocol::ModeState;
@@ -55,6 +57,7 @@ struct Posture {
   std::uint64_t tick = 0;       // tick of the odometry read
   hal::DriveHealth drive_health = hal::DriveHealth::ok;  // the drive's health as its backend sees it
   std::uint32_t command_seq = 0;  // MotionCommand.seq applied by this run (the link's read-your-writes)
+  std::uint32_t odometry_seq = 0; // OdometrySet.seq applied so far (AC: the odometry jumped to it)
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).
@@ -321,6 +324,44 @@ struct MotionAuthority {
   std::uint64_t tick = 0;                               // tick of the decision
 };
 
+// The operator's pose on the map for the localisation (XA), or a global search.
+struct LocaliseRequest {
+  bool global = false;          // search the whole map (XA without a pose)
+  std::int32_t x = 0;           // 0.1 mm, map frame
+  std::int32_t y = 0;           // 0.1 mm
+  std::int32_t theta = 0;       // 0.01 degree
+  std::uint32_t seq = 0;        // bumped on every request
+};
+
+// Where the robot is on its map (localise), and the map frame's place against the odometry's:
+// the estimate `map` was made for the odometry posture `odometry`, so the robot's map pose now is
+// map ∘ odometry⁻¹ ∘ (the posture now) — modules/localise/map_frame.hpp, the one place that composes it.
+struct Localisation {
+  LocaliseState state = LocaliseState::off;  // see LocaliseState
+  std::int32_t x = 0;             // the estimate, 0.1 mm, map frame
+  std::int32_t y = 0;             // 0.1 mm
+  std::int32_t theta = 0;         // 0.01 degree
+  std::int32_t major_mm = 0;      // the position's 1-sigma ellipse: semi-major axis, mm
+  std::int32_t minor_mm = 0;      // semi-minor axis, mm
+  std::int32_t axis = 0;          // direction of the major axis, 0.01 degree
+  std::int32_t sigma_theta = 0;   // the heading's standard deviation, 0.01 degree
+  std::uint8_t cluster_pct = 0;   // share of the weight in the estimate's cluster, %
+  std::uint16_t particles = 0;    // particles kept
+  std::uint32_t steps = 0;        // filter steps since start
+  // The correction in force (the last tracking estimate, or the start pose): map pose of the
+  // odometry posture (odo_x, odo_y, odo_theta).
+  std::int32_t map_x = 0;         // 0.1 mm, map frame
+  std::int32_t map_y = 0;         // 0.1 mm
+  std::int32_t map_theta = 0;     // 0.01 degree
+  std::int32_t odo_x = 0;         // 0.1 mm, odometry frame
+  std::int32_t odo_y = 0;         // 0.1 mm
+  std::int32_t odo_theta = 0;     // 0.01 degree
+  std::uint32_t odometry_seq = 0; // Posture.odometry_seq the odometry pose belongs to
+  std::uint32_t request_seq = 0;  // LocaliseRequest.seq taken (the link's read-your-writes after XA)
+  std::uint32_t run_us_max = 0;   // longest activation since start, µs (thread CPU time)
+  std::uint64_t tick = 0;         // tick of the report
+};
+
 // The door crossing's wish for lowered detections while it crosses (seed doors(): emerg.on = BUMPER).
 struct DetectionRequest {
   bool lower = false;           // lower the detections while the crossing is in the door
@@ -365,6 +406,9 @@ struct Blackboard {
   Topic<DetectionRequest, DoorsModule> doors_detections;
   Topic<MotionRequest, DemoModule> demo_motion;
   Topic<DemoStatus, DemoModule> demo_status;
+  // localisation (the operator's pose on the map from the link; the estimate from the module)
+  Topic<LocaliseRequest, SerialModule> localise_request;
+  Topic<Localisation, LocaliseModule> localisation;
 };
 
 }  // namespace robuter

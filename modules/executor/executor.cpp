@@ -132,6 +132,7 @@ void ExecutorModule::run(Kernel& k) {
   if (odometry_set_.updated()) {
     const OdometrySet o = odometry_set_.copy();
     drive_.set_odometry(motion::to_odometry(motion::PostureUnits{o.x, o.y, o.theta}));
+    odometry_seq_ = o.seq;
     end_go_to(tick, true);  // the target was in the old frame
   }
   const motion::PostureUnits now = motion::to_posture(drive_.odometry());
@@ -146,6 +147,7 @@ void ExecutorModule::run(Kernel& k) {
   p.tick = tick;
   p.drive_health = health;
   p.command_seq = applied_seq_;
+  p.odometry_seq = odometry_seq_;
   posture_out_.publish(p);
 }
 

@@ -45,6 +45,7 @@ class ExecutorModule final : public Process {
   Writer<Posture> posture_out_;
   Writer<MotionRequest> go_to_out_;
   std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
+  std::uint32_t odometry_seq_ = 0;       // OdometrySet.seq last applied (Posture.odometry_seq)
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
 };
 

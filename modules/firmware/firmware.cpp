@@ -35,6 +35,7 @@
 #include "modules/places/place_grid_memory.hpp"
 #include "modules/places/place_grid_writer.hpp"
 #include "modules/places/wall_raster.hpp"
+#include "modules/localise/localise_module.hpp"
 #include "modules/firmware/prior_structure.hpp"
 #include "modules/demo/demo_module.hpp"
 #include "modules/doors/doors_module.hpp"
@@ -266,6 +267,16 @@ std::optional<std::string> Firmware::setup() {
     emergency->set_known_structure(known_.get());
   }
   auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);
+  // Localisation on the map the robot is given (docs/LOCALISATION.md, "The module"): the
+  // a-priori map as loaded (the planner's copy changes as it sees), else the place graph's walls.
+  std::unique_ptr<LocaliseModule> localise;
+  if (cfg_.localise.enabled) {
+    if (prior_map) localise_map_ = std::make_unique<const plan::OccupancyMap>(*prior_map);
+    const plan::OccupancyMap* map = localise_map_ ? localise_map_.get() : walls_.get();
+    if (map == nullptr) return "configuration error: localise.enabled: needs a map (planner.map_file or places.file)";
+    localise = std::make_unique<LocaliseModule>(bb_, cfg_);
+    localise->set_map(*map);
+  }
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
   if (prior_map) planner->set_prior_map(std::move(*prior_map));
   if (walls_) {
@@ -348,6 +359,7 @@ std::optional<std::string> Firmware::setup() {
   emergency->set_executor(executor.get());
   serial->set_emergency(emergency.get());
   serial->set_executor(executor.get());  // read-your-writes: ASN, AC then BO
+  if (localise) serial->set_localise(localise.get());  // AC or XA then XW
   serial->set_places(places_.get(), routes_.get());
   const NamedProcess modules[] = {{"sim", stepper.get()},         {"can", can_},
                                   {"heartbeat", heartbeat.get()},
@@ -355,7 +367,7 @@ std::optional<std::string> Firmware::setup() {
                                   {"emergency", emergency.get()},  {"executor", executor.get()},
                                   {"planner", planner.get()},      {"ptu", ptu.get()},
                                   {"gate", gate.get()},            {"doors", doors.get()},
-                                  {"demo", demo.get()}};
+                                  {"demo", demo.get()},            {"localise", localise.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
   if (stepper) processes_.push_back(std::move(stepper));
@@ -369,6 +381,7 @@ std::optional<std::string> Firmware::setup() {
   processes_.push_back(std::move(gate));
   processes_.push_back(std::move(doors));
   processes_.push_back(std::move(demo));
+  if (localise) processes_.push_back(std::move(localise));
   // Rows of the firmware itself (not in the configurable table), budgets within one tick.
   const std::uint32_t small_budget = std::min<std::uint32_t>(1000, cfg_.kernel.tick_us);
   if (!opt_.notify_socket.empty()) {

@@ -112,6 +112,7 @@ class Firmware {
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
   std::unique_ptr<const plan::OccupancyMap> walls_;  // the place graph's walls, when no a-priori map (planner, narrowing)
+  std::unique_ptr<const plan::OccupancyMap> localise_map_;  // the a-priori map as loaded, for the localisation
   std::unique_ptr<const plan::OccupancyMap> memory_;  // saved place grids read back ([places] load_grids): the planner's only
   std::vector<plan::Point2> openings_;  // the place graph's door openings, kept free in the planner's map
   std::unique_ptr<safety::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded

@@ -27,6 +27,8 @@ constexpr DefaultRow kDefaults[] = {
     {"gate", 2, 1, 1, 2000},        // passage finder (AG/AT): manoeuvre control every 20 ms
     {"doors", 5, 3, 1, 2000},       // door crossing (Ad/Af): steering every 50 ms
     {"demo", 5, 4, 1, 1000},        // demonstration course ([demo] enabled): every 50 ms
+    {"localise", 2, 1, 0, 2000},    // localisation ([localise] enabled): an odd tick, a filter step's part
+                                    // of particles_per_run each 20 ms (docs/LOCALISATION.md, "The module")
 };
 }  // namespace
 

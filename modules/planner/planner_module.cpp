@@ -7,8 +7,10 @@
 
 #include <cmath>
 
+#include "kernel/cpu_time.hpp"
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
+#include "modules/localise/map_frame.hpp"
 #include "modules/planner/map_bounds.hpp"
 #include "modules/planner/map_window.hpp"
 #include "modules/planner/sonar_mapping.hpp"
@@ -31,15 +33,6 @@ constexpr std::uint32_t kPausedReplansMax = 5;
 // crossing bench's starting box: docs/DOORS.md).
 constexpr double kCrossingHeadingError = 20.0 * plan::kPi / 180.0;
 
-// CPU time of the kernel thread, µs: what an activation costs, without the time other
-// processes of a shared machine took the CPU away (wall clock would count that too).
-std::int64_t cpu_us() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
-}
-
-
 std::uint32_t to_mm(double m) { return m <= 0.0 ? 0u : static_cast<std::uint32_t>(std::lround(m * 1000.0)); }
 
 planner::FollowerSettings follower_settings(const planner::PlannerSettings& s) {
@@ -56,6 +49,7 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       planner_(s_.planner),
       follower_(follower_settings(s_)),
       posture_(bb.posture.reader()),
+      localisation_(bb.localisation.reader()),
       ranges_(bb.ranges.reader()),
       selection_(bb.sonar_selection.reader()),
       pan_tilt_(bb.pan_tilt_scan.reader()),
@@ -93,8 +87,9 @@ void PlannerModule::close(Kernel& k) {
   if (navigating(state_)) request(k.tick(), 0, 0);
 }
 
+// The robot's pose on its map: the goals, the places' walls and the a-priori map are there.
 plan::Pose2 PlannerModule::pose_now() {
-  const Posture& p = posture_.peek();
+  const motion::PostureUnits p = localise::map_posture(posture_.peek(), localisation_.peek());
   const double theta = p.theta * kCentideg;
   if (!have_heading_) {
     heading_ = theta;
@@ -156,7 +151,7 @@ void PlannerModule::skip_readings() {
 // may have moved a little since the XG was taken, which the margin absorbs.
 void PlannerModule::place_window(std::uint64_t tick) {
   const planner::MapWindow now = planner::window_at(cfg_.planner, map_x0_mm_, map_y0_mm_);
-  const Posture& at = posture_.peek();
+  const motion::PostureUnits at = localise::map_posture(posture_.peek(), localisation_.peek());
   const PlannerGoal::Via t = target();
   if (planner::on_window(now, t.x, t.y)) return;
   const auto shift = planner::window_shift(cfg_, now, at.x, at.y, t.x, t.y);
@@ -402,8 +397,8 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
     }
     return finish(tick, PlannerState::reached, true);
   }
-  const std::int64_t t0 = cpu_us();
-  auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)); };
+  const std::int64_t t0 = thread_cpu_us();
+  auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, thread_cpu_us() - t0)); };
   const bool searching = planner_.searching();  // a search under way continues; its grids hold still
   // A sync that freed cells (~1 ms each), or a picture, is this activation's work: the field's
   // or the search's step waits for the next (once: then it goes on whatever that sync folded).
@@ -534,7 +529,7 @@ void PlannerModule::keep_place_grid(const plan::Pose2& pose) {
 }
 
 void PlannerModule::run(Kernel& k) {
-  const std::int64_t t0 = cpu_us();
+  const std::int64_t t0 = thread_cpu_us();
   kernel_ = &k;
   const std::uint64_t tick = k.tick();
   const plan::Pose2 pose = pose_now();
@@ -577,7 +572,7 @@ void PlannerModule::run(Kernel& k) {
   } else {
     serve_goal(tick);  // a new goal in the same tick as the interruption still starts
   }
-  run_us_max_ = std::max(run_us_max_, static_cast<std::uint32_t>(std::max<std::int64_t>(0, cpu_us() - t0)));
+  run_us_max_ = std::max(run_us_max_, static_cast<std::uint32_t>(std::max<std::int64_t>(0, thread_cpu_us() - t0)));
   publish_status(tick);
   publish_window(tick, pose);
 }

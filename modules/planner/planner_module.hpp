@@ -156,6 +156,7 @@ class PlannerModule final : public Process {
   plan::Planner planner_;
   planner::PathFollower follower_;
   Reader<Posture> posture_;
+  Reader<Localisation> localisation_;  // the map frame's correction (modules/localise/map_frame.hpp)
   Reader<UltrasonicRanges> ranges_;
   Reader<SonarSelection> selection_;
   Reader<PanTiltScan> pan_tilt_;         // the pan-tilt's sectors: more beams for the map

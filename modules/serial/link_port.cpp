@@ -9,6 +9,7 @@
 
 #include "kernel/kernel.hpp"
 #include "modules/emergency/motion_gate.hpp"
+#include "modules/localise/map_frame.hpp"
 #include "modules/planner/map_bounds.hpp"
 
 namespace robuter {
@@ -28,16 +29,18 @@ LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
       gate_status_(bb.gate_status.reader()),
       doors_status_(bb.doors_status.reader()),
       demo_status_(bb.demo_status.reader()),
+      localisation_(bb.localisation.reader()),
       cfg_(cfg),
       command_(bb.motion_command.reader()) {}
 
 // An owner without a row in this run's table (`modules.enabled`) is never waited for.
 void LinkPort::attach(Kernel& k) {
   kernel_ = &k;
-  emergency_runs_ = executor_runs_ = false;
+  emergency_runs_ = executor_runs_ = localise_runs_ = false;
   for (std::size_t i = 0; i < k.process_count(); ++i) {
     emergency_runs_ = emergency_runs_ || (emergency_process_ && k.row(i).process == emergency_process_);
     executor_runs_ = executor_runs_ || (executor_process_ && k.row(i).process == executor_process_);
+    localise_runs_ = localise_runs_ || (localise_process_ && k.row(i).process == localise_process_);
   }
 }
 
@@ -50,7 +53,7 @@ void LinkPort::attach(Kernel& k) {
 // different ticks, so it is not asked for without need.
 bool LinkPort::waiting() {
   if (!waiting_) return false;
-  if (emergency_ran() && executor_done()) {
+  if (emergency_ran() && executor_done() && localise_done()) {
     waiting_ = false;
     return false;
   }
@@ -64,6 +67,12 @@ bool LinkPort::executor_done() const {
   if (!executor_runs_) return true;
   if (wait_executor_ && posture_.generation() == wait_posture_gen_) return false;
   return posture_.peek().command_seq == command_.peek().seq;
+}
+
+bool LinkPort::localise_done() const {
+  if (!localise_runs_) return true;
+  const Localisation& l = localisation_.peek();
+  return l.odometry_seq == w_.odometry.current().seq && l.request_seq == w_.localise.current().seq;
 }
 
 // The owners must run after the latest request: a new one restarts the wait from now.
@@ -80,6 +89,7 @@ void LinkPort::trigger_owners() const {
   if (!kernel_) return;
   if (!emergency_ran()) kernel_->trigger(emergency_process_);
   if (executor_runs_ && !executor_done()) kernel_->trigger(executor_process_);
+  if (localise_runs_ && !localise_done()) kernel_->trigger(localise_process_);
 }
 
 bool LinkPort::revive_link() {
@@ -107,10 +117,17 @@ bool LinkPort::latched() const { return !safety::admits_motion(emergency_.peek()
 
 protocol::Ticks LinkPort::clock() const noexcept { return static_cast<protocol::Ticks>(tick()); }
 
+// BO, BV and the stream: the odometry, as the seed reports it, unless [localise] report_corrected.
 protocol::Posture LinkPort::posture() const noexcept {
   const Posture& p = posture_.peek();
+  if (cfg_.localise.report_corrected) {
+    const motion::PostureUnits m = map_pose();
+    return {m.x, m.y, m.theta};
+  }
   return {p.x, p.y, p.theta};
 }
+
+motion::PostureUnits LinkPort::map_pose() const { return localise::map_posture(posture_.peek(), localisation_.peek()); }
 
 bool LinkPort::servo_on() const noexcept { return posture_.peek().servo; }
 
@@ -196,13 +213,16 @@ PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
   return PortResult::ok;
 }
 
+// AW: the target is a map pose; the executor drives in the odometry frame, so it is given the
+// odometry posture the map pose has now (the same while no localisation runs).
 PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
   if (t.theta <= -18000 || t.theta > 18000) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
+  const motion::PostureUnits o = localise::odometry_posture({t.x, t.y, t.theta}, localisation_.peek(), posture_.peek().odometry_seq);
   w_.go_to.modify([&](GoToRequest& g) {
-    g.x = t.x;
-    g.y = t.y;
-    g.theta = t.theta;
+    g.x = o.x;
+    g.y = o.y;
+    g.theta = o.theta;
     g.active = true;
     ++g.seq;
   });
@@ -360,7 +380,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
       planner_status_.generation() > 0
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
           : planner::configured_window(cfg_.planner);
-  const Posture& at = posture_.peek();
+  const motion::PostureUnits at = map_pose();
   if (!planner::goal_acceptable(cfg_, now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   w_.goal.modify([&](PlannerGoal& p) {
@@ -421,7 +441,7 @@ static void fill_place(const places::PlaceGraph& g, std::size_t i, protocol::Pla
 
 PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
   if (places_ == nullptr) return PortResult::unavailable;
-  const Posture& p = posture_.peek();
+  const motion::PostureUnits p = map_pose();
   const auto at = places_->place_at(places::Vec2(p.x * 1e-4, p.y * 1e-4));
   if (!at) {
     out = protocol::PlaceReport{};
@@ -440,7 +460,7 @@ PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
 PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
   if (places_ == nullptr || routes_ == nullptr || !planner_running()) return PortResult::unavailable;
   if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
-  const Posture& at = posture_.peek();
+  const motion::PostureUnits at = map_pose();
   const auto here = places_->place_at(places::Vec2(at.x * 1e-4, at.y * 1e-4));
   const std::size_t to = static_cast<std::size_t>(number - 1);
   if (!here || !routes_->found(*here, to)) return PortResult::out_of_range;
@@ -474,6 +494,39 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
     ++g.seq;
   });
   act(OperatorAction::start_planner);
+  return PortResult::ok;
+}
+
+// XW: unavailable while no localisation runs (its topic never published).
+PortResult LinkPort::localisation(protocol::LocaliseReport& out) const noexcept {
+  if (localisation_.generation() == 0) return PortResult::unavailable;
+  const Localisation& l = localisation_.peek();
+  out.state = l.state;
+  out.x = l.x;
+  out.y = l.y;
+  out.theta = l.theta;
+  out.major_mm = l.major_mm;
+  out.minor_mm = l.minor_mm;
+  out.axis = l.axis;
+  out.sigma_theta = l.sigma_theta;
+  out.cluster_pct = l.cluster_pct;
+  out.particles = l.particles;
+  out.steps = l.steps;
+  return PortResult::ok;
+}
+
+// XA: the localisation takes the pose (or starts a global search) at its next activation.
+PortResult LinkPort::set_map_pose(const protocol::Posture& pose, bool global) noexcept {
+  if (localisation_.generation() == 0) return PortResult::unavailable;
+  if (!global && (pose.theta <= -18000 || pose.theta > 18000)) return PortResult::out_of_range;
+  w_.localise.modify([&](LocaliseRequest& r) {
+    r.global = global;
+    r.x = pose.x;
+    r.y = pose.y;
+    r.theta = pose.theta;
+    ++r.seq;
+  });
+  await_owners(false);  // XW after the ack reads the new pose
   return PortResult::ok;
 }
 

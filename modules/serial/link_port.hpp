@@ -8,6 +8,7 @@
 #include "modules/places/place_graph.hpp"
 #include "modules/places/route_table.hpp"
 #include "kernel/config.hpp"
+#include "modules/executor/posture_units.hpp"
 #include "modules/topics.hpp"
 #include "protocol/codec/robot_port.hpp"
 
@@ -27,6 +28,7 @@ struct LinkWriters {
   Writer<ModeRequest> modes;
   Writer<PlannerGoal> goal;   // the planner's goal (XG, XH)
   Writer<OperatorEvents> events;  // the operator's actions for the motion arbiter, in order
+  Writer<LocaliseRequest> localise;  // the pose on the map (XA)
 };
 
 class LinkPort final : public protocol::RobotPort {
@@ -38,6 +40,8 @@ class LinkPort final : public protocol::RobotPort {
   void set_emergency(Process* p) { emergency_process_ = p; }
   // The executor, run before the next line after a command it acts on (ASN, AC, …).
   void set_executor(Process* p) { executor_process_ = p; }
+  // The localisation, run before the next line after AC or XA (XW then reads the new pose).
+  void set_localise(Process* p) { localise_process_ = p; }
 
   // Read-your-writes (docs/PROTOCOL.md, "What `ack` means"). A request handed to another
   // module (the emergency module, the executor) starts a wait: both are triggered, and no
@@ -102,6 +106,9 @@ class LinkPort final : public protocol::RobotPort {
     routes_ = routes;
   }
   protocol::PortResult planner_map(protocol::MapWindow& out) const noexcept override;
+  // localisation (XW, XA)
+  protocol::PortResult localisation(protocol::LocaliseReport& out) const noexcept override;
+  protocol::PortResult set_map_pose(const protocol::Posture& pose, bool global) noexcept override;
   // pan-tilt, passage finder, door crossing, demonstration (XD)
   protocol::PortResult modes(protocol::ModesReport& out) const noexcept override;
 
@@ -112,6 +119,8 @@ class LinkPort final : public protocol::RobotPort {
   // The pan-tilt module runs and has a unit to talk to (Ap, AG, Ad need it).
   bool has_pan_tilt_unit() const;
   std::uint64_t tick() const;
+  // The robot's pose on its map (the odometry's while no localisation runs): XG, XN, XQ.
+  motion::PostureUnits map_pose() const;
   // True once the planner module has published (its process row runs).
   bool planner_running() const { return planner_status_.generation() > 0; }
 
@@ -129,10 +138,13 @@ class LinkPort final : public protocol::RobotPort {
   Reader<ModeStatus> gate_status_;
   Reader<ModeStatus> doors_status_;
   Reader<DemoStatus> demo_status_;
+  Reader<Localisation> localisation_;
   const Config& cfg_;
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
   Process* executor_process_ = nullptr;    // triggered on servo and odometry requests
+  Process* localise_process_ = nullptr;    // triggered on odometry and map pose requests
+  bool localise_runs_ = false;             // the localisation has a row
   bool emergency_runs_ = false;            // the emergency module has a row in the kernel's table
   bool executor_runs_ = false;             // the executor has a row
   Reader<MotionCommand> command_;          // the emergency's command, to know the executor applied it
@@ -148,6 +160,8 @@ class LinkPort final : public protocol::RobotPort {
   bool emergency_ran() const;
   // The executor has run if the wait needs it, and has applied the emergency's latest command.
   bool executor_done() const;
+  // The localisation has taken the latest odometry set (AC) and map pose request (XA).
+  bool localise_done() const;
   // Triggers the owners of the current wait that have not done their part yet.
   void trigger_owners() const;
   // Asks the emergency module to judge a new request in this tick.

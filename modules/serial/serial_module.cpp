@@ -13,7 +13,7 @@ namespace robuter {
 SerialModule::SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links)
     : writers_{bb.link_motion.writer(), bb.servo_request.writer(), bb.odometry_set.writer(), bb.go_to.writer(),
                bb.us_settings.writer(), bb.link_status.writer(),  bb.modes.writer(),
-               bb.planner_goal.writer(), bb.operator_events.writer()},
+               bb.planner_goal.writer(), bb.operator_events.writer(), bb.localise_request.writer()},
       port_(bb, writers_, cfg),
       stop_when_clients_leave_(cfg.links.stop_when_clients_leave) {
   for (hal::ByteStream* s : links) {

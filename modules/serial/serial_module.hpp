@@ -33,6 +33,8 @@ class SerialModule final : public Process {
   void set_emergency(Process* p) { port_.set_emergency(p); }
   // The executor, run before the next line after a servo or odometry request (read-your-writes).
   void set_executor(Process* p) { port_.set_executor(p); }
+  // The localisation, run before the next line after AC or XA.
+  void set_localise(Process* p) { port_.set_localise(p); }
   void set_places(const places::PlaceGraph* graph, const places::RouteTable* routes) {  // XN, XI, XQ
     port_.set_places(graph, routes);
   }

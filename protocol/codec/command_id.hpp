@@ -56,6 +56,8 @@ enum class CommandId : std::uint8_t {
   get_place,               // XN (the place the robot is in; docs/PLACES.md)
   get_place_info,          // XI <n> (one place of the place graph)
   go_to_place,             // XQ <n> (drive to a place over the place graph's route)
+  get_localisation,        // XW (the pose on the map and its uncertainty; docs/LOCALISATION.md)
+  set_map_pose,            // XA [x y theta] (the pose on the map, or a global search)
 };
 
 }  // namespace robuter::protocol

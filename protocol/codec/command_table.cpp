@@ -97,6 +97,10 @@ constexpr std::array kTable = {
                "place n: name, centre, neighbours"},
     CommandRow{'X', 'Q', C::go_to_place, integers_from(1, kPlaceNumber, kFlag), handle_go_to_place,
                "go to place n (route over the place graph) [1: exploring, a full-turn scan at each place]"},
+    CommandRow{'X', 'W', C::get_localisation, no_params(), handle_get_localisation,
+               "where the robot is on its map: pose and uncertainty (localisation)"},
+    CommandRow{'X', 'A', C::set_map_pose, integers_or_none(kAny, kAny, kTheta), handle_set_map_pose,
+               "the robot's pose on its map [x y theta]; none: a global search"},
 };
 
 }  // namespace

@@ -43,7 +43,7 @@ ErrorCode decode_integers(std::string_view params, const Schema& schema, Command
     ++n;
   }
   const std::size_t least = schema.min_count > 0 ? schema.min_count : schema.count;
-  if (n < least || n > schema.count) return ErrorCode::bad_parameter_count;
+  if (!(n == 0 && schema.or_none) && (n < least || n > schema.count)) return ErrorCode::bad_parameter_count;
   cmd.int_count = static_cast<std::uint8_t>(n);
   return first_bad;
 }

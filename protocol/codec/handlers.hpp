@@ -66,6 +66,10 @@ void handle_get_place(const Command&, RobotPort&, ReplyWriter&) noexcept;       
 void handle_get_place_info(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XI
 void handle_go_to_place(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XQ
 
+// X: localisation (handlers_localise.cpp)
+void handle_get_localisation(const Command&, RobotPort&, ReplyWriter&) noexcept;    // XW
+void handle_set_map_pose(const Command&, RobotPort&, ReplyWriter&) noexcept;        // XA
+
 // X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD
 

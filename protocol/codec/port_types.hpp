@@ -112,6 +112,21 @@ struct PlannerReport {
   std::int64_t max_us = 0;        // longest activation of the planner since start, microseconds
 };
 
+// The localisation's report for XW (docs/LOCALISATION.md, "XW").
+struct LocaliseReport {
+  LocaliseState state = LocaliseState::off;  // what it is doing
+  std::int32_t x = 0;             // estimated pose on the map, 0.1 mm
+  std::int32_t y = 0;             // 0.1 mm
+  std::int32_t theta = 0;         // 0.01 degree, (-18000, 18000]
+  std::int32_t major_mm = 0;      // the position's 1-sigma ellipse: semi-major axis, mm
+  std::int32_t minor_mm = 0;      // semi-minor axis, mm
+  std::int32_t axis = 0;          // direction of the major axis, 0.01 degree, (-9000, 9000]
+  std::int32_t sigma_theta = 0;   // the heading's standard deviation, 0.01 degree
+  std::int32_t cluster_pct = 0;   // share of the particles' weight in the estimate's cluster, %
+  std::int32_t particles = 0;     // particles kept now
+  std::int64_t steps = 0;         // filter steps since start
+};
+
 // One place of the place graph, for XN (the robot's place) and XI (any place).
 struct PlaceReport {
   static constexpr std::size_t kMaxNeighbours = 16;  // listed in XI (more are cut)

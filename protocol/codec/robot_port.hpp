@@ -99,6 +99,19 @@ class RobotPort {
     return PortResult::unavailable;
   }
 
+  // ---- extensions (X): localisation on the map ([localise]); without it: unavailable ----
+  virtual PortResult localisation(LocaliseReport& out) const noexcept {  // XW
+    (void)out;
+    return PortResult::unavailable;
+  }
+  // XA x y theta: the robot is at this map pose (0.1 mm, 0.01 degree); XA alone (`global`):
+  // search the whole map for it.
+  virtual PortResult set_map_pose(const Posture& pose, bool global) noexcept {
+    (void)pose;
+    (void)global;
+    return PortResult::unavailable;
+  }
+
   // ---- extensions (X): pan-tilt, passage finder and door crossing states (XD) ----
   virtual PortResult modes(ModesReport& out) const noexcept {
     (void)out;

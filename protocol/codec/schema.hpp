@@ -33,6 +33,7 @@ struct Schema {
   std::array<IntRange, kMaxIntParams> ranges{};    // integers: bounds of each
   std::string_view choices{};                      // one_of: the accepted characters
   std::uint8_t min_count = 0;                      // integers: fewest accepted (0: exactly `count`)
+  bool or_none = false;                            // integers: none at all is accepted too (XA)
 };
 
 // Schema builders so table rows read like the protocol's table.
@@ -52,6 +53,10 @@ constexpr Schema integers_from(std::uint8_t min, IntRange a, IntRange b) noexcep
 }
 constexpr Schema integers_from(std::uint8_t min, IntRange a, IntRange b, IntRange c) noexcept {
   return Schema{SchemaKind::integers, 3, {a, b, c}, {}, min};
+}
+// Either all `count` integers or none (XA: a pose, or none for a global search).
+constexpr Schema integers_or_none(IntRange a, IntRange b, IntRange c) noexcept {
+  return Schema{SchemaKind::integers, 3, {a, b, c}, {}, 0, true};
 }
 constexpr Schema one_of(std::string_view choices) noexcept {
   return Schema{SchemaKind::one_of, 0, {}, choices};

@@ -101,6 +101,15 @@ ROBUTER_VOCABULARY(EmergencyCause, ROBUTER_EMERGENCY_CAUSES, "other");
 enum class PlannerState : std::uint8_t { ROBUTER_PLANNER_STATES(ROBUTER_VOCAB_ENUMERATOR) };
 ROBUTER_VOCABULARY(PlannerState, ROBUTER_PLANNER_STATES, "idle");
 
+// What the localisation is doing (XW; docs/LOCALISATION.md, "The module").
+#define ROBUTER_LOCALISE_STATES(X)                                                                     \
+  X(off, "off")             /* no localisation: no map, or [localise] enabled = false */               \
+  X(searching, "searching") /* a global search (XA without a pose): the estimate is not yet one pose */ \
+  X(uncertain, "uncertain") /* the particles spread or split: the map frame keeps its last correction */ \
+  X(tracking, "tracking")   /* one compact cluster: the estimate corrects the map frame */
+enum class LocaliseState : std::uint8_t { ROBUTER_LOCALISE_STATES(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(LocaliseState, ROBUTER_LOCALISE_STATES, "off");
+
 // What the pan-tilt, passage-finder, door-crossing or demonstration module is doing (XD).
 #define ROBUTER_MODE_STATES(X)                                                                         \
   X(off, "off")             /* not asked for (or ended and reset) */                                   \

@@ -9,7 +9,7 @@
 namespace robuter::ctl {
 
 namespace {
-constexpr std::array<CommandHelp, 57> kTable{{
+constexpr std::array<CommandHelp, 59> kTable{{
     {"BO", "BO", "S <x> <y> <theta> <servo> <clock>", "posture: x, y in 0.1 mm, theta in 0.01 deg"},
     {"BU", "BU", "U <u1>…<u24> <servo> <clock>", "the 24 ultrasonic ranges, mm (0 = inactive or no echo yet)"},
     {"BV", "BV", "V <x> <y> <theta> <servo> <u1>…<u24> <clock>", "posture and ranges"},
@@ -63,6 +63,9 @@ constexpr std::array<CommandHelp, 57> kTable{{
     {"XN", "XN", "N <count> <number> <name>", "the place the robot is in (place graph; 0 - outside every place)"},
     {"XI", "XI <n>", "I <n> <name> <centre-x> <centre-y> <k> <neighbour>…", "place n of the place graph: centre (0.1 mm), neighbours by door"},
     {"XQ", "XQ <n>", "ack | error", "go to place n over the place graph's route (the grid planner drives it; XP follows, XH stops)"},
+    {"XW", "XW", "W <state> <x> <y> <theta> <major-mm> <minor-mm> <axis> <sigma-theta> <cluster-%> <particles> <steps> <clock>",
+     "where the robot is on its map: the localisation's estimate and its uncertainty"},
+    {"XA", "XA [<x> <y> <theta>]", "ack | error", "the robot's pose on its map (0.1 mm, 0.01 deg); XA alone: a global search"},
     {"help", "help [command]", "", "this list, or one command's syntax and reply", true},
     {"stop", "stop", "", "send the stop byte 0x18 now (as Ctrl-X): the robot stops and latches; XR re-enables", true},
     {"status", "status", "", "the latest status-stream line, decoded", true},

@@ -68,8 +68,15 @@ bool ParticleFilter::step(const Pose& odometry, std::span<const SonarReading> re
   return weigh_some(count_);
 }
 
+void ParticleFilter::rebase(const Pose& odometry) {
+  if (!odometry.allFinite()) return;
+  last_odometry_ = odometry;
+  have_odometry_ = true;
+}
+
+// A non-finite odometry is no motion: refused, the last one kept.
 bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReading> readings) {
-  if (stepping_) return false;
+  if (stepping_ || !odometry.allFinite()) return false;
   if (!have_odometry_) {
     last_odometry_ = odometry;
     have_odometry_ = true;

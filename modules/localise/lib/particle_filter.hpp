@@ -81,6 +81,9 @@ class ParticleFilter {
   // are weighed, resamples (true when the step is done). step() is begin_step() and one
   // weigh_some() of every particle: the same draws, the same result.
   bool begin_step(const Pose& odometry, std::span<const SonarReading> readings);
+  // The odometry jumped without the robot moving (AC set it): the next step measures the motion
+  // from `odometry`. A step under way goes on (its particles have moved already).
+  void rebase(const Pose& odometry);
   bool weigh_some(int n);
   bool stepping() const { return stepping_; }
 
