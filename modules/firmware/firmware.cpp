@@ -276,6 +276,7 @@ std::optional<std::string> Firmware::setup() {
     if (map == nullptr) return "configuration error: localise.enabled: needs a map (planner.map_file or places.file)";
     localise = std::make_unique<LocaliseModule>(bb_, cfg_);
     localise->set_map(*map);
+    if (auto err = keep_map_pose(*localise)) return *err;
   }
   auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
   if (prior_map) planner->set_prior_map(std::move(*prior_map));
@@ -403,10 +404,38 @@ std::optional<std::string> Firmware::setup() {
   return std::nullopt;
 }
 
+// [localise] state_file: the last run's map pose starts the filter; a missing file is a first
+// run, a broken one is said and ignored (the robot starts from its odometry: a file robuterd
+// writes itself must not keep it from starting); its folder must exist.
+std::optional<std::string> Firmware::keep_map_pose(LocaliseModule& localise) {
+  const std::string& path = cfg_.localise.state_file;
+  if (path.empty()) return std::nullopt;
+  std::error_code ec;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    return "configuration error: localise.state_file " + path + ": its folder does not exist";
+  if (std::filesystem::exists(path, ec)) {
+    std::string why;
+    if (const auto p = localise::read_state_file(path, why)) {
+      localise.set_start(*p);
+      log::info("localise: {}: the last run's map pose {} {} {}", path, p->x, p->y, p->theta);
+    } else {
+      log::warn("localise: {} — ignored: starting from the odometry", why);
+    }
+  } else {
+    log::info("localise: {} does not exist yet: starting from the odometry", path);
+  }
+  state_writer_ = std::make_unique<localise::StateFileWriter>(path);
+  localise.set_state_file(state_writer_.get());
+  return std::nullopt;
+}
+
 int Firmware::run() {
+  if (state_writer_) state_writer_->start();
   if (picture_writer_) picture_writer_->start();
   if (place_grid_writer_) place_grid_writer_->start();
   int status = kernel_->run();
+  if (state_writer_) state_writer_->stop();  // the module's close() handed over the last pose
   if (place_grid_writer_) {
     place_grid_writer_->stop();
     std::fprintf(stderr, "robuterd: place grids: %u written, %u failed, %u dropped (writer busy) in %s\n",

@@ -43,6 +43,10 @@ namespace places {
 class PlaceGridMailbox;
 class PlaceGridWriter;
 }  // namespace places
+namespace localise {
+class StateFileWriter;
+}  // namespace localise
+class LocaliseModule;
 
 // How robuterd was asked to run (command line).
 struct FirmwareOptions {
@@ -98,11 +102,15 @@ class Firmware {
   planner::PictureWriter* planner_pictures() { return picture_writer_.get(); }
   // The place grid writer ([places] grids_dir), or null; driven like planner_pictures().
   places::PlaceGridWriter* place_grids() { return place_grid_writer_.get(); }
+  // The localisation's state file writer ([localise] state_file), or null; driven the same way.
+  localise::StateFileWriter* state_file() { return state_writer_.get(); }
   // What setup() made of [planner] map_file (one line for --check-config), empty without one.
   const std::string& planner_map_note() const { return planner_map_note_; }
   const std::string& places_note() const { return places_note_; }
 
  private:
+  // [localise] state_file: the kept map pose read, its writer made (docs/LOCALISATION.md).
+  std::optional<std::string> keep_map_pose(LocaliseModule& localise);
   Config cfg_;
   FirmwareOptions opt_;
   std::string planner_map_note_;  // [planner] map_file as loaded, for --check-config
@@ -112,6 +120,7 @@ class Firmware {
   Blackboard bb_;
   std::unique_ptr<Clock> clock_;
   std::unique_ptr<const plan::OccupancyMap> walls_;  // the place graph's walls, when no a-priori map (planner, narrowing)
+  std::unique_ptr<localise::StateFileWriter> state_writer_;  // [localise] state_file, written off the kernel's thread
   std::unique_ptr<const plan::OccupancyMap> localise_map_;  // the a-priori map as loaded, for the localisation
   std::unique_ptr<const plan::OccupancyMap> memory_;  // saved place grids read back ([places] load_grids): the planner's only
   std::vector<plan::Point2> openings_;  // the place graph's door openings, kept free in the planner's map

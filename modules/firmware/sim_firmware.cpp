@@ -12,6 +12,7 @@
 #include "hal/sitl/byte_pipe.hpp"
 #include "hal/sitl/sim_stepper.hpp"
 #include "modules/places/place_grid_writer.hpp"
+#include "modules/localise/state_file.hpp"
 #include "modules/planner/picture_writer.hpp"
 
 namespace robuter::test {
@@ -62,6 +63,7 @@ void SimFirmware::open(const Config& cfg, FirmwareOptions opt) {
 
 SimFirmware::~SimFirmware() {
   if (started_) fw_->kernel().shutdown();
+  if (started_ && fw_->state_file() != nullptr) fw_->state_file()->drain();  // the pose close() handed over
   if (client_ >= 0) ::close(client_);
   fw_.reset();
   std::error_code ec;
@@ -74,6 +76,7 @@ void SimFirmware::step() {
   // thread was started): after the tick, outside the kernel's step.
   if (auto* w = fw_->planner_pictures(); w != nullptr && !w->running()) w->drain();
   if (auto* w = fw_->place_grids(); w != nullptr && !w->running()) w->drain();
+  if (auto* w = fw_->state_file(); w != nullptr) w->drain();
   if (observer_) observer_();
 }
 

@@ -21,6 +21,9 @@ constexpr double kTrackingWeight = 0.6;    // at least this share of the weight 
 constexpr double kTrackingMajor = 0.5;     // its 1-sigma ellipse's semi-major axis, m, at most
 constexpr double kTrackingHeading = 0.26;  // its heading's standard deviation, rad (15°), at most
 constexpr double kFieldReach = 2.0;        // the distance field's cap, m (beyond: "far from any wall")
+constexpr std::uint64_t kKeepEveryTicks = 100;  // the state file is written at most once a second
+constexpr std::int32_t kKeepMoved = 100;        // and only after the robot moved 10 mm (0.1 mm)
+constexpr std::int32_t kKeepTurned = 100;       // or turned 1° (0.01°)
 
 loc::FilterParams filter_params(const LocaliseConfig& c) {
   loc::FilterParams p;
@@ -105,7 +108,14 @@ void LocaliseModule::take_inputs(std::uint64_t tick) {
     history_.push(p.tick, odo);
     last_posture_tick_ = p.tick;
   }
-  if (!started_) start_at(odo, odo, tick);  // the map frame starts as the odometry frame
+  if (!started_) {
+    if (saved_start_) {  // where an earlier run left the robot
+      start_at(localise::to_pose(saved_start_->x, saved_start_->y, saved_start_->theta), odo, tick);
+      log::info("localise: starting at the kept map pose {} {} {}", saved_start_->x, saved_start_->y, saved_start_->theta);
+    } else {
+      start_at(odo, odo, tick);  // the map frame starts as the odometry frame
+    }
+  }
 }
 
 void LocaliseModule::run(Kernel& k) {
@@ -141,12 +151,29 @@ void LocaliseModule::run(Kernel& k) {
       }
     }
   }
+  keep_pose(tick, false);
   const auto used = static_cast<std::uint32_t>(std::max<std::int64_t>(0, thread_cpu_us() - t0));
   if (used > report_.run_us_max) {
     report_.run_us_max = used;
     out_.publish(report_);
   }
 }
+
+void LocaliseModule::keep_pose(std::uint64_t tick, bool now) {
+  if (state_file_ == nullptr || !started_ || !have_posture_) return;
+  if (!now && (report_.state != LocaliseState::tracking || tick < saved_tick_ + kKeepEveryTicks)) return;
+  const motion::PostureUnits m = localise::map_posture(last_posture_, report_);
+  const localise::SavedPose p{m.x, m.y, m.theta};
+  if (!now && std::abs(p.x - saved_.x) < kKeepMoved && std::abs(p.y - saved_.y) < kKeepMoved &&
+      std::abs(p.theta - saved_.theta) < kKeepTurned)
+    return;
+  state_file_->post(p);
+  saved_ = p;
+  saved_tick_ = tick;
+}
+
+// The last map pose for the next run (the writer's stop writes it).
+void LocaliseModule::close(Kernel& k) { keep_pose(k.tick(), true); }
 
 void LocaliseModule::publish(std::uint64_t tick, bool stepped) {
   if (stepped) ++report_.steps;

@@ -13,6 +13,7 @@
 #include "modules/localise/lib/particle_filter.hpp"
 #include "modules/localise/map_frame.hpp"
 #include "modules/localise/ring_readings.hpp"
+#include "modules/localise/state_file.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/topics.hpp"
 
@@ -30,6 +31,12 @@ class LocaliseModule final : public Process {
   void set_map(const plan::OccupancyMap& walls) { walls_ = &walls; }
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
+
+  // Where the map pose is kept across restarts (start-up only; null = nowhere), and the pose an
+  // earlier run kept: the first start pose instead of the odometry's.
+  void set_state_file(localise::StateFileWriter* w) { state_file_ = w; }
+  void set_start(const localise::SavedPose& p) { saved_start_ = p; }
+  void close(Kernel& k) override;
 
   // The filter, for tests and the bench (null before init).
   const loc::ParticleFilter* filter() const { return filter_.get(); }
@@ -62,6 +69,13 @@ class LocaliseModule final : public Process {
   Posture last_posture_{};            // the last posture seen
   bool have_posture_ = false;
   std::uint64_t last_posture_tick_ = ~0ull;
+  localise::StateFileWriter* state_file_ = nullptr;   // where the map pose is kept, or null
+  std::optional<localise::SavedPose> saved_start_;    // an earlier run's last map pose
+  std::uint64_t saved_tick_ = 0;                      // tick of the last pose handed to the state file
+  localise::SavedPose saved_{};                       // and that pose
+  // Hands the map pose now to the state file: at most once a second while tracking, when it
+  // moved; `now` forces it (shutdown).
+  void keep_pose(std::uint64_t tick, bool now);
 };
 
 }  // namespace robuter

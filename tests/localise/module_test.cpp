@@ -11,6 +11,8 @@
 #include <string>
 
 #include "modules/firmware/sim_firmware.hpp"
+#include "modules/localise/state_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace robuter::test {
 namespace {
@@ -129,6 +131,80 @@ TEST(LocaliseModule, TracksAlongTheCorridorWhereAPoorOdometryDrifts) {
   EXPECT_LT(worst_heading, 4.0 * M_PI / 180.0);
   EXPECT_GT(odometry, 0.3);
   EXPECT_EQ(where(fw).state, "tracking");
+}
+
+// [localise] state_file: the map pose a run leaves is where the next starts (its odometry at 0);
+// a broken file is said and ignored; a missing folder stops start-up naming the key.
+TEST(LocaliseModule, TheMapPoseIsKeptAcrossARestart) {
+  TempDir dir;
+  ASSERT_TRUE(dir.ok());
+  Config cfg = floor_config();
+  cfg.localise.state_file = dir.file("pose.txt");
+  {
+    SimFirmware fw(ROBUTER_WORLDS_DIR "/building_floor.toml", cfg);
+    ASSERT_TRUE(fw.ok()) << fw.error();
+    ASSERT_EQ(fw.ask("AC 30000 200500 0"), "ack");
+    ASSERT_EQ(fw.ask("XA 40000 200500 9000"), "ack");  // tracking: kept within a second
+    fw.run_ticks(150);
+  }
+  std::string why;
+  const auto kept = localise::read_state_file(cfg.localise.state_file, why);
+  ASSERT_TRUE(kept) << why;
+  EXPECT_NEAR(kept->x, 40000, 500);
+  EXPECT_NEAR(kept->y, 200500, 500);
+  EXPECT_NEAR(kept->theta, 9000, 300);
+  {
+    SimFirmware fw(ROBUTER_WORLDS_DIR "/building_floor.toml", cfg);
+    ASSERT_TRUE(fw.ok()) << fw.error();
+    fw.run_ticks(20);
+    const Where w = where(fw);
+    EXPECT_EQ(w.state, "tracking");
+    EXPECT_NEAR(w.x, 40000, 500);
+    EXPECT_NEAR(w.y, 200500, 500);
+    EXPECT_NEAR(w.theta, 9000, 300);
+    EXPECT_EQ(fw.ask("BO").value_or("").substr(0, 8), "S 0 0 0 ");  // the odometry starts at 0
+  }
+  {
+    std::FILE* f = std::fopen(cfg.localise.state_file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("robuter-localise 1\npose 1 two 3\n", f);
+    std::fclose(f);
+    SimFirmware fw(ROBUTER_WORLDS_DIR "/building_floor.toml", cfg);
+    ASSERT_TRUE(fw.ok()) << fw.error();
+    fw.run_ticks(20);
+    EXPECT_NEAR(where(fw).x, 0, 500);  // ignored: the odometry's start
+  }
+  cfg.localise.state_file = dir.file("no-such-folder/pose.txt");
+  SimFirmware fw(ROBUTER_WORLDS_DIR "/building_floor.toml", cfg);
+  EXPECT_FALSE(fw.ok());
+  EXPECT_NE(fw.error().find("localise.state_file"), std::string::npos) << fw.error();
+}
+
+// The state file's reader refuses what is not one: a wrong header, a malformed or out-of-range
+// pose, an empty file, a folder.
+TEST(LocaliseStateFile, RefusesWhatIsNotAStateFileAndReadsWhatItWrites) {
+  TempDir dir;
+  ASSERT_TRUE(dir.ok());
+  const std::string path = dir.file("pose.txt");
+  std::string why;
+  ASSERT_TRUE(localise::write_state_file(path, {123, -456, 18000}, why)) << why;
+  const auto back = localise::read_state_file(path, why);
+  ASSERT_TRUE(back) << why;
+  EXPECT_EQ(back->x, 123);
+  EXPECT_EQ(back->y, -456);
+  EXPECT_EQ(back->theta, 18000);
+  for (const char* text : {"", "robuter-localise 2\npose 1 2 3\n", "robuter-localise 1\n", "robuter-localise 1\npose 1 2\n",
+                           "robuter-localise 1\npose 1 2 3 4\n", "robuter-localise 1\npose 1 2 -18000\n",
+                           "robuter-localise 1\npose 1 99999999999 3\n", "robuter-localise 1\nplace 1 2 3\n"}) {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(text, f);
+    std::fclose(f);
+    why.clear();
+    EXPECT_FALSE(localise::read_state_file(path, why)) << text;
+    EXPECT_NE(why.find(path), std::string::npos) << why;
+  }
+  EXPECT_FALSE(localise::read_state_file(dir.file(""), why));  // the folder itself
 }
 
 }  // namespace
