@@ -20,6 +20,7 @@ namespace {
 constexpr double kTrackingWeight = 0.6;    // at least this share of the weight in the cluster
 constexpr double kTrackingMajor = 0.5;     // its 1-sigma ellipse's semi-major axis, m, at most
 constexpr double kTrackingHeading = 0.26;  // its heading's standard deviation, rad (15°), at most
+constexpr double kNoJumpLimit = 1e9;       // PoseHistory::add's jump test, off (m, rad per tick)
 constexpr double kFieldReach = 2.0;        // the distance field's cap, m (beyond: "far from any wall")
 constexpr std::uint64_t kKeepEveryTicks = 100;  // the state file is written at most once a second
 constexpr std::int32_t kKeepMoved = 100;        // and only after the robot moved 10 mm (0.1 mm)
@@ -89,25 +90,18 @@ void LocaliseModule::take_inputs(std::uint64_t tick) {
   if (!posture_.updated()) return;
   const Posture p = posture_.copy();
   const loc::Pose odo = localise::to_pose(p.x, p.y, p.theta);
-  if (!have_posture_) {
-    last_posture_ = p;
-    have_posture_ = true;
-  }
-  const bool set = p.odometry_seq != last_posture_.odometry_seq;
+  const bool set = have_posture_ && p.odometry_seq != last_posture_.odometry_seq;
   last_posture_ = p;
+  have_posture_ = true;
   if (set) {
     // AC: the seed's "the robot is here" — the odometry and the map pose both start there
     // (docs/LOCALISATION.md, "AC and XA").
     history_.clear();
-    last_posture_tick_ = ~0ull;
     start_at(odo, odo, tick);
     log::info("localise: the odometry was set (AC {} {} {}): the map pose is set there too", p.x, p.y, p.theta);
   }
-  last_posture_ = p;
-  if (p.tick != last_posture_tick_) {
-    history_.push(p.tick, odo);
-    last_posture_tick_ = p.tick;
-  }
+  // AC is told by odometry_seq, not by the size of the jump: no jump limit here.
+  history_.add(p.tick, safety::Pose2{{odo.x(), odo.y()}, odo.z()}, kNoJumpLimit, kNoJumpLimit);
   if (!started_) {
     if (saved_start_) {  // where an earlier run left the robot
       start_at(localise::to_pose(saved_start_->x, saved_start_->y, saved_start_->theta), odo, tick);

@@ -58,7 +58,7 @@ class LocaliseModule final : public Process {
   Writer<Localisation> out_;
   loc::DistanceField field_;                      // built at init from walls_
   std::unique_ptr<loc::ParticleFilter> filter_;   // built at init
-  localise::PoseHistory history_;
+  safety::PoseHistory history_;                  // the executor's recent postures (odometry)
   localise::RingReadings readings_;
   std::array<loc::SonarReading, loc::ParticleFilter::kMaxReadings> batch_{};
   Localisation report_{};             // what is published
@@ -68,7 +68,6 @@ class LocaliseModule final : public Process {
   std::uint32_t step_odometry_seq_ = 0;          // and the odometry frame it is in (Posture.odometry_seq)
   Posture last_posture_{};            // the last posture seen
   bool have_posture_ = false;
-  std::uint64_t last_posture_tick_ = ~0ull;
   localise::StateFileWriter* state_file_ = nullptr;   // where the map pose is kept, or null
   std::optional<localise::SavedPose> saved_start_;    // an earlier run's last map pose
   std::uint64_t saved_tick_ = 0;                      // tick of the last pose handed to the state file

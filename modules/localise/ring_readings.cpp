@@ -8,32 +8,6 @@
 
 namespace robuter::localise {
 
-void PoseHistory::push(std::uint64_t tick, const loc::Pose& odometry) {
-  if (count_ == kSize) {
-    first_ = (first_ + 1) % kSize;
-    --count_;
-  }
-  samples_[(first_ + count_) % kSize] = Sample{tick, odometry};
-  ++count_;
-}
-
-std::uint64_t PoseHistory::oldest_tick() const { return count_ == 0 ? 0 : nth(0).tick; }
-
-loc::Pose PoseHistory::at(std::uint64_t tick) const {
-  if (count_ == 0) return loc::Pose::Zero();
-  if (tick <= nth(0).tick) return nth(0).pose;
-  for (std::size_t i = 1; i < count_; ++i) {
-    const Sample& b = nth(i);
-    if (tick > b.tick) continue;
-    const Sample& a = nth(i - 1);
-    const double f = static_cast<double>(tick - a.tick) / static_cast<double>(b.tick - a.tick);
-    const double turn = loc::wrap_angle(b.pose.z() - a.pose.z());
-    return loc::Pose(a.pose.x() + f * (b.pose.x() - a.pose.x()), a.pose.y() + f * (b.pose.y() - a.pose.y()),
-                     loc::wrap_angle(a.pose.z() + f * turn));
-  }
-  return nth(count_ - 1).pose;
-}
-
 loc::Pose to_pose(std::int32_t x, std::int32_t y, std::int32_t theta) {
   return loc::Pose(motion::tenth_mm_to_metres(x), motion::tenth_mm_to_metres(y), motion::centideg_to_radians(theta));
 }
@@ -45,7 +19,7 @@ RingReadings::RingReadings(const robot::Ring& ring) {
   }
 }
 
-std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const PoseHistory& history, const loc::Pose& now,
+std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const safety::PoseHistory& history, const loc::Pose& now,
                                   std::span<loc::SonarReading> out) {
   std::size_t n = 0;
   const Eigen::Rotation2Dd to_now(-now.z());
@@ -53,9 +27,10 @@ std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const PoseHist
     const std::uint64_t t = ranges.read_tick[k];
     if (t == 0 || t <= used_tick_[k]) continue;  // never read, or used by an earlier step
     const bool echo = (ranges.no_echo & (1u << k)) == 0;
-    if (!echo || ranges.mm[k] == 0 || history.empty() || t < history.oldest_tick()) continue;
+    if (!echo || ranges.mm[k] == 0 || history.empty() || t + kMaxAgeTicks < history.last_tick()) continue;
     // The pose it was read from, in the robot frame of `now`.
-    const loc::Pose then = history.at(t);
+    const safety::Pose2 at = history.at(t);
+    const loc::Pose then(at.p.x(), at.p.y(), at.theta);
     const double turn = loc::wrap_angle(then.z() - now.z());
     const Eigen::Vector2d offset = to_now * Eigen::Vector2d(then.x() - now.x(), then.y() - now.y());
     const loc::SonarReading& m = mount_[k];

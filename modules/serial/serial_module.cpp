@@ -133,30 +133,26 @@ void SerialModule::take(Link& l, std::span<const std::uint8_t> bytes) {
   handle(l, false);
 }
 
-std::optional<std::size_t> SerialModule::read_some(Kernel& k, Link& l) {
-  const hal::IoResult r = l.stream->read(l.in);
-  if (!r.closed) return r.bytes;
-  note_closed(l);
-  k.unwatch_fd(l.watched_fd);
-  l.watched_fd = -1;
-  return std::nullopt;
-}
-
 // The client events are looked at after each read, before its bytes are taken: a client opens
 // the pty before it writes, so the start of its session is always seen before its first line.
 // (Looked at before the read, a client could open and write between the two: its first lines
 // would be answered, and then its session started, dropping their settings and replies.)
-bool SerialModule::pump(Kernel& k, Link& l) {
+bool SerialModule::pump(Kernel& k, Link& l, bool sessions) {
   for (std::size_t reads = 0; reads < kMaxReadsPerRun; ++reads) {
-    const auto n = read_some(k, l);
-    if (!n) return false;
-    std::span<const std::uint8_t> bytes(l.in.data(), *n);
-    if (!client_events(k, l, bytes)) return false;
+    const hal::IoResult r = l.stream->read(l.in);
+    if (r.closed) {
+      note_closed(l);
+      k.unwatch_fd(l.watched_fd);
+      l.watched_fd = -1;
+      return false;
+    }
+    std::span<const std::uint8_t> bytes(l.in.data(), r.bytes);
+    if (sessions && !client_events(k, l, bytes)) return false;
     if (!bytes.empty()) {
       take(l, bytes);
       flush(l);
     }
-    if (*n == 0) break;
+    if (r.bytes == 0) break;
   }
   return true;
 }
@@ -171,16 +167,11 @@ bool SerialModule::client_events(Kernel& k, Link& l, std::span<const std::uint8_
       // go to whichever program reads first.
       log::warn("serial: a second program opened {} while a client holds it: both read its replies", l.stream->name());
     } else {
-      // What the leaving client wrote is served in its own session before the session ends.
+      // What the leaving client wrote, the bytes in hand and the rest, is served in its own
+      // session before the session ends.
       if (!bytes.empty()) take(l, bytes);
       bytes = {};
-      for (std::size_t reads = 0; reads < kMaxReadsPerRun; ++reads) {
-        const auto n = read_some(k, l);
-        if (!n) return false;
-        if (*n == 0) break;
-        take(l, std::span<const std::uint8_t>(l.in.data(), *n));
-        flush(l);
-      }
+      if (!pump(k, l, false)) return false;
       end_session(l);
     }
   }
@@ -222,7 +213,7 @@ void SerialModule::serve(Kernel& k, Link& l) {
   flush(l);
   handle(l, false);  // lines that waited for an owner, before the bytes read now
   flush(l);
-  if (!pump(k, l)) return;
+  if (!pump(k, l, true)) return;
   if (const auto line = l.codec.poll_stream(port_); line && l.out.free() >= line->size()) l.out.push(*line);
   flush(l);
 }

@@ -4,7 +4,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <span>
 
 #include "hal/api/byte_stream.hpp"
@@ -60,11 +59,9 @@ class SerialModule final : public Process {
 
   // Serves one link: attach/detach, client sessions, flush, read, answer, flush.
   void serve(Kernel& k, Link& l);
-  // Reads every byte waiting (bounded) and feeds it, each read's bytes after the client events
-  // that came before them; false when the stream closed.
-  bool pump(Kernel& k, Link& l);
-  // One read into l.in: the bytes read, or nullopt when the stream closed (logged, unwatched).
-  std::optional<std::size_t> read_some(Kernel& k, Link& l);
+  // Reads every byte waiting (bounded) and feeds it; with `sessions`, each read's bytes after the
+  // client events that came before them. False when the stream closed.
+  bool pump(Kernel& k, Link& l, bool sessions);
   // Client sessions in the order they happened, with `bytes` just read in hand: a session that
   // ended takes them (and what else its client wrote) before it ends. False when the stream closed.
   bool client_events(Kernel& k, Link& l, std::span<const std::uint8_t>& bytes);
