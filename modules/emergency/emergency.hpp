@@ -48,7 +48,7 @@ class EmergencyModule final : public Process {
   void set_door_loans(bool on) { door_loans_ = on; }
   // The a-priori map's structure, which explains echoes ([emergency] narrow_arcs, docs/SAFETY.md
   // §13 "Narrowing"); nullptr: none. It must outlive the module.
-  void set_known_structure(const safety::KnownStructure* known) { envelope_.set_known_structure(known); }
+  void set_known_structure(safety::KnownStructure* known) { envelope_.set_known_structure(known); }
   // The envelope's grid and pose (tests, figures).
   const safety::RingEnvelope& envelope() const { return envelope_; }
 

@@ -18,11 +18,16 @@ enum class CellState : std::uint8_t {
   free,      // certified free within the age limit
 };
 
-// Static structure the robot knows for sure — the planner's a-priori map ([planner] map_file) —
-// in the odometry frame: where an echo is explained. Implemented by the firmware's glue.
+// Static structure the robot knows for sure — the planner's a-priori map ([planner] map_file) or
+// the place graph's walls — seen from the odometry frame: where an echo is explained. Implemented
+// by the firmware's glue, which places the map in the odometry frame (the localisation's
+// correction, docs/LOCALISATION.md: the odometry drifts from the map, the structure must not).
 class KnownStructure {
  public:
   virtual ~KnownStructure() = default;
+  // Called at the start of each activation that places readings: where the map lies in the
+  // odometry frame now. Bounded work, no allocation.
+  virtual void update() {}
   // Whether the point p (odometry frame, m) lies on known structure (within the map's tolerance).
   virtual bool occupied(const Eigen::Vector2d& p) const = 0;
 };
@@ -98,7 +103,11 @@ class EvidenceGrid {
   // Changes how long a cone narrows an arc (the kernel's tick is known at init), ticks.
   void set_narrow_age(std::uint64_t ticks) { s_.narrow_age = ticks; }
   // The structure that explains echoes (nullptr: none, no narrowing); it must outlive the grid.
-  void set_known_structure(const KnownStructure* known) { known_ = known; }
+  void set_known_structure(KnownStructure* known) { known_ = known; }
+  // Where the known structure lies now (KnownStructure::update), once per activation.
+  void update_structure() {
+    if (known_ != nullptr) known_->update();
+  }
   // Arc cells narrowing left unmarked / echoes whose every point was ruled out (marked whole), counts.
   std::uint64_t narrowed_cells() const { return narrowed_cells_; }
   std::uint64_t unexplained_echoes() const { return unexplained_echoes_; }
@@ -167,7 +176,7 @@ class EvidenceGrid {
   int ox_ = 0;               // global index of the window's first column
   int oy_ = 0;               // global index of the window's first row
   bool placed_ = false;      // the window has been placed around a robot
-  const KnownStructure* known_ = nullptr;  // the a-priori map's structure, or none
+  KnownStructure* known_ = nullptr;  // the a-priori map's structure, or none
   std::uint64_t narrowed_cells_ = 0;      // arc cells left unmarked by narrowing, count
   std::uint64_t unexplained_echoes_ = 0;  // echoes whose every arc point was ruled out (marked whole), count
 };

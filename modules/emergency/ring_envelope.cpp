@@ -100,6 +100,7 @@ void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const Ult
   if (history_.empty()) return;
   now_ = history_.at(tick);
   grid_.follow(now_.p);
+  grid_.update_structure();
   // The new readings: every cone first, then every arc, so an arc is narrowed by what the whole
   // batch saw through (docs/SAFETY.md §13, "Evidence").
   struct Fresh {

@@ -36,7 +36,7 @@ class RingEnvelope final : public EnvelopeJudge {
   EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) override;
 
   // The a-priori map's structure, which explains echoes (narrowing); it must outlive the envelope.
-  void set_known_structure(const KnownStructure* known) { grid_.set_known_structure(known); }
+  void set_known_structure(KnownStructure* known) { grid_.set_known_structure(known); }
   const EvidenceGrid& grid() const { return grid_; }
   const Pose2& pose() const { return now_; }
   const StartBlind& start() const { return start_; }

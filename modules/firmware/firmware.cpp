@@ -255,7 +255,7 @@ std::optional<std::string> Firmware::setup() {
   auto emergency = std::make_unique<EmergencyModule>(bb_, bumpers, cfg_.emergency, cfg_.robot);
   if (prior_map) {
     // The map's walls explain the ring's echoes where they meet them (docs/SAFETY.md §13, "Narrowing").
-    known_ = std::make_unique<PriorMapStructure>(*prior_map);
+    known_ = std::make_unique<PriorMapStructure>(*prior_map, bb_.localisation.reader(), bb_.posture.reader());
     emergency->set_known_structure(known_.get());
   } else if (places_) {
     // No a-priori map, a place graph: the walls it implies (its places' edges but the doors) are
@@ -263,7 +263,7 @@ std::optional<std::string> Firmware::setup() {
     // (docs/PLACES.md, "Walls from the place graph").
     walls_ = std::make_unique<const plan::OccupancyMap>(
         places::wall_raster(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3));
-    known_ = std::make_unique<PriorMapStructure>(*walls_);
+    known_ = std::make_unique<PriorMapStructure>(*walls_, bb_.localisation.reader(), bb_.posture.reader());
     emergency->set_known_structure(known_.get());
   }
   auto executor = std::make_unique<ExecutorModule>(bb_, *drive_, cfg_.robot);

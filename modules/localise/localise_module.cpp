@@ -12,6 +12,7 @@
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 #include "modules/executor/posture_units.hpp"
+#include "modules/localise/map_field.hpp"
 
 namespace robuter {
 namespace {
@@ -52,15 +53,7 @@ bool LocaliseModule::init(Kernel&) {
     return false;
   }
   const auto& g = walls_->geometry();
-  loc::FieldGeometry fg;
-  fg.width = g.width;
-  fg.height = g.height;
-  fg.resolution = g.resolution;
-  fg.origin = Eigen::Vector2d(g.origin.x, g.origin.y);
-  std::vector<std::uint8_t> occupied(walls_->cell_count(), 0);
-  for (std::uint32_t i = 0; i < occupied.size(); ++i)
-    occupied[i] = walls_->state_at(i) == plan::CellState::Occupied ? 1 : 0;
-  field_ = loc::DistanceField(fg, occupied, kFieldReach);
+  field_ = localise::distance_field(*walls_, kFieldReach);
   filter_ = std::make_unique<loc::ParticleFilter>(field_, filter_params(cfg_), cfg_.seed);
   report_.state = LocaliseState::uncertain;  // no pose yet: the first posture gives it
   out_.publish(report_);                     // advertised: XW answers from the start

@@ -2,8 +2,6 @@
 // The map frame (map_frame.hpp): rigid transforms in the plane with Eigen.
 #include "modules/localise/map_frame.hpp"
 
-#include <Eigen/Geometry>
-
 namespace robuter::localise {
 namespace {
 
@@ -30,6 +28,10 @@ Eigen::Isometry2d correction(const Localisation& l) {
 
 bool corrects(const Localisation& l, std::uint32_t odometry_seq) {
   return l.state != LocaliseState::off && l.odometry_seq == odometry_seq;
+}
+
+Eigen::Isometry2d map_from_odometry(const Localisation& l, std::uint32_t odometry_seq) {
+  return corrects(l, odometry_seq) ? correction(l) : Eigen::Isometry2d::Identity();
 }
 
 motion::PostureUnits map_posture(const motion::PostureUnits& p, const Localisation& l, std::uint32_t odometry_seq) {

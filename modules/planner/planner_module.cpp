@@ -467,6 +467,11 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
   }
   follower_.start({legs_.data(), leg_count_});
   state_ = PlannerState::moving;
+  // A new path to the point: its arrival turn is to be made again. The map pose may move during
+  // a turn in place (the localisation's correction): the robot then turned at a point it no
+  // longer is at, drives there again and must face the door there (seen: room-16's door, 13 cm
+  // moved during the turn, then "not facing the door").
+  final_turn_ = false;
 }
 
 void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {

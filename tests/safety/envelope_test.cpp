@@ -91,7 +91,7 @@ class Discs final : public KnownStructure {
 };
 
 // A grid that narrows arcs (cones up to kAge old), explained by `known`.
-EvidenceGrid narrowing_grid(const KnownStructure* known, std::uint64_t age = kAge) {
+EvidenceGrid narrowing_grid(KnownStructure* known, std::uint64_t age = kAge) {
   GridSettings gs;
   gs.narrow_age = age;
   EvidenceGrid g{gs};
@@ -106,10 +106,10 @@ EvidenceGrid narrowing_grid(const KnownStructure* known, std::uint64_t age = kAg
 // goes to the jamb and the rest of the arc only.
 const Vector2d kB{0.0, 0.2};                          // B's transducer
 const SeenCone kA{10, {0.0, 0.0}, 0.0, 2.0};          // A: through the opening
-const Discs kJamb({{on_arc(kB, 1.0, 0.2), 0.03}});    // the jamb, at B's cone's edge
+Discs kJamb({{on_arc(kB, 1.0, 0.2), 0.03}});    // the jamb, at B's cone's edge
 
 // B's reading at `tick` with the grid's cones `seen` (A by default), after A's.
-EvidenceGrid after_b(const KnownStructure* known, std::uint64_t tick = 12, const SeenCone& a = kA,
+EvidenceGrid after_b(KnownStructure* known, std::uint64_t tick = 12, const SeenCone& a = kA,
                      std::uint64_t age = kAge) {
   EvidenceGrid g = narrowing_grid(known, age);
   g.add_reading(a.tick, a.origin, a.direction, a.range, false, true);
@@ -135,9 +135,9 @@ TEST(EvidenceGrid, AnArcExplainedByKnownStructureLosesWhatOtherConesSawThrough) 
 // transducer and be too oblique for its neighbour (seeds 6604 and 9853 of the random sequences
 // touched a box when cones alone narrowed arcs), and something may have stepped in since.
 TEST(EvidenceGrid, AnArcNoKnownStructureExplainsIsMarkedWhole) {
-  const Discs elsewhere({{{5.0, 5.0}, 0.5}});
-  for (const KnownStructure* known : {static_cast<const KnownStructure*>(nullptr),
-                                      static_cast<const KnownStructure*>(&elsewhere)}) {
+  Discs elsewhere({{{5.0, 5.0}, 0.5}});
+  for (KnownStructure* known : {static_cast<KnownStructure*>(nullptr),
+                                      static_cast<KnownStructure*>(&elsewhere)}) {
     const EvidenceGrid g = after_b(known);
     EXPECT_EQ(g.state(on_arc(kB, 1.0, -0.15), 12, kAge), CellState::obstacle);
     EXPECT_EQ(g.narrowed_cells(), 0u);
@@ -170,7 +170,7 @@ TEST(EvidenceGrid, OnlyARecentConeAlongNearlyTheSameLineOfSightRulesAPointOut) {
 TEST(EvidenceGrid, AWallOutsideTheWindowExplainsAnEcho) {
   const Vector2d o(3.0, 0.0);                      // the window holds x < 3.2 m
   const double wall_at = kPi / 2 - 0.218166;       // the cone's right edge
-  const Discs wall({{on_arc(o, 2.0, wall_at), 0.03}});
+  Discs wall({{on_arc(o, 2.0, wall_at), 0.03}});
   EvidenceGrid g = narrowing_grid(&wall);
   g.add_reading(10, o, kPi / 2, 2.0, false, true);
   EXPECT_EQ(g.unexplained_echoes(), 0u);
@@ -187,11 +187,11 @@ TEST(EvidenceGrid, AWallOutsideTheWindowExplainsAnEcho) {
 // too oblique for it) leave their evidence.
 TEST(EvidenceGrid, ANoEchoAlongTheSameLineClearsOnlySoftEvidence) {
   const Vector2d o(0.0, 0.0);
-  const Discs corner({{on_arc(o, 1.5, 0.2), 0.03}});  // a wall corner at the cone's edge
+  Discs corner({{on_arc(o, 1.5, 0.2), 0.03}});  // a wall corner at the cone's edge
   const Vector2d open = on_arc(o, 1.5, -0.1);         // the arc, in the open
   const Vector2d wall = on_arc(o, 1.5, 0.2);
-  for (const KnownStructure* known : {static_cast<const KnownStructure*>(&corner),
-                                      static_cast<const KnownStructure*>(nullptr)}) {
+  for (KnownStructure* known : {static_cast<KnownStructure*>(&corner),
+                                      static_cast<KnownStructure*>(nullptr)}) {
     EvidenceGrid g = narrowing_grid(known);
     g.add_reading(10, o, 0.0, 1.5, false, true);
     ASSERT_EQ(g.state(open, 10, kAge), CellState::obstacle);

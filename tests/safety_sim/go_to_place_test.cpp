@@ -22,6 +22,7 @@
 #include "modules/places/route_table.hpp"
 #include "kernel/log.hpp"
 #include "modules/emergency/emergency.hpp"
+#include "modules/localise/map_frame.hpp"
 #include "modules/planner/planner_module.hpp"
 #include "protocol/codec/vocabulary.hpp"
 #include "tests/safety_sim/support.hpp"
@@ -73,13 +74,25 @@ std::string set_odometry_at(const places::Vec2& c) {
 
 // The firmware on the building floor with the robot at a place's centre, heading east.
 struct OnTheFloor {
-  OnTheFloor(std::size_t at, const Config& cfg)
-      : centre(floor_graph().places()[at].centre), world(floor_starting_at(centre)), fw(world.path(), cfg, noise()) {}
-  // Why: experiments only (ROBUTER_XQ_SONAR_NOISE=SEED): the simulator's sonar noise on, seeded.
-  static hal::SimOptions noise() {
+  OnTheFloor(std::size_t at, const Config& cfg, std::uint64_t odometry_noise_seed = 0)
+      : centre(floor_graph().places()[at].centre),
+        world(floor_starting_at(centre)),
+        fw(world.path(), cfg, noise(odometry_noise_seed)) {}
+  // Why: experiments and make bench only (ROBUTER_XQ_SONAR_NOISE=SEED, ROBUTER_XQ_ODOMETRY_NOISE=SEED):
+  // the simulator's sonar or odometry noise on, seeded.
+  // A test's own odometry noise: `odometry_noise_seed` > 0.
+  static hal::SimOptions noise(std::uint64_t odometry_noise_seed) {
     hal::SimOptions o;
+    if (odometry_noise_seed > 0) {
+      o.odometry_noise = true;
+      o.seed = odometry_noise_seed;
+    }
     if (const char* seed = std::getenv("ROBUTER_XQ_SONAR_NOISE"); seed != nullptr && *seed != 0) {
       o.sonar_noise = true;
+      o.seed = std::strtoull(seed, nullptr, 10);
+    }
+    if (const char* seed = std::getenv("ROBUTER_XQ_ODOMETRY_NOISE"); seed != nullptr && *seed != 0) {
+      o.odometry_noise = true;
       o.seed = std::strtoull(seed, nullptr, 10);
     }
     return o;
@@ -106,10 +119,10 @@ void expect_reached_in(const PlaceRun& r, const char* place) {
 }
 
 // Why: the robot started at `from`'s centre (odometry = the floor's frame), then XQ to `to`.
-PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& cfg) {
+PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& cfg, std::uint64_t odometry_noise_seed = 0) {
   const places::PlaceGraph& g = floor_graph();
   PlaceRun out;
-  OnTheFloor floor(from, cfg);
+  OnTheFloor floor(from, cfg, odometry_noise_seed);
   SimFirmware& fw = floor.fw;
   EXPECT_TRUE(fw.ok()) << fw.error();
   if (!fw.ok()) return out;
@@ -122,12 +135,22 @@ PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& 
   const double t0 = fw.seconds();
   const bool logs = std::getenv("ROBUTER_XQ_LOG") != nullptr;  // the planner's log, for experiments
   if (logs) log::set_level(log::Level::info);
+  const bool trace = std::getenv("ROBUTER_XQ_TRACE") != nullptr && cfg.localise.enabled;
   bool was_protective = false;  // the last tick's protective stop (logs only)
   for (int i = 0; i < max_ticks; ++i) {
     fw.step();
     if (logs && i % 50 == 0) log::flush();
     // An operator's client polls (XP every 10 s): a link silent for 3 min trips (comm_limit_ticks).
     if (i % 1000 == 999) (void)fw.ask("XP");
+    if (trace && i % (std::getenv("ROBUTER_XQ_TRACE")[0] == '2' ? 10 : 100) == 0) {  // ROBUTER_XQ_TRACE=1: truth, odometry, the localisation's estimate
+      const auto& t = fw.sim().robot().pose();
+      const auto& o = fw.sim().robot().odometry();
+      const motion::PostureUnits m =
+          localise::map_posture(fw.bb().posture.reader().peek(), fw.bb().localisation.reader().peek());
+      std::printf("t %.1f truth %.3f %.3f %.1f odometry %.3f %.3f %.1f map %.3f %.3f %.1f %s\n", fw.seconds(), t.x, t.y,
+                  t.theta * 57.29578, o.x, o.y, o.theta * 57.29578, m.x * 1e-4, m.y * 1e-4, m.theta * 1e-2,
+                  fw.ask("XW").value_or("-").c_str());
+    }
     if (logs) {  // where each protective stop starts
       const bool now = fw.bb().emergency.reader().peek().protective;
       if (now && !was_protective) {
@@ -137,12 +160,13 @@ PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& 
           if (auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*row).process)) {
             narrowed = static_cast<long>(em->envelope().grid().narrowed_cells());
             unexplained = static_cast<long>(em->envelope().grid().unexplained_echoes());
-            // The obstacle evidence within 1.2 m ahead of the robot or behind it (odometry = world here), 2.5 cm apart.
+            // The obstacle evidence within 1.2 m ahead of the robot or behind it (the grid is in the odometry frame), 2.5 cm apart.
             const auto& grid = em->envelope().grid();
+            const auto& op = fw.sim().robot().odometry();
             for (double ahead = -1.2; ahead <= 1.2; ahead += 0.025)
               for (double side = -0.6; side <= 0.6; side += 0.025) {
-                const Eigen::Vector2d q(rp.x + ahead * std::cos(rp.theta) - side * std::sin(rp.theta),
-                                        rp.y + ahead * std::sin(rp.theta) + side * std::cos(rp.theta));
+                const Eigen::Vector2d q(op.x + ahead * std::cos(op.theta) - side * std::sin(op.theta),
+                                        op.y + ahead * std::sin(op.theta) + side * std::cos(op.theta));
                 if (grid.state(q, fw.kernel().tick(), 1000000) == safety::CellState::obstacle)
                   std::printf("  evidence at (%.3f, %.3f): ahead %.3f side %.3f\n", q.x(), q.y(), ahead, side);
               }
@@ -155,6 +179,7 @@ PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& 
     out.state = fw.bb().planner_status.reader().peek().state;
     if (i > 50 && !navigating(out.state)) break;
   }
+  if (logs) log::flush();
   const auto& robot = fw.sim().robot();
   const PlannerStatus& ps = fw.bb().planner_status.reader().peek();
   const EmergencyState& e = fw.bb().emergency.reader().peek();
@@ -388,6 +413,31 @@ TEST(GoToPlace, OutOfARoomAndUpTheCorridorToAPlace30mAway) {
   EXPECT_EQ(r.contacts, 0u);
 }
 
+// Why: issue #18's routes (make bench: tools/bench/81-localise-firmware.sh): one of #17's ten with
+// the simulator's odometry noise on (seeded as the bench does: the route's number) and the
+// localisation on the place graph's walls, the door crossing on.
+PlaceRun localised_route(const char* from, const char* to, std::uint64_t seed) {
+  Config cfg = floor_config(true);
+  cfg.localise.enabled = true;
+  return go_with(place(from), place(to), 80'000, cfg, seed);
+}
+
+// Why: the first route. Without the localisation the odometry is 0.33 m off at room-16's door and
+// the crossing starts beside the opening (the route ends on the bumper). With it, the map pose
+// moved 13 cm while the robot turned to face the door; the planner drove back to the point and
+// had spent its arrival turn: "not facing the door" (fails without PlannerModule's re-armed turn).
+TEST(GoToPlace, WithOdometryNoiseTheLocalisedRouteReachesItsGoal) {
+  const PlaceRun r = localised_route("room-16", "corridor-ew-1", 1);
+  expect_reached_in(r, "corridor-ew-1");
+  EXPECT_EQ(r.crossings, 1u);
+}
+
+// Why: the sixth route: with the place graph's walls placed on the drifting odometry, not on the
+// map pose, the envelope's protective stops ended it `blocked` in corridor-a.
+TEST(GoToPlace, WithOdometryNoiseTheSafetyCoresWallsFollowTheMapPose) {
+  expect_reached_in(localised_route("room-13", "corridor-a-1", 6), "corridor-a-1");
+}
+
 // Why: one of make bench's ten acceptance routes starts here (seed 5: corridor-b-4 -> room-03):
 // across corridor-b-4 (2.10 m wide), facing east, with room-13's 1.00 m door behind the robot. The
 // front corners turn on 0.778 m, 0.272 m from both walls; the turn layers (the body square-grown
@@ -577,7 +627,10 @@ TEST(GoToPlace, DISABLED_Named) {  // --gtest_also_run_disabled_tests
   const char* from = std::getenv("ROBUTER_XQ_FROM");
   const char* to = std::getenv("ROBUTER_XQ_TO");
   ASSERT_TRUE(from != nullptr && to != nullptr) << "ROBUTER_XQ_FROM and ROBUTER_XQ_TO name the places";
-  const PlaceRun r = go(place(from), place(to), 400'000, std::getenv("ROBUTER_XQ_CROSS") != nullptr);
+  Config cfg = floor_config(std::getenv("ROBUTER_XQ_CROSS") != nullptr);
+  const char* localise = std::getenv("ROBUTER_XQ_LOCALISE");  // the map pose from the localisation (#18)
+  cfg.localise.enabled = localise != nullptr && *localise != 0;
+  const PlaceRun r = go_with(place(from), place(to), 400'000, cfg);
   EXPECT_EQ(r.state, PlannerState::reached);
 }
 

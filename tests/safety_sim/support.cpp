@@ -210,17 +210,24 @@ void SafetyMonitor::check() {
                              std::to_string(c.right) + (c.stop ? " (stop)" : ""));
   const bool us_on = (e.enabled & kDetectUltrasonic) != 0;
   const auto& robot = fw.sim().robot();
+  if (robot.bumper() && !touching_) touch_began_us_on_ = us_on;
+  touching_ = robot.bumper();
+  // A contact is the ring's when it began with the detection on, or when the drive still moves
+  // once the detection is back on.
+  const bool rings = touch_began_us_on_ || !w.zero();
   if (us_on) {
     ++us_on_ticks;
     sim::Vec2 at;
     const double clear = body_clearance_near(fw.sim().world(), geom_, robot.pose(), kClearanceReach, scratch_, &at);
     min_clearance_us_on = std::min(min_clearance_us_on, clear);
-    if (robot.bumper() && contact_us_on == 0) {
+    if (robot.bumper() && !rings) {
+      ++contact_us_off;  // began with the detection lowered, still touching after it came back
+    } else if (robot.bumper() && contact_us_on == 0) {
       contact_motion = last_moving_;
       contact_while_stopping = w.zero();
       contact_point = at;
     }
-    if (robot.bumper())
+    if (robot.bumper() && rings)
       violation(contact_us_on, "tick " + std::to_string(tick) + ": contact with the ultrasonic detection on at (" +
                                    std::to_string(robot.pose().x) + ", " + std::to_string(robot.pose().y) + ", " +
                                    std::to_string(robot.pose().theta) + ")");

@@ -101,8 +101,12 @@ class SafetyMonitor {
   std::uint64_t us_on_ticks = 0;         // ticks with the ultrasonic detection on
   std::uint64_t latched_moving = 0;      // violations: non-zero speed while latched
   std::uint64_t ungranted = 0;           // violations: non-zero speed other than the granted one
-  std::uint64_t contact_us_on = 0;       // violations: bumper pressed / body touching with ultrasonic on
-  std::uint64_t contact_us_off = 0;      // contacts while the ultrasonic detection was off (allowed)
+  std::uint64_t contact_us_on = 0;       // violations: ticks of a contact (bumper pressed / body touching)
+                                         // with the ultrasonic detection on that began with it on, or
+                                         // with the drive still moving
+  std::uint64_t contact_us_off = 0;      // ticks of contacts that began with it off (allowed: the door
+                                         // crossing lowers it; the bumper's trip then restores it while
+                                         // the body still touches, which is not a contact the ring let happen)
   std::uint64_t longest_disagreement = 0;  // longest run of ticks with the drive not at the gate's verdict
   double min_clearance_us_on = 1e9;      // smallest true clearance seen with ultrasonic on, m
   std::string first_violation;           // description of the first violation (empty: none)
@@ -121,6 +125,8 @@ class SafetyMonitor {
   sim::RobotGeometry geom_{};
   sim::GridScratch scratch_;             // grid queries of the clearance
   Wheels last_moving_{};                 // the last non-zero speeds at the drive
+  bool touching_ = false;                // the bumper was pressed at the last tick
+  bool touch_began_us_on_ = false;       // the ultrasonic detection was on when the contact began
   std::uint64_t disagreement_ = 0;       // current run of ticks with the drive not at the verdict
 };
 

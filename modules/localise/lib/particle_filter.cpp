@@ -157,7 +157,10 @@ void ParticleFilter::resample() {
     acc += particles_[static_cast<std::size_t>(i)].weight;
     cdf_[static_cast<std::size_t>(i)] = acc;
   }
-  const double inject = w_slow_ > 0.0 ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
+  // Augmented MCL's share of random particles, only past inject_above: a dip of the likelihood
+  // where the ring hears little (a room whose walls are out of reach) is no kidnapping.
+  const double share = w_slow_ > 0.0 ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
+  const double inject = share > params_.inject_above ? share : 0.0;
   std::uniform_real_distribution<double> u(0.0, 1.0);
   bins_.clear();
   injected_ = 0;

@@ -33,6 +33,8 @@ struct FilterParams {
   double inside_weight = 0.02;     // the likelihood factor of such a pose
   double cluster_cell = 1.0;       // the estimate's cells, m: it is the mean of the densest 3 x 3
                                    // cells' particles, not of the whole cloud
+  double inject_above = 0.5;       // augmented MCL injects only when its share 1 - w_fast / w_slow
+                                   // is above this (docs/LOCALISATION.md, "Recovery")
   double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
                                    // readings of one step are not independent (AMCL's answer is
                                    // to use fewer beams; this keeps them all and flattens each)
