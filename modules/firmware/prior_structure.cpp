@@ -3,6 +3,9 @@
 #include "modules/firmware/prior_structure.hpp"
 
 #include <algorithm>
+#include <numbers>
+#include <cstdio>
+#include <cstdlib>
 
 #include "modules/localise/map_field.hpp"
 #include "modules/localise/map_frame.hpp"
@@ -19,7 +22,13 @@ void PriorMapStructure::update() {
   const Localisation& l = localisation_.peek();
   const std::uint32_t seq = posture_.peek().odometry_seq;
   to_map_ = localise::map_from_odometry(l, seq);
-  slack_ = localise::corrects(l, seq) ? std::min(kMaxSlack, 0.5 * map_.resolution() + 2.0 * l.major_mm * 1e-3) : 0.0;
+  const Posture& p = posture_.peek();
+  robot_ = Eigen::Vector2d(p.x * 1e-4, p.y * 1e-4);
+  const bool localised = localise::corrects(l, seq);
+  slack_ = localised ? 0.5 * map_.resolution() + 2.0 * l.major_mm * 1e-3 : 0.0;
+  turn_slack_ = localised ? 2.0 * l.sigma_theta * 1e-2 * std::numbers::pi / 180.0 : 0.0;
+  if (std::getenv("TMP_ARC") && posture_.peek().tick >= 37490 && posture_.peek().tick <= 37500)
+    std::printf("structure: slack %.3f major %d sigma_theta %d\n", slack_, l.major_mm, l.sigma_theta);
 }
 
 bool PriorMapStructure::occupied(const Eigen::Vector2d& p) const {
@@ -30,7 +39,9 @@ bool PriorMapStructure::occupied(const Eigen::Vector2d& p) const {
     const plan::Cell c = map_.cell_of({m.x() + d.x(), m.y() + d.y()});
     if (map_.contains(c) && map_.state(c) == plan::CellState::Occupied) return true;
   }
-  return slack_ > 0.0 && field_.at(m) <= slack_;
+  if (slack_ <= 0.0) return false;
+  // A heading error moves a wall at distance d from the robot by d times it.
+  return field_.at(m) <= std::min(kMaxSlack, slack_ + turn_slack_ * (p - robot_).norm());
 }
 
 }  // namespace robuter

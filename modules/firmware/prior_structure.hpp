@@ -17,10 +17,11 @@ namespace robuter {
 // frame; the safety core asks in the odometry frame. The two are one frame unless a
 // localisation runs ([localise] enabled): then the map is placed by its correction
 // (localise::map_from_odometry, read at each update()), so that the odometry's drift does not
-// move the walls, and a point is on structure within the estimate's uncertainty too (twice its
-// 1-sigma ellipse's semi-major axis, at most kMaxSlack): a map placed by an estimate a few
-// centimetres off would explain no echo at the quarter cell the exact frame allows
-// (docs/LOCALISATION.md, "The safety core's structure").
+// move the walls, and a point is on structure within the estimate's uncertainty too: half a map
+// cell, plus twice its 1-sigma ellipse's semi-major axis, plus twice its heading's sigma times the
+// point's distance from the robot, at most kMaxSlack. A map placed by an estimate a few
+// centimetres and a degree off explains no echo at the quarter cell the exact frame allows (a
+// jamb's corner 2.48 m away at a cone's edge lay 12 cm from the arc: docs/SAFETY.md §13).
 class PriorMapStructure final : public safety::KnownStructure {
  public:
   PriorMapStructure(plan::OccupancyMap map, Reader<Localisation> localisation, Reader<Posture> posture);
@@ -29,8 +30,7 @@ class PriorMapStructure final : public safety::KnownStructure {
   // either side of it), or within the slack of one while a localisation places the map.
   bool occupied(const Eigen::Vector2d& p) const override;
 
-  static constexpr double kMaxSlack = 0.10;  // m: the most the estimate's uncertainty widens the test
-  double slack() const { return slack_; }    // m, as of the last update()
+  static constexpr double kMaxSlack = 0.15;  // m: the most the estimate's uncertainty widens the test
 
  private:
   plan::OccupancyMap map_;                                       // the a-priori map, as loaded
@@ -38,7 +38,9 @@ class PriorMapStructure final : public safety::KnownStructure {
   Reader<Localisation> localisation_;                            // the map frame's correction
   Reader<Posture> posture_;                                      // which odometry it corrects
   Eigen::Isometry2d to_map_ = Eigen::Isometry2d::Identity();     // map ← odometry, at the last update()
-  double slack_ = 0.0;                                           // m, 0 while the frames are one
+  double slack_ = 0.0;                                           // m at the robot, 0 while the frames are one
+  Eigen::Vector2d robot_ = Eigen::Vector2d::Zero();              // the axle, odometry frame, m, at the last update()
+  double turn_slack_ = 0.0;                                      // m more per m from the robot
 };
 
 }  // namespace robuter

@@ -12,6 +12,7 @@
 
 #include "modules/firmware/sim_firmware.hpp"
 #include "modules/localise/state_file.hpp"
+#include "tests/localise/floor_tour.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace robuter::test {
@@ -131,6 +132,26 @@ TEST(LocaliseModule, TracksAlongTheCorridorWhereAPoorOdometryDrifts) {
   EXPECT_LT(worst_heading, 4.0 * M_PI / 180.0);
   EXPECT_GT(odometry, 0.3);
   EXPECT_EQ(where(fw).state, "tracking");
+}
+
+// Issue #18's tour (make bench: tools/bench/81-localise-firmware.sh, 30 minutes): an operator drives
+// the floor's corridor loop, the simulator's odometry noise on (the ring's off: its spurious echoes
+// are issue #19's), the safety core's walls placed by the map pose. Past corridor-b-4's door
+// (≈ 365 s), a jamb's echo at a cone's edge 2.48 m away lay 12 cm from the jamb as a map pose
+// 1.6° off places it: unexplained, its whole arc became hard evidence across the corridor and the
+// robot stopped there for good (108 m driven in 30 minutes). With the heading's share in the
+// structure's slack it goes on (532 m, map pose p95 70-75 mm and 1.3°).
+TEST(LocaliseModule, TheOperatorsTourGoesOnPastTheDoorsWithTheWallsOnTheMapPose) {
+  FloorTourSpec spec;
+  spec.seconds = 420.0;
+  spec.sonar_noise = false;
+  const FloorTourResult r = run_floor_tour(spec);
+  ASSERT_TRUE(r.ok);
+  EXPECT_GT(r.driven, 115.0) << "stopped for good (108 m: corridor-b-4's door)";
+  EXPECT_EQ(r.protective_stops, 0u);
+  EXPECT_LT(r.map_p95, 0.10);
+  EXPECT_LT(r.map_heading_p95, 3.0 * M_PI / 180.0);
+  EXPECT_GT(r.odometry_p95, 3.0 * r.map_p95) << "the odometry alone drifts far more";
 }
 
 // [localise] state_file: the map pose a run leaves is where the next starts (its odometry at 0);

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The building floor's corridor loop driven through the whole firmware by an operator's client
+// (AM lines steered by the true pose), [localise] enabled: the map pose's error against the truth.
+#pragma once
+
+#include <cstdint>
+
+namespace robuter::test {
+
+// How the tour runs.
+struct FloorTourSpec {
+  double seconds = 60.0;          // robot time driven after the start, s
+  std::uint64_t seed = 1;         // the simulator's noise
+  bool sonar_noise = true;        // the ring's noise on (the odometry's always is)
+  bool kidnap = false;            // carried 3 m on along the loop after 60 s, the firmware not told
+  bool trace = false;             // print the truth, the error and the localisation every second
+};
+
+// What it measured (errors every second of the tour; kidnap: from the carry on).
+struct FloorTourResult {
+  bool ok = false;                    // the firmware started
+  double driven = 0.0;                // m of the true path
+  double map_p95 = 0.0;               // m, the map pose's position error, 95th percentile
+  double map_heading_p95 = 0.0;       // rad
+  double map_worst = 0.0;             // m
+  double map_heading_worst = 0.0;     // rad
+  double odometry_p95 = 0.0;          // m, the odometry's
+  double odometry_heading_p95 = 0.0;  // rad
+  double found_after = -1.0;          // kidnap: s of driving until the map pose was within 0.2 m and
+                                      // 10° for 2 s running (-1: not found)
+  std::uint32_t protective_stops = 0; // the envelope's
+  std::uint32_t trips = 0;            // emergencies
+  std::uint32_t run_us_max = 0;       // the localisation's longest activation, µs CPU
+};
+
+FloorTourResult run_floor_tour(const FloorTourSpec& spec);
+
+}  // namespace robuter::test
