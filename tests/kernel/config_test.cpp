@@ -89,6 +89,17 @@ TEST(Config, OutOfRangeValueIsNamed) {
             "robot.toml:2: key 'sonar.moving_timeout_ms': 2000 is out of range 0..1000");
 }
 
+// The localisation's particle counts are bounded at the 2,000 whose activations were measured: a
+// step's motion and resampling run whole in one activation (docs/LOCALISATION.md, "The module").
+TEST(Config, TheLocalisationsParticlesAreBoundedAtWhatWasMeasured) {
+  EXPECT_EQ(error_of("[localise]\nmax_particles = 2000\n"), "");
+  EXPECT_EQ(error_of("[localise]\nmax_particles = 2001\n"),
+            "robot.toml:2: key 'localise.max_particles': 2001 is out of range 10..2000");
+  EXPECT_EQ(error_of("[localise]\nparticles_per_run = 100000\n"),
+            "robot.toml:2: key 'localise.particles_per_run': 100000 is out of range 10..2000");
+  EXPECT_EQ(error_of("[localise]\nmin_particles = 5\n"), "robot.toml:2: key 'localise.min_particles': 5 is out of range 10..2000");
+}
+
 // The planner's map limits (docs/CONFIG.md): 512 x 512 cells for the rectangle, 1 M for a disc.
 TEST(Config, APlannerMapTooLargeIsRefusedOnItsWidth) {
   EXPECT_EQ(error_of("[planner]\nmap_width_mm = 25600\nmap_height_mm = 25600\n"), "");
