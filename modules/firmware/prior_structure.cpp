@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <numbers>
-#include <cstdio>
-#include <cstdlib>
 
 #include "modules/localise/map_field.hpp"
 #include "modules/localise/map_frame.hpp"
@@ -20,15 +18,12 @@ PriorMapStructure::PriorMapStructure(plan::OccupancyMap map, Reader<Localisation
 
 void PriorMapStructure::update() {
   const Localisation& l = localisation_.peek();
-  const std::uint32_t seq = posture_.peek().odometry_seq;
-  to_map_ = localise::map_from_odometry(l, seq);
   const Posture& p = posture_.peek();
+  to_map_ = localise::map_from_odometry(l, p.odometry_seq);
   robot_ = Eigen::Vector2d(p.x * 1e-4, p.y * 1e-4);
-  const bool localised = localise::corrects(l, seq);
+  const bool localised = localise::corrects(l, p.odometry_seq);
   slack_ = localised ? 0.5 * map_.resolution() + 2.0 * l.major_mm * 1e-3 : 0.0;
   turn_slack_ = localised ? 2.0 * l.sigma_theta * 1e-2 * std::numbers::pi / 180.0 : 0.0;
-  if (std::getenv("TMP_ARC") && posture_.peek().tick >= 37490 && posture_.peek().tick <= 37500)
-    std::printf("structure: slack %.3f major %d sigma_theta %d\n", slack_, l.major_mm, l.sigma_theta);
 }
 
 bool PriorMapStructure::occupied(const Eigen::Vector2d& p) const {
