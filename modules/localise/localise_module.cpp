@@ -17,10 +17,6 @@
 namespace robuter {
 namespace {
 
-// The estimate corrects the map frame only as one compact cluster (docs/LOCALISATION.md, "States").
-constexpr double kTrackingWeight = 0.6;    // at least this share of the weight in the cluster
-constexpr double kTrackingMajor = 0.5;     // its 1-sigma ellipse's semi-major axis, m, at most
-constexpr double kTrackingHeading = 0.26;  // its heading's standard deviation, rad (15°), at most
 constexpr double kNoJumpLimit = 1e9;       // PoseHistory::add's jump test, off (m, rad per tick)
 constexpr double kFieldReach = 2.0;        // the distance field's cap, m (beyond: "far from any wall")
 constexpr std::uint64_t kKeepEveryTicks = 100;  // the state file is written at most once a second
@@ -182,9 +178,8 @@ void LocaliseModule::publish(std::uint64_t tick, bool stepped) {
   report_.cluster_pct = static_cast<std::uint8_t>(std::lround(std::clamp(e.cluster_weight, 0.0, 1.0) * 100.0));
   report_.particles = static_cast<std::uint16_t>(std::clamp(e.particles, 0, 65535));
   report_.tick = tick;
-  const bool compact = e.cluster_weight >= kTrackingWeight && std::sqrt(values(1)) <= kTrackingMajor &&
-                       sigma_theta <= kTrackingHeading;
-  if (compact) {
+  // The estimate corrects the map frame only as one compact cluster (docs/LOCALISATION.md, "States").
+  if (e.compact) {
     searching_ = false;
     report_.state = LocaliseState::tracking;
     if (stepped) {  // the estimate is the map pose of the odometry the step began at

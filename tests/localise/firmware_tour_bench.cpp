@@ -6,7 +6,10 @@
 // `kidnap`, how long the map pose took to find the robot carried 3 m along its corridor.
 //
 //   robuter_localise_firmware_bench tour SECONDS SEED
-//   robuter_localise_firmware_bench kidnap SECONDS SEED   (carried at 60 s; SECONDS after it at most)
+//   robuter_localise_firmware_bench kidnap SECONDS SEED   (SECONDS after the carry at most)
+// The kidnapping's place is seeded: carried at 60 + 41 (SEED - 1) s into the tour (the first lap's
+// first two thirds: corridors, crossings, doors), back along the loop for an even SEED, on for an
+// odd one; ROBUTER_TOUR_KIDNAP_AT=S carries it at S s instead (60: the first crossing).
 // ROBUTER_TOUR_IDEAL_SONAR=1: the ring without noise (the odometry's stays); ROBUTER_TOUR_TRACE=1:
 // the truth, the map pose's error and the localisation's report every second.
 #include <cmath>
@@ -27,12 +30,17 @@ int main(int argc, char** argv) {
   spec.seed = std::strtoull(argv[3], nullptr, 10);
   spec.sonar_noise = std::getenv("ROBUTER_TOUR_IDEAL_SONAR") == nullptr;
   spec.trace = std::getenv("ROBUTER_TOUR_TRACE") != nullptr;
+  spec.kidnap_at = 60.0 + 41.0 * static_cast<double>(spec.seed - 1);
+  spec.kidnap_back = spec.seed % 2 == 0;
+  if (const char* at = std::getenv("ROBUTER_TOUR_KIDNAP_AT")) spec.kidnap_at = std::atof(at);
   const robuter::test::FloorTourResult r = robuter::test::run_floor_tour(spec);
   if (!r.ok) return 1;
   const double deg = 180.0 / M_PI;
   if (spec.kidnap) {
-    std::printf("kidnap seed %llu: found after %.1f s (limit %.0f s); protective stops %u, trips %u, worst activation %u us\n",
-                static_cast<unsigned long long>(spec.seed), r.found_after, spec.seconds, r.protective_stops, r.trips, r.run_us_max);
+    std::printf("kidnap seed %llu: carried 3 m %s at %.0f s from (%.1f, %.1f): found after %.1f s (limit %.0f s); "
+                "protective stops %u, trips %u, worst activation %u us\n",
+                static_cast<unsigned long long>(spec.seed), spec.kidnap_back ? "back" : "on", r.kidnapped_at, r.kidnap_x, r.kidnap_y,
+                r.found_after, spec.seconds, r.protective_stops, r.trips, r.run_us_max);
     return 0;
   }
   std::printf("tour seed %llu: %.0f s, %.0f m driven; map pose p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; "

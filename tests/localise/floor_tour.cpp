@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "hal/sim/geometry.hpp"
+#include "hal/sim/world.hpp"
 #include "modules/firmware/sim_firmware.hpp"
 #include "modules/localise/map_frame.hpp"
 
@@ -44,6 +46,15 @@ Errors odometry_error(SimFirmware& fw) {
   const auto& o = fw.sim().robot().odometry();
   const auto& t = fw.sim().robot().pose();
   return {std::hypot(o.x - t.x, o.y - t.y), std::abs(wrap(o.theta - t.theta))};
+}
+
+constexpr double kKidnapClearance = 0.6;  // m: a kidnapping puts the robot this clear of every wall
+
+// The distance from p to the nearest surface of the world, m.
+double clearance(const sim::World& world, const Eigen::Vector2d& p) {
+  double best = 1e9;
+  for (const auto& s : world.segments()) best = std::min(best, sim::point_segment_distance(p, s.a, s.b));
+  return world.obstacle_containing(p) >= 0 ? 0.0 : best;
 }
 
 // An operator's client: every 0.2 s an AM towards the next point of the loop, by the true pose.
@@ -106,23 +117,34 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
   (void)fw.ask("ASN");
   Driver driver(fw);
   std::vector<double> pos, head, odo_pos, odo_head;
-  const int kidnap_tick = 6000;  // 60 s
+  const int kidnap_tick = static_cast<int>(std::lround(spec.kidnap_at * 100.0));
+  int kidnapped = -1;  // the tick the robot was carried at
   int found_after = -1, good = 0;
-  const int ticks = static_cast<int>(spec.seconds * 100.0) + (spec.kidnap ? kidnap_tick : 0);
+  const int ticks = static_cast<int>(spec.seconds * 100.0) + (spec.kidnap ? kidnap_tick + 6000 : 0);
   for (int i = 0; i < ticks; ++i) {
     driver.tick(i);
     fw.step();
-    if (spec.kidnap && i == kidnap_tick) {  // carried 3 m on along the loop; the odometry is not told
+    if (spec.kidnap && kidnapped < 0 && i >= kidnap_tick && i % 100 == 0) {
+      // Carried 3 m along the loop (back or on) to a spot clear of every wall; the odometry is not told.
       auto& robot = fw.sim().robot();
-      const auto odo = robot.odometry();
-      const auto wheels = robot.commanded();  // place() forgets the drive's command; the drive does not resend it
       auto p = robot.pose();
       const Eigen::Vector2d d = driver.heading_to_next();
-      p.x += 3.0 * d.x();
-      p.y += 3.0 * d.y();
-      robot.place(p);
-      robot.set_odometry(odo);
-      robot.command(wheels);
+      for (const double sign : {spec.kidnap_back ? -1.0 : 1.0, spec.kidnap_back ? 1.0 : -1.0}) {
+        const Eigen::Vector2d to(p.x + sign * 3.0 * d.x(), p.y + sign * 3.0 * d.y());
+        if (clearance(robot.world(), to) < kKidnapClearance) continue;
+        out.kidnapped_at = i / 100.0;
+        out.kidnap_x = p.x;
+        out.kidnap_y = p.y;
+        const auto odo = robot.odometry();
+        const auto wheels = robot.commanded();  // place() forgets the drive's command; the drive does not resend it
+        p.x = to.x();
+        p.y = to.y();
+        robot.place(p);
+        robot.set_odometry(odo);
+        robot.command(wheels);
+        kidnapped = i;
+        break;
+      }
     }
     if (i % 20 != 0) continue;
     const Errors m = map_error(fw);
@@ -134,9 +156,10 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
                   l.major_mm, static_cast<unsigned>(l.cluster_pct), static_cast<unsigned>(l.particles));
     }
     if (spec.kidnap) {
-      if (i <= kidnap_tick || found_after >= 0) continue;
+      if (kidnapped < 0 || i <= kidnapped || found_after >= 0) continue;
+      if (i > kidnapped + static_cast<int>(spec.seconds * 100.0)) break;
       good = m.position <= 0.2 && m.heading <= 10.0 * M_PI / 180.0 ? good + 1 : 0;
-      if (good >= 10) found_after = i - kidnap_tick - 9 * 20;
+      if (good >= 10) found_after = i - kidnapped - 9 * 20;
       continue;
     }
     if (i % 100 != 0) continue;

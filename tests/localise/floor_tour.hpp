@@ -12,7 +12,9 @@ struct FloorTourSpec {
   double seconds = 60.0;          // robot time driven after the start, s
   std::uint64_t seed = 1;         // the simulator's noise
   bool sonar_noise = true;        // the ring's noise on (the odometry's always is)
-  bool kidnap = false;            // carried 3 m on along the loop after 60 s, the firmware not told
+  bool kidnap = false;            // carried 3 m along the loop, the firmware not told
+  double kidnap_at = 60.0;        // s into the tour (the first second after it with a clear spot)
+  bool kidnap_back = false;       // carried back along the loop, not on (on, where back is no clear spot)
   bool trace = false;             // print the truth, the error and the localisation every second
 };
 
@@ -31,6 +33,9 @@ struct FloorTourResult {
   std::uint32_t protective_stops = 0; // the envelope's
   std::uint32_t trips = 0;            // emergencies
   std::uint32_t run_us_max = 0;       // the localisation's longest activation, µs CPU
+  double kidnapped_at = -1.0;         // kidnap: s into the tour it happened (-1: no clear spot)
+  double kidnap_x = 0.0;              // and where the robot was carried from, m
+  double kidnap_y = 0.0;
 };
 
 FloorTourResult run_floor_tour(const FloorTourSpec& spec);

@@ -5,8 +5,9 @@
 #    without and with [localise] enabled (one repeat each: the ends, not the activations);
 # 2. the building floor's corridor loop driven by an operator's client for 30 minutes, odometry and
 #    sonar noise on, then the sonar's off: the map pose's error next to the odometry's;
-# 3. ten kidnappings: carried 3 m on along the loop after 60 s, not told; found = the map pose
-#    within 0.2 m and 10° for 2 s running, within 30 s.
+# 3. ten kidnappings at seeded places: carried 3 m along the loop (back for an even seed, on for
+#    an odd one) at 60 + 41 (seed - 1) s, not told; found = the map pose within 0.2 m and 10° for
+#    2 s running, within 30 s of the carry.
 # ROBUTER_BENCH_LOCALISE_TOUR_SECONDS (1800), ROBUTER_BENCH_LOCALISE_KIDNAPS (10).
 set -uo pipefail
 bin=${ROBUTER_BIN:-build/bin}

@@ -4,9 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
+
 namespace robuter::loc {
+namespace {
+constexpr int kNearbyDraws = 32;  // tries for a free pose near the anchor before drawing from the set
+}  // namespace
 
 ParticleFilter::ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed)
     : field_(field), params_(params), rng_(seed), bins_(std::max(1, params.max_particles)),
@@ -36,7 +42,34 @@ void ParticleFilter::set_pose(const Pose& mean, const Eigen::Vector3d& sigma) {
     p.weight = 1.0 / count_;
   }
   w_slow_ = w_fast_ = 0.0;
+  anchor_ = Pose(mean.x(), mean.y(), wrap_angle(mean.z()));
+  since_anchor_ = 0.0;
   update_estimate();
+}
+
+double ParticleFilter::recovery_radius() const {
+  return params_.recover_within + params_.recover_growth * since_anchor_;
+}
+
+bool ParticleFilter::random_nearby_pose(Pose& out) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto& g = field_.geometry();
+  const double r = recovery_radius();
+  for (int k = 0; k < kNearbyDraws; ++k) {
+    const double d = r * std::sqrt(u(rng_)), a = 2.0 * std::numbers::pi * u(rng_);
+    const Eigen::Vector2d p(anchor_.x() + d * std::cos(a), anchor_.y() + d * std::sin(a));
+    const Eigen::Vector2d c = (p - g.origin) / g.resolution;
+    if (!(c.x() >= 0.0 && c.y() >= 0.0 && c.x() < g.width && c.y() < g.height)) continue;
+    if (field_.at(p) < params_.body_clearance) continue;
+    // Most about the estimate's heading (a kidnapping carries the robot more than it turns it:
+    // the cloud's heading is the best guess even when its place is lost); the rest any heading.
+    const double heading = u(rng_) < params_.recover_heading_share
+                               ? estimate_.pose.z() + params_.recover_heading_sigma * std::normal_distribution<double>(0.0, 1.0)(rng_)
+                               : 2.0 * std::numbers::pi * u(rng_);
+    out = Pose(p.x(), p.y(), wrap_angle(heading));
+    return true;
+  }
+  return false;
 }
 
 Pose ParticleFilter::random_free_pose() {
@@ -60,6 +93,7 @@ void ParticleFilter::set_global() {
     p.weight = 1.0 / count_;
   }
   w_slow_ = w_fast_ = 0.0;
+  since_anchor_ = std::numeric_limits<double>::infinity();  // anywhere: recovery draws globally
   update_estimate();
 }
 
@@ -86,6 +120,7 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
   const double turned = std::abs(wrap_angle(odometry.z() - last_odometry_.z()));
   if (std::abs(s.trans) < params_.update_distance && turned < params_.update_angle) return false;
   last_odometry_ = odometry;
+  since_anchor_ += std::abs(s.trans);
   for (int i = 0; i < count_; ++i) {
     auto& p = particles_[static_cast<std::size_t>(i)];
     p.pose = sample_motion(p.pose, s, params_.motion, rng_);
@@ -157,18 +192,25 @@ void ParticleFilter::resample() {
     acc += particles_[static_cast<std::size_t>(i)].weight;
     cdf_[static_cast<std::size_t>(i)] = acc;
   }
-  // Augmented MCL's share of random particles, only past inject_above: a dip of the likelihood
-  // where the ring hears little (a room whose walls are out of reach) is no kidnapping.
+  // Augmented MCL's share of random particles, only past inject_above: the small dips of tracking
+  // (the share stays at 0.00 along the floor's corridors) are no kidnapping.
   const double share = w_slow_ > 0.0 ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
   const double inject = share > params_.inject_above ? share : 0.0;
   std::uniform_real_distribution<double> u(0.0, 1.0);
+  // Recovery nearby (docs/LOCALISATION.md): within recovery_radius() of the last compact estimate
+  // while that disc is smaller than the map; over the whole map past it (and after set_global).
+  const auto& g = field_.geometry();
+  const bool global = !(recovery_radius() < g.resolution * std::hypot(g.width, g.height));
   bins_.clear();
   injected_ = 0;
   int n = 0;
   for (;;) {
     Pose pose;
-    if (u(rng_) < inject) {
+    const bool injecting = u(rng_) < inject;
+    if (injecting && global) {
       pose = random_free_pose();
+      ++injected_;
+    } else if (injecting && random_nearby_pose(pose)) {
       ++injected_;
     } else {
       const double x = u(rng_) * acc;
@@ -245,6 +287,13 @@ void ParticleFilter::update_estimate() {
     cov += (p.weight / w) * d * d.transpose();
   }
   e.covariance = cov;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov.topLeftCorner<2, 2>(), Eigen::EigenvaluesOnly);
+  e.compact = w >= params_.compact_weight && std::sqrt(std::max(0.0, eig.eigenvalues()(1))) <= params_.compact_major &&
+              std::sqrt(std::max(0.0, cov(2, 2))) <= params_.compact_heading;
+  if (e.compact) {  // recovery's anchor: where the pose was last known
+    anchor_ = e.pose;
+    since_anchor_ = 0.0;
+  }
   estimate_ = e;
 }
 

@@ -33,8 +33,17 @@ struct FilterParams {
   double inside_weight = 0.02;     // the likelihood factor of such a pose
   double cluster_cell = 1.0;       // the estimate's cells, m: it is the mean of the densest 3 x 3
                                    // cells' particles, not of the whole cloud
-  double inject_above = 0.5;       // augmented MCL injects only when its share 1 - w_fast / w_slow
-                                   // is above this (docs/LOCALISATION.md, "Recovery")
+  double inject_above = 0.1;       // augmented MCL injects only when its share 1 - w_fast / w_slow
+                                   // is above this (docs/LOCALISATION.md, "Recovery nearby")
+  double compact_weight = 0.6;     // the estimate is compact (one cluster: "tracking") with at
+  double compact_major = 0.5;      // least this share of the weight, a 1-sigma ellipse's
+  double compact_heading = 0.26;   // semi-major axis at most this (m) and a heading's standard
+                                   // deviation at most this (rad, 15°)
+  double recover_within = 4.0;     // recovery draws its random particles within this of the last
+                                   // compact estimate, m (docs/LOCALISATION.md, "Recovery nearby")
+  double recover_growth = 1.0;     // and the radius grows by this per metre driven since, m/m
+  double recover_heading_share = 0.75;  // the share of them drawn about the estimate's heading,
+  double recover_heading_sigma = 0.26;  // this far (rad, 15°, one sigma); the rest any heading
   double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
                                    // readings of one step are not independent (AMCL's answer is
                                    // to use fewer beams; this keeps them all and flattens each)
@@ -58,6 +67,8 @@ struct Estimate {
   double cluster_weight = 0.0;                              // the weight those particles hold, 0..1:
                                                             // well below 1, the pose is ambiguous
   int particles = 0;                                        // how many it keeps now
+  bool compact = false;                                     // one cluster, within the compact_*
+                                                            // bounds: the pose is known
 };
 
 class ParticleFilter {
@@ -97,6 +108,8 @@ class ParticleFilter {
   double w_fast() const { return w_fast_; }
   // Particles drawn at random from the free cells at the last step.
   int injected() const { return injected_; }
+  // The radius recovery draws its random particles in now, m (infinite after set_global()).
+  double recovery_radius() const;
   const FilterParams& params() const { return params_; }
 
  private:
@@ -111,6 +124,9 @@ class ParticleFilter {
   void update_estimate();
   void resample();
   Pose random_free_pose();
+  // A random free pose within recovery_radius() of the last compact estimate; false when a few
+  // draws found none (the caller draws from the weighed particles instead).
+  bool random_nearby_pose(Pose& out);
 
   const DistanceField& field_;
   FilterParams params_;
@@ -136,6 +152,8 @@ class ParticleFilter {
   double w_fast_ = 0.0;              // fast average likelihood per reading
   Pose last_odometry_ = Pose::Zero();// the odometry at the last step
   bool have_odometry_ = false;       // step() has seen an odometry pose
+  Pose anchor_ = Pose::Zero();       // the last compact estimate (or set_pose's mean)
+  double since_anchor_ = 0.0;        // the odometry's travel since then, m (infinite: global)
 };
 
 }  // namespace robuter::loc
