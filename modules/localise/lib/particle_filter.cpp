@@ -171,7 +171,7 @@ bool ParticleFilter::weigh_some(int n) {
 }
 
 void ParticleFilter::finish_weighing() {
-  if (kept_count_ > 0 && count_ > 0) {
+  if (kept_count_ >= params_.recovery_readings && count_ > 0) {
     const double mean_lik = likelihood_sum_ / count_;  // the per-reading geometric mean, averaged
     w_slow_ = w_slow_ == 0.0 ? mean_lik : w_slow_ + params_.alpha_slow * (mean_lik - w_slow_);
     w_fast_ = w_fast_ == 0.0 ? mean_lik : w_fast_ + params_.alpha_fast * (mean_lik - w_fast_);

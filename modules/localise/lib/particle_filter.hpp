@@ -44,6 +44,9 @@ struct FilterParams {
   double recover_growth = 1.0;     // and the radius grows by this per metre driven since, m/m
   double recover_heading_share = 0.75;  // the share of them drawn about the estimate's heading,
   double recover_heading_sigma = 0.26;  // this far (rad, 15°, one sigma); the rest any heading
+  int recovery_readings = 6;       // a step with fewer informative readings leaves augmented MCL's
+                                   // averages as they were: a few echoes (a room whose walls are
+                                   // out of reach) are no measure of whether the robot is lost
   double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
                                    // readings of one step are not independent (AMCL's answer is
                                    // to use fewer beams; this keeps them all and flattens each)
