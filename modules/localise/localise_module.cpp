@@ -51,6 +51,11 @@ bool LocaliseModule::init(Kernel&) {
   const auto& g = walls_->geometry();
   field_ = localise::distance_field(*walls_, kFieldReach);
   filter_ = std::make_unique<loc::ParticleFilter>(field_, filter_params(cfg_), cfg_.seed);
+  if (filter_->free_cells() == 0) {  // an empty or walled-up map: no pose to start at, none to search
+    log::error("localise: the map ({} x {} cells) has no place the robot fits ({} mm from every wall)", g.width, g.height,
+               mm(filter_->params().body_clearance));
+    return false;
+  }
   report_.state = LocaliseState::uncertain;  // no pose yet: the first posture gives it
   out_.publish(report_);                     // advertised: XW answers from the start
   log::info("localise: map {} x {} cells of {} mm, {}..{} particles, {} weighed per activation", g.width, g.height,

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include <Eigen/Core>
 #include <string>
 
+#include "kernel/log.hpp"
 #include "modules/firmware/sim_firmware.hpp"
 #include "modules/localise/state_file.hpp"
 #include "tests/localise/floor_tour.hpp"
@@ -179,6 +181,37 @@ TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
                 r.kidnapped_at, r.kidnap_x, r.kidnap_y, r.found_after);
   }
   EXPECT_GE(found, 2);
+}
+
+// Why: a bad input gets a clear error. A map with no cell where the robot fits (here walled up
+// everywhere: every cell an obstacle) gave an empty free set, and a global search put every
+// particle at the origin; start-up now stops, naming the localisation.
+TEST(LocaliseModule, AMapWithNoPlaceTheRobotFitsStopsStartUp) {
+  TempDir dir;
+  ASSERT_TRUE(dir.ok());
+  const std::string file = dir.file("walled.map");
+  {
+    std::ofstream out(file);
+    out << "robuter-map 1\nwidth 8\nheight 8\nresolution 0.5\norigin -2 -2\nthreshold 2\ndata\n";
+    for (int y = 0; y < 8; ++y) out << "0202020202020202\n";
+  }
+  Config cfg;
+  cfg.planner.map_file = file;
+  cfg.localise.enabled = true;
+  std::FILE* log_file = std::tmpfile();  // the log's records, to read what start-up said
+  ASSERT_NE(log_file, nullptr);
+  log::start(log_file);
+  {
+    SimFirmware fw(ROBUTER_WORLDS_DIR "/empty.toml", cfg);
+    EXPECT_FALSE(fw.ok());
+  }
+  log::stop();
+  std::rewind(log_file);
+  std::string said;
+  char line[512];
+  while (std::fgets(line, sizeof line, log_file)) said += line;
+  std::fclose(log_file);
+  EXPECT_NE(said.find("localise: the map (8 x 8 cells) has no place the robot fits"), std::string::npos) << said;
 }
 
 // [localise] state_file: the map pose a run leaves is where the next starts (its odometry at 0);

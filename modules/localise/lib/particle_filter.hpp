@@ -111,6 +111,8 @@ class ParticleFilter {
   double w_fast() const { return w_fast_; }
   // Particles drawn at random from the free cells at the last step.
   int injected() const { return injected_; }
+  // Cells of the map where the robot fits (body_clearance from every wall): 0 and there is no pose.
+  std::size_t free_cells() const { return free_.size(); }
   // The radius recovery draws its random particles in now, m (infinite after set_global()).
   double recovery_radius() const;
   const FilterParams& params() const { return params_; }
