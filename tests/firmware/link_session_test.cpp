@@ -11,6 +11,7 @@
 #include "kernel/log.hpp"
 
 #include "modules/firmware/sim_firmware.hpp"
+#include "tests/support/log_capture.hpp"
 
 namespace robuter {
 namespace {
@@ -143,18 +144,6 @@ TEST(LinkSessions, EveryNewClientStartsAFreshSession) {
   EXPECT_EQ(fw.bb().link_status.reader().peek().sessions, 4u);
 }
 
-// What the log holds now (the records since the last call), by pointing its sink at a file.
-std::string log_since_last() {
-  std::FILE* f = std::tmpfile();
-  log::start(f);
-  log::stop();
-  std::rewind(f);
-  std::string out;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, f)) out += buf;
-  std::fclose(f);
-  return out;
-}
 
 // A second program opening the client's pty (a terminal beside a script; a stale path of another
 // program's pointing at a reused /dev/pts/N) neither ends nor restarts the session, and is said
@@ -164,11 +153,11 @@ TEST(LinkSessions, ASecondProgramOnTheLinkIsLoggedAndLeavesTheSessionAsItIs) {
   ASSERT_TRUE(fw.ok()) << fw.error();
   fw.run_ticks(10);
   EXPECT_EQ(fw.ask("XB1"), "ack");
-  log_since_last();
+  test::log_since_last();
   const int other = ::open(fw.pty_path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
   ASSERT_GE(other, 0);
   fw.run_ticks(3);
-  const std::string said = log_since_last();
+  const std::string said = test::log_since_last();
   EXPECT_NE(said.find("a second program opened"), std::string::npos) << said;
   ::close(other);
   fw.run_ticks(3);

@@ -6,22 +6,13 @@
 #include <string>
 
 #include "kernel/log.hpp"
+#include "tests/support/log_capture.hpp"
 
 namespace robuter {
 namespace {
 
-// Captures what flush() writes by pointing the sink at a temporary file.
-std::string drain_to_string() {
-  std::FILE* f = std::tmpfile();
-  log::start(f);
-  log::stop();
-  std::rewind(f);
-  std::string out;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, f)) out += buf;
-  std::fclose(f);
-  return out;
-}
+// Captures what flush() writes (tests/support/log_capture.hpp).
+std::string drain_to_string() { return test::log_since_last(); }
 
 TEST(Log, LevelsTicksAndDrops) {
   drain_to_string();  // records left by earlier tests in this process
