@@ -2,6 +2,7 @@
 // TOML overrides of the simulator's configuration, strict like the world loader.
 #include "hal/sim/sim_config.hpp"
 
+#include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/toml_fields.hpp"
 
 namespace robuter::sim {
@@ -15,6 +16,9 @@ using detail::ParseFailure;
 template <class T>
 void maybe(T& field, const std::optional<double>& v) {
   if (v) field = static_cast<T>(*v);
+}
+void maybe(bool& field, const std::optional<bool>& v) {
+  if (v) field = *v;
 }
 
 // Fails at the key's line when it is in the table, else at the table's line.
@@ -40,6 +44,12 @@ void probability(Fields& f, const char* key, double v) {
 
 // The sonar behaviour keys shared by [sonar] and [pan_tilt].
 void read_sonar_params(Fields& f, SonarParams& p) {
+  // The model first: the keys below may still change each of its effects.
+  if (auto v = f.opt_string("model")) {
+    const auto preset = sonar_preset(*v);
+    if (!preset) f.fail_at(*f.get("model"), "model: must be \"ideal\", \"stress\" or \"realistic\"");
+    apply_sonar_preset(*preset, p);
+  }
   if (auto v = f.opt_number("half_angle_deg")) {
     if (*v <= 0.0 || *v >= 89.0) f.fail_at(*f.get("half_angle_deg"), "half_angle_deg: must be within 0..89");
     p.half_angle = deg_to_rad(*v);
@@ -80,6 +90,9 @@ void read_sonar_params(Fields& f, SonarParams& p) {
     positive(f, "scale", *v);
     p.scale = *v;
   }
+  maybe(p.multipath, f.opt_bool("multipath"));
+  maybe(p.crosstalk, f.opt_bool("crosstalk"));
+  maybe(p.spurious_in_window, f.opt_bool("spurious_in_window"));
   maybe(p.offset, f.opt_number("offset"));
   maybe(p.no_echo, f.opt_number("no_echo"));
 }

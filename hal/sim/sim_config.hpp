@@ -32,9 +32,10 @@ struct SimConfig {
 //   [robot]    length width axle_to_front wheel_base max_wheel_speed max_accel max_decel
 //              contact_tolerance max_substep_travel trail_spacing
 //   [odometry] scale_left scale_right wheel_base_error noise slip_mean slip_sigma seed
-//   [sonar]    half_angle_deg timeout_ms sound_speed min_range max_incidence_deg noise_sigma
-//              noise_relative spurious_probability dropout_probability scale offset no_echo
-//              node_delay_ms seed
+//   [sonar]    model ("ideal", "stress", "realistic": sets the effects below, read first)
+//              half_angle_deg timeout_ms sound_speed min_range max_incidence_deg noise_sigma
+//              noise_relative spurious_probability dropout_probability spurious_in_window
+//              multipath crosstalk scale offset no_echo node_delay_ms seed
 //   [[sonar.sensor]] number (1..24, required) x y direction_deg (a mounting error; the node
 //              wiring is the robot model's)
 //   [pan_tilt] x y sensor_offset and the [sonar] behaviour keys (except node_delay_ms, seed)

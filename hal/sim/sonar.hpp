@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Ultrasonic range model: a beam cone, nearest specular echo, grazing-incidence misses,
-// time-out range, blanking, and optional seeded noise, drop-outs and spurious short echoes.
+// time-out range, blanking, multipath and cross-talk by specular bounces (image method), and
+// optional seeded noise, drop-outs and spurious short echoes.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "hal/sim/rng.hpp"
@@ -26,6 +28,16 @@ struct SonarParams {
   double noise_relative = 0.0;             // extra Gaussian noise proportional to range, fraction
   double spurious_probability = 0.0;       // chance a reading is a spurious short echo
   double dropout_probability = 0.0;        // chance a reading misses its echo entirely
+  bool spurious_in_window = false;         // false: a spurious echo is drawn between min_range
+                                           // and the true range (always short); true: it is a
+                                           // noise pulse at a uniform time of the listening
+                                           // window, heard only when before the true echo
+  bool multipath = false;                  // a beam meeting a surface too obliquely to echo
+                                           // bounces off it and may return by a surface beyond
+                                           // at normal incidence: a long reading
+  bool crosstalk = false;                  // transducers fired together hear each other's
+                                           // echoes (specular bounce into the cone) when those
+                                           // arrive before their own
   double scale = 1.0;                      // reported = scale · ranging_scale() · range + offset (calibration error)
   double offset = 0.0;                     // see scale, m
   double no_echo = 0.0;                    // value reported when nothing echoes in time, m
@@ -70,19 +82,44 @@ class SonarModel {
   // echoes and noise drawn from `rng` (none when rng is null), then the calibration line.
   double measure(const Pose& robot, const SonarMount& mount, Rng* rng = nullptr);
   double measure_from(const Vec2& origin, double direction, Rng* rng = nullptr);
+  // The transducers of one firing (a node's, fired together), one reported range each in `out`
+  // (sized as `mounts`): what each hears first — its own echo, with `multipath` its echo by a
+  // bounce off a surface too oblique to echo, with `crosstalk` a node-mate's echo — then the
+  // random effects of measure(), drawn sensor by sensor in order.
+  void measure_firing(const Pose& robot, std::span<const SonarMount> mounts, std::span<double> out,
+                      Rng* rng = nullptr);
 
   const SonarParams& params() const { return params_; }
   // Replaces the behaviour (and its cached trigonometry).
   void set_params(const SonarParams& params);
 
  private:
+  // Where a traced beam may look: beyond the line through `point` with normal `normal` (the
+  // side it points to), edge `skip` ignored. The image of a transducer sees only the world on
+  // the real side of the surface that mirrors it.
+  struct Beyond {
+    Vec2 point;       // a point of the mirror line, world frame, m
+    Vec2 normal;      // unit normal, pointing to the side the beam may see
+    int skip = -1;    // the mirror's own edge
+  };
+  // The trace, optionally restricted to what lies beyond a mirror.
+  Echo trace_beyond(const Vec2& origin, double direction, const Beyond* beyond);
+  // First arrival at a transducer (range, m; negative when nothing in time), before the random
+  // effects: own echo, multipath, and the echoes of the mates fired with it (their origins and
+  // unit beam axes, world frame).
+  double arrival(const Vec2& origin, double direction, std::span<const Vec2> mate_origins,
+                 std::span<const Vec2> mate_axes);
+  // The random effects and the calibration line applied to a first arrival.
+  double report(double range, Rng* rng);
+
   // One edge's best echo candidate inside the cone.
   struct Candidate {
     double range;     // distance to the nearest in-cone point of the edge, m
     Vec2 point;       // that point, world frame, m
     double cos_incidence; // cosine of the incidence angle there
     int segment;      // edge index
-    bool echoes;      // whether the incidence allows an echo
+    bool echoes;      // whether it may still be the echo (incidence allows it, not yet found hidden)
+    bool grazing;     // whether the incidence is too oblique to echo (it reflects the beam away)
   };
 
   const World& world_;                 // the world; outlives the model

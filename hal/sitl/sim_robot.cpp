@@ -15,7 +15,7 @@ namespace robuter::hal {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// The command line's noise switches on top of the parameters.
+// The command line's noise switches and sonar model on top of the parameters.
 void add_noise(const SimOptions& opt, sim::SimConfig& c) {
   if (opt.odometry_noise) {
     c.robot.odometry.noise = 0.002;
@@ -23,12 +23,8 @@ void add_noise(const SimOptions& opt, sim::SimConfig& c) {
     c.robot.odometry.scale_right = -0.002;
     c.robot.odometry.slip_sigma = 0.002;
   }
-  if (opt.sonar_noise) {
-    for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) {
-      p->noise_sigma = 0.01;
-      p->dropout_probability = 0.01;
-      p->spurious_probability = 0.002;
-    }
+  if (opt.sonar_model) {
+    for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) sim::apply_sonar_preset(*opt.sonar_model, *p);
   }
 }
 }  // namespace
@@ -66,7 +62,7 @@ sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimO
 }
 
 SimRobot::SimRobot(const Config& cfg, const SimOptions& opt)
-    : ptu_(opt.ptu), rng_(opt.seed), sonar_noise_(opt.sonar_noise) {
+    : ptu_(opt.ptu), rng_(opt.seed) {
   auto composed = simulated_robot_config(cfg, opt);
   if (!composed) {
     error_ = composed.error().describe();
@@ -145,13 +141,21 @@ bool SimSonarRing::fire(int node, std::uint8_t mask, std::uint32_t timeout_ms) {
   const sim::SonarParams& p = r_.sonar_->params();
   const double timeout = timeout_ms > 0 ? std::min(p.timeout, timeout_ms / 1000.0) : p.timeout;
   const double c = p.ranging_speed > 0.0 ? p.ranging_speed : p.sound_speed;
-  double last_echo = 0.0;
+  // The fired sensors are measured together: node-mates may hear each other (cross-talk).
+  std::array<sim::SonarMount, kSensorsPerNode> fired;
+  std::array<double, kSensorsPerNode> ranges{};
+  std::size_t n = 0;
   for (int i = 0; i < kSensorsPerNode; ++i) {
+    if (mask & (1u << i)) fired[n++] = r_.layout_[static_cast<std::size_t>(sensor_number(node, i) - 1)];
+  }
+  r_.sonar_->measure_firing(r_.robot_->pose(), std::span<const sim::SonarMount>(fired.data(), n),
+                            std::span<double>(ranges.data(), n), &r_.rng_);
+  double last_echo = 0.0;
+  for (int i = 0, k = 0; i < kSensorsPerNode; ++i) {
     auto& out = f.mm[static_cast<std::size_t>(i)];
     out = 0;
     if (!(mask & (1u << i))) continue;
-    const auto& mount = r_.layout_[static_cast<std::size_t>(sensor_number(node, i) - 1)];
-    const double m = std::max(0.0, r_.sonar_->measure(r_.robot_->pose(), mount, r_.sonar_noise_ ? &r_.rng_ : nullptr));
+    const double m = std::max(0.0, ranges[static_cast<std::size_t>(k++)]);
     const double echo = sim::echo_time(m, c);
     if (m <= 0.0 || echo > timeout) {
       last_echo = timeout;  // nothing heard in time: the node listens to the end
@@ -186,7 +190,7 @@ bool SimRobot::fire_pan_tilt(std::uint8_t mask) {
   auto& f = firings_[static_cast<std::size_t>(kPanTiltChannel)];
   const double angle = ptu_.angle_deg();
   const sim::PanTiltReading m = sim::measure_pan_tilt(*pan_tilt_sonar_, robot_->pose(), pan_tilt_mount_,
-                                                      pan_tilt_direction(angle), sonar_noise_ ? &rng_ : nullptr);
+                                                      pan_tilt_direction(angle), &rng_);
   auto to_mm = [](double metres) {
     return static_cast<std::uint16_t>(std::lround(std::clamp(metres, 0.0, 60.0) * 1000.0));
   };

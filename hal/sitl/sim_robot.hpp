@@ -15,6 +15,7 @@
 #include "hal/sim/robot.hpp"
 #include "hal/sim/sim_config.hpp"
 #include "hal/sim/sonar.hpp"
+#include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world.hpp"
 #include "hal/sitl/ptu_emulator.hpp"
@@ -27,7 +28,8 @@ struct SimOptions {
   std::string world_file;        // world to load; empty = the default lab
   std::uint64_t seed = 1;        // seed of every random source
   bool odometry_noise = false;   // encoder noise and slip on
-  bool sonar_noise = false;      // range noise, drop-outs and spurious echoes on
+  std::optional<sim::SonarPreset> sonar_model;  // the sonars' model (SIMULATOR.md); none: the
+                                                // configuration's ([sim.sonar] model, else ideal)
   PtuParams ptu;                 // the emulated pan-tilt unit: limits and power-up state
   std::function<void(sim::SimConfig&)> adjust;  // tests: last word on the simulated robot's parameters
 };
@@ -151,7 +153,6 @@ class SimRobot {
   PanTiltShot last_pan_tilt_{};            // the last channel-7 firing
   sim::RingLayout layout_{};               // mounts of sensors 1..24
   sim::Rng rng_{1};                        // sonar noise source
-  bool sonar_noise_ = false;               // apply noise to ring readings
   bool servo_ = false;                     // servo on
   std::int32_t left_ = 0, right_ = 0;      // set-points accepted, cm/s
   std::array<Firing, kSonarNodes + 2> firings_{};  // per node (and the pan-tilt channel)

@@ -37,7 +37,8 @@ std::string installed_default_world() {
 int main(int argc, char** argv) {
   using namespace robuter;
   CLI::App app{"robuterd — command server firmware for a Robuter differential-drive robot"};
-  std::string config_path, log_level, speed = "1";
+  std::string config_path, log_level, speed = "1", sonar_model;
+  bool sonar_noise = false;
   bool stats = false, check_only = false, version = false, no_ptu = false;
   FirmwareOptions opt;
   app.add_option("-c,--config", config_path, "robot configuration file (TOML); defaults are the seed's constants");
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
   app.add_option("--speed", speed, "simulation speed: N simulated seconds per second, or 'max'");
   app.add_option("--seed", opt.sim_options.seed, "seed of every random source of the simulator");
   app.add_flag("--odometry-noise", opt.sim_options.odometry_noise, "simulate encoder noise and wheel slip");
-  app.add_flag("--sonar-noise", opt.sim_options.sonar_noise, "simulate sonar noise, drop-outs and spurious echoes");
+  app.add_option("--sonar-model", sonar_model, "simulator: the sonars' model: ideal, stress or realistic (docs/SIMULATOR.md); default: the configuration's [sim.sonar] model, else ideal");
+  app.add_flag("--sonar-noise", sonar_noise, "simulator: the same as --sonar-model stress (the project's first noise: range noise, drop-outs, spurious short echoes)");
   app.add_option("--pty", opt.ptys, "serve a link on a new pty; PATH becomes a symbolic link to it (repeatable)");
   app.add_option("--serial", opt.serial_device, "serve a link on a serial device (overrides [links.serial] device; re-opened when it comes back)");
   app.add_option("--baud", opt.baud, "serial link rate, bit/s (overrides [links.serial] baud, default 9600)");
@@ -69,6 +71,16 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   opt.sim_ptu = !no_ptu;
+  if (!sonar_model.empty()) {
+    const auto preset = sim::sonar_preset(sonar_model);
+    if (!preset) {
+      fmt::print(stderr, "robuterd: --sonar-model '{}': expected ideal, stress or realistic\n", sonar_model);
+      return kExitUsage;
+    }
+    opt.sim_options.sonar_model = preset;
+  } else if (sonar_noise) {
+    opt.sim_options.sonar_model = sim::SonarPreset::stress;
+  }
   if (speed == "max") {
     opt.speed = 0.0;
   } else {

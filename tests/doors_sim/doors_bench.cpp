@@ -13,7 +13,9 @@
 int main(int argc, char** argv) {
   using namespace robuter::test;
   const int starts = argc > 1 ? std::atoi(argv[1]) : 100;
-  const bool noise = argc > 2 && std::string(argv[2]) == "noise";
+  // "noise": the stress sonar model and odometry noise; "realistic": the realistic one and odometry noise.
+  const std::string model = argc > 2 ? argv[2] : "";
+  const bool noise = model == "noise" || model == "realistic";
   std::vector<std::string> worlds;
   for (int i = 3; i < argc; ++i) worlds.push_back(argv[i]);
   if (worlds.empty()) worlds = {ROBUTER_WORLDS_DIR "/door90.toml", ROBUTER_WORLDS_DIR "/door100.toml"};
@@ -24,7 +26,8 @@ int main(int argc, char** argv) {
     std::map<std::string, int> failures;
     for (int seed = 1; seed <= starts; ++seed) {
       CrossingSetup s = seeded_start(w, static_cast<std::uint64_t>(seed));
-      s.sonar_noise = s.odometry_noise = noise;
+      s.odometry_noise = noise;
+      if (noise) s.sonar_model = model == "realistic" ? robuter::sim::SonarPreset::realistic : robuter::sim::SonarPreset::stress;
       // The obstacle rule to compare (docs/SAFETY.md §13): ROBUTER_EMERGENCY_RULE=seed|envelope.
       if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) s.config.emergency.rule = rule;
       const CrossingResult r = run_crossing(s);
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
     const std::string name = w.substr(w.rfind('/') + 1);
     std::printf("%s: %d/%d crossed (%.1f %%)%s; mean AG→crossed %.1f s (Ad→crossed %.1f s), longest %.1f s; contacts %d; "
                 "runs not ending stopped %d\n",
-                name.c_str(), ok, starts, 100.0 * ok / starts, noise ? " with sonar and odometry noise" : "",
+                name.c_str(), ok, starts, 100.0 * ok / starts, noise ? (model == "realistic" ? " with the realistic sonar model and odometry noise" : " with sonar (stress) and odometry noise") : "",
                 ok ? total / ok : 0.0, ok ? cross / ok : 0.0, worst, contacts, not_stopped);
     for (const auto& [why, n] : failures) std::printf("  failures: %d × %s\n", n, why.c_str());
     if (not_stopped > 0) status = 1;

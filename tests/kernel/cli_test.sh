@@ -26,6 +26,8 @@ check bad-world-toml 2 "world: $configs/bad_world.toml:5: [start]: y: expected a
 check bad-world-env 2 "world: $configs/bad_world.env:2: bad count" "$bin" --sim --world "$configs/bad_world.env" --ticks 1
 check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nope.toml --ticks 1
 check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
+check bad-sonar-model 2 "--sonar-model 'perfect': expected ideal, stress or realistic" "$bin" --sim --sonar-model perfect --ticks 1
+check sonar-model-runs 0 "" "$bin" --sim --sonar-model realistic --ticks 200 --log-level off
 
 # Inputs that are not what they should be (issue #14): folders, devices and oversize files are
 # refused with a reason; process-table errors name the key's file and line; a tick of 100 µs

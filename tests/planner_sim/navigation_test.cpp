@@ -54,7 +54,7 @@ TEST(PlannerSim, WithSonarNoiseANavigationAlwaysEnds) {
   Config cfg = lab_config();
   cfg.emergency.comm_limit_ticks = 100'000;  // the test's link is silent: only the planner ends the run
   hal::SimOptions sim;
-  sim.sonar_noise = true;
+  sim.sonar_model = sim::SonarPreset::stress;
   sim.seed = 1;
   test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg, sim, false, "");
   ASSERT_TRUE(fw.ok()) << fw.error();
@@ -88,7 +88,7 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   if (keep == nullptr) std::filesystem::remove_all(pictures);
   hal::SimOptions sim;
   if (const char* seed = std::getenv("ROBUTER_SONAR_NOISE_SEED")) {
-    sim.sonar_noise = true;
+    sim.sonar_model = sim::SonarPreset::stress;
     sim.seed = std::strtoull(seed, nullptr, 10);
   }
   test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), sim, false, pictures.string());

@@ -88,7 +88,7 @@ struct OnTheFloor {
       o.seed = odometry_noise_seed;
     }
     if (const char* seed = std::getenv("ROBUTER_XQ_SONAR_NOISE"); seed != nullptr && *seed != 0) {
-      o.sonar_noise = true;
+      o.sonar_model = sim::SonarPreset::stress;
       o.seed = std::strtoull(seed, nullptr, 10);
     }
     if (const char* seed = std::getenv("ROBUTER_XQ_ODOMETRY_NOISE"); seed != nullptr && *seed != 0) {

@@ -265,8 +265,11 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   hal::SimOptions opt;
   opt.seed = seed;
   // Sonar noise (range noise, lost and spurious echoes) and odometry noise in half the sequences.
-  opt.sonar_noise = opt.odometry_noise = rng.uniform() < 0.5;
-  if (opt.sonar_noise) ++tot.noisy;
+  opt.odometry_noise = rng.uniform() < 0.5;
+  if (opt.odometry_noise) {
+    opt.sonar_model = sim::SonarPreset::stress;
+    ++tot.noisy;
+  }
   SimFirmware fw(file.path(), cfg, opt);
   if (!fw.ok()) {
     report = "seed " + std::to_string(seed) + ": " + fw.error();
@@ -460,7 +463,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   report = fmt::format("seed {} (rule {}, map {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
                        "  latched-moving {}, ungranted {} (longest {} ticks), contact with sonar on {}\n"
                        "  commands: {}\n  world:\n{}",
-                       seed, cfg.emergency.rule, map_kind_name(map_kind), opt.sonar_noise, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
+                       seed, cfg.emergency.rule, map_kind_name(map_kind), opt.sonar_model.has_value(), cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
                        cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms,
                        mon.first_violation.empty() ? arb.first : mon.first_violation,
                        mon.latched_moving, mon.ungranted, mon.longest_disagreement, mon.contact_us_on, log, toml);

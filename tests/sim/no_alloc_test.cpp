@@ -3,12 +3,14 @@
 // noise, pan-tilt) are run with a counting global operator new.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cstdlib>
 #include <new>
 
 #include "hal/sim/robot.hpp"
 #include "hal/sim/sonar_layout.hpp"
+#include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/world_io.hpp"
 #include "tests/sim/sim_test_util.hpp"
 
@@ -49,6 +51,10 @@ TEST(RealTime, StepsAndReadingsDoNotAllocate) {
   sp.spurious_probability = 0.05;
   sp.dropout_probability = 0.05;
   SonarModel ring(world, sp);
+  SonarParams realistic = default_ring_params();
+  apply_sonar_preset(SonarPreset::realistic, realistic);
+  SonarModel ring_realistic(world, realistic);  // multipath and cross-talk: more traces, no allocation
+  std::array<double, 4> node{};
   SonarModel ptu(world, default_pan_tilt_params());
   const RingLayout layout = default_ring_layout();
   const PanTiltMount mount;
@@ -62,6 +68,10 @@ TEST(RealTime, StepsAndReadingsDoNotAllocate) {
     robot.step(0.01);
     if (k % 4 == 0) {
       for (const auto& m : layout) sum += ring.measure(robot.pose(), m, &rng);
+      for (std::size_t n = 0; n < layout.size(); n += node.size()) {
+        ring_realistic.measure_firing(robot.pose(), std::span<const SonarMount>(layout).subspan(n, node.size()), node, &rng);
+        for (const double r : node) sum += r;
+      }
     }
     if (k % 3 == 0) {
       const PanTiltReading r = measure_pan_tilt(ptu, robot.pose(), mount, 0.05 * k, &rng);

@@ -75,7 +75,7 @@ CrossingResult run_crossing(const CrossingSetup& s) {
   const std::string world = moved_world(s.world, s.dx_m, s.dy_m, s.dheading_deg);
   hal::SimOptions sim;
   sim.seed = s.seed;
-  sim.sonar_noise = s.sonar_noise;
+  sim.sonar_model = s.sonar_model;
   sim.odometry_noise = s.odometry_noise;
   {
     SimFirmware fw(world, s.config, sim, true);

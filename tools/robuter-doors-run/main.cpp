@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   int seed = 1, count = 1, trace = 0;
   double dx = 0.0, dh = 0.0;
   bool fixed = false, noise = false, any = false, echoes = false, log = false;
-  std::string picture;
+  std::string picture, sonar_model;
   app.add_option("--world", world_arg, "world: a name in the worlds folder (door90, door100, gap70 …) or a file")
       ->capture_default_str();
   app.add_option("--worlds-dir", worlds_dir, "the worlds folder")->capture_default_str();
@@ -59,7 +59,9 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "starts from --seed on")->check(CLI::PositiveNumber);
   app.add_option("--dx", dx, "a given start instead: lateral offset, m")->each([&](const std::string&) { fixed = true; });
   app.add_option("--dheading", dh, "a given start instead: heading offset, degrees")->each([&](const std::string&) { fixed = true; });
-  app.add_flag("--noise", noise, "sonar and odometry noise on");
+  app.add_flag("--noise", noise, "sonar (the stress model) and odometry noise on");
+  app.add_option("--sonar-model", sonar_model, "the simulator's sonar model, odometry noise on too: ideal, stress or realistic (docs/SIMULATOR.md)")
+      ->check(CLI::IsMember({"ideal", "stress", "realistic"}));
   app.add_flag("--ad-anyway", any, "send Ad even when the passage finder failed");
   app.add_option("--trace", trace, "print pose and crossing decisions every N ticks");
   app.add_flag("--echoes", echoes, "with --trace: the localised echoes closer than 1.2 m too");
@@ -78,7 +80,9 @@ int main(int argc, char** argv) {
       s.dx_m = dx;
       s.dheading_deg = dh;
     }
-    s.sonar_noise = s.odometry_noise = noise;
+    s.odometry_noise = noise || !sonar_model.empty();
+    if (noise) s.sonar_model = robuter::sim::SonarPreset::stress;
+    if (!sonar_model.empty()) s.sonar_model = robuter::sim::sonar_preset(sonar_model);
     s.ad_even_if_gate_failed = any;
     s.trace_every = trace;
     s.trace_echoes = echoes;

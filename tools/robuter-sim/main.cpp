@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   render->add_option("--route", req.route, "with --places: draw the route FROM,TO between two places (names)");
   render->add_option("--place-grid", req.place_grids, "a place grid file (docs/PLACES.md, \"Place grids\") to draw at its place; repeatable");
   render->add_option("--title", req.title, "title (default: world, pose, date and what the sonars report)");
+  render->add_option("--sonar-model", req.sonar_model, "the sonars' model: ideal (default), stress or realistic (docs/SIMULATOR.md); the ring is fired node by node");
+  render->add_option("--seed", req.seed, "seed of the sonar model's random effects (default 1)");
   if (const auto status = robuter::cli::parse_or_usage(app, argc, argv)) return *status;
   if (pt->count() > 0) req.pan_tilt_deg = pan_tilt;
   const int status = robuter::simtool::run_render(req);

@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <numbers>
 #include <optional>
+#include <span>
 
 #include "hal/sim/render.hpp"
 #include "hal/sim/sonar_layout.hpp"
+#include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/world_io.hpp"
 #include "modules/places/place_graph_file.hpp"
 #include "modules/places/place_grid.hpp"
@@ -88,25 +90,34 @@ int run_render(const RenderRequest& r) {
       return fail("--pose " + r.pose + ": " + ok.error().message);
   }
 
+  const auto preset = sim::sonar_preset(r.sonar_model);
+  if (!preset) return fail("--sonar-model '" + r.sonar_model + "': expected ideal, stress or realistic");
+  sim::Rng rng(r.seed);
+
   sim::Scene scene;
   scene.world = &world;
   scene.geometry = geometry;
   scene.robot = pose;
   if (r.ring) {
     const sim::RingLayout layout = sim::default_ring_layout();
-    const sim::SonarParams params = sim::default_ring_params();
+    sim::SonarParams params = sim::default_ring_params();
+    sim::apply_sonar_preset(*preset, params);
     sim::SonarModel model(world, params);
     std::array<double, sim::kRingSensors> ranges{};
-    for (int i = 0; i < sim::kRingSensors; ++i) ranges[static_cast<std::size_t>(i)] = model.measure(pose, layout[static_cast<std::size_t>(i)]);
+    // Node by node, as the ring fires: node-mates may hear each other (cross-talk).
+    for (std::size_t n = 0; n < layout.size(); n += 4) {
+      model.measure_firing(pose, std::span<const sim::SonarMount>(layout).subspan(n, 4), std::span<double>(ranges).subspan(n, 4), &rng);
+    }
     scene.beams = sim::ring_beams(pose, layout, ranges, params);
   }
   if (r.pan_tilt_deg) {
     // Seed ptu.c: at pan angle a, one sonar looks along a + 90° (robot frame), the other a − 90°.
-    const sim::SonarParams params = sim::default_pan_tilt_params();
+    sim::SonarParams params = sim::default_pan_tilt_params();
+    sim::apply_sonar_preset(*preset, params);
     sim::SonarModel model(world, params);
     const sim::PanTiltMount mount;
     const double direction = (*r.pan_tilt_deg + 90.0) * kDeg;
-    const sim::PanTiltReading reading = sim::measure_pan_tilt(model, pose, mount, direction);
+    const sim::PanTiltReading reading = sim::measure_pan_tilt(model, pose, mount, direction, &rng);
     scene.pan_tilt = sim::pan_tilt_beams(pose, mount, direction, reading, params);
   }
   std::optional<places::PlaceGraph> graph;
@@ -140,6 +151,9 @@ int run_render(const RenderRequest& r) {
     scene.keys = std::move(keys);
   }
   scene.title = r.title.empty() ? default_title(world.name, pose, scene) : r.title;
+  if (r.title.empty() && *preset != sim::SonarPreset::ideal) {
+    scene.title += "; sonar model " + std::string(sim::sonar_preset_name(*preset)) + ", seed " + std::to_string(r.seed);
+  }
   if (!grids.empty() && r.title.empty()) scene.title += "; " + std::to_string(grids.size()) + " place grid" + (grids.size() == 1 ? "" : "s");
   if (graph && r.title.empty()) {
     char extra[160];

@@ -2,6 +2,7 @@
 // robuter-sim render: options and the picture of a world with the robot and its sonars at one pose.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ struct RenderRequest {
   std::string route;                   // "FROM,TO" place names: the route to draw (needs places)
   std::vector<std::string> place_grids;  // place grid files (docs/PLACES.md) to draw at their places
   std::string title;                   // title; empty = world, pose, date and the sonars' report
+  std::string sonar_model = "ideal";   // the sonars' model (docs/SIMULATOR.md): ideal, stress, realistic
+  std::uint64_t seed = 1;              // seed of the model's random effects
 };
 
 // Renders the request; 0 on success, else prints why on stderr and returns 1.

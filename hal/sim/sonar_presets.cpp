@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The named sonar models' values; each value's source is in SIMULATOR.md.
+#include "hal/sim/sonar_presets.hpp"
+
+namespace robuter::sim {
+
+std::optional<SonarPreset> sonar_preset(std::string_view name) {
+  if (name == "ideal") return SonarPreset::ideal;
+  if (name == "stress") return SonarPreset::stress;
+  if (name == "realistic") return SonarPreset::realistic;
+  return std::nullopt;
+}
+
+std::string_view sonar_preset_name(SonarPreset preset) {
+  switch (preset) {
+    case SonarPreset::ideal: return "ideal";
+    case SonarPreset::stress: return "stress";
+    case SonarPreset::realistic: return "realistic";
+  }
+  return "ideal";
+}
+
+void apply_sonar_preset(SonarPreset preset, SonarParams& p) {
+  p.noise_sigma = 0.0;
+  p.noise_relative = 0.0;
+  p.dropout_probability = 0.0;
+  p.spurious_probability = 0.0;
+  p.spurious_in_window = false;
+  p.multipath = false;
+  p.crosstalk = false;
+  switch (preset) {
+    case SonarPreset::ideal:
+      break;
+    case SonarPreset::stress:
+      p.noise_sigma = 0.01;
+      p.dropout_probability = 0.01;
+      p.spurious_probability = 0.002;
+      break;
+    case SonarPreset::realistic:
+      p.noise_relative = kRealisticNoiseRelative;
+      p.dropout_probability = kRealisticDropout;
+      p.spurious_probability = kRealisticSpurious;
+      p.spurious_in_window = true;
+      p.multipath = true;
+      p.crosstalk = true;
+      break;
+  }
+}
+
+}  // namespace robuter::sim
