@@ -15,16 +15,13 @@ namespace robuter::hal {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// The command line's noise switches and sonar model on top of the parameters.
+// The command line's odometry noise on top of the parameters.
 void add_noise(const SimOptions& opt, sim::SimConfig& c) {
   if (opt.odometry_noise) {
     c.robot.odometry.noise = 0.002;
     c.robot.odometry.scale_left = 0.002;
     c.robot.odometry.scale_right = -0.002;
     c.robot.odometry.slip_sigma = 0.002;
-  }
-  if (opt.sonar_model) {
-    for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) sim::apply_sonar_preset(*opt.sonar_model, *p);
   }
 }
 }  // namespace
@@ -47,6 +44,8 @@ sim::SimConfig firmware_sim_defaults(const Config& cfg) {
 
 sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimOptions& opt) {
   sim::SimConfig c = firmware_sim_defaults(cfg);
+  // The sonar model first: a configuration's [sim.sonar] / [sim.pan_tilt] keys are the last word.
+  for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) sim::apply_sonar_preset(opt.sonar_model, *p);
   if (cfg.sim) {
     auto applied = sim::apply_sim_config(cfg.sim->table, cfg.source, c, "sim.");
     if (!applied) return applied.error();

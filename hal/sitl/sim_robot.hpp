@@ -28,8 +28,9 @@ struct SimOptions {
   std::string world_file;        // world to load; empty = the default lab
   std::uint64_t seed = 1;        // seed of every random source
   bool odometry_noise = false;   // encoder noise and slip on
-  std::optional<sim::SonarPreset> sonar_model;  // the sonars' model (SIMULATOR.md); none: the
-                                                // configuration's ([sim.sonar] model, else ideal)
+  sim::SonarPreset sonar_model = sim::SonarPreset::ideal;  // the sonars' base model (SIMULATOR.md): the
+                                                           // [sim] tables may change it; robuterd's
+                                                           // command line defaults to realistic
   PtuParams ptu;                 // the emulated pan-tilt unit: limits and power-up state
   std::function<void(sim::SimConfig&)> adjust;  // tests: last word on the simulated robot's parameters
 };
@@ -38,9 +39,10 @@ struct SimOptions {
 // mount) and ring settings ([sonar]), before the [sim] tables.
 sim::SimConfig firmware_sim_defaults(const Config& cfg);
 
-// The simulated robot's own parameters: firmware_sim_defaults(), then the configuration's [sim]
-// tables ([sim.robot], [sim.odometry], [sim.sonar], [[sim.sonar.sensor]], [sim.pan_tilt]: the
-// robot may differ from what the firmware believes), then the command line's noise. The odometry
+// The simulated robot's own parameters: firmware_sim_defaults() with the options' sonar model,
+// then the configuration's [sim] tables ([sim.robot], [sim.odometry], [sim.sonar] — whose
+// `model` and effect keys are the last word on the sonars —, [[sim.sonar.sensor]],
+// [sim.pan_tilt]: the robot may differ from what the firmware believes), then the odometry noise. The odometry
 // always integrates with the firmware's wheel base and the ring ranges with its speed of sound.
 sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimOptions& opt);
 

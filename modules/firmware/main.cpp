@@ -37,7 +37,7 @@ std::string installed_default_world() {
 int main(int argc, char** argv) {
   using namespace robuter;
   CLI::App app{"robuterd — command server firmware for a Robuter differential-drive robot"};
-  std::string config_path, log_level, speed = "1", sonar_model;
+  std::string config_path, log_level, speed = "1", sonar_model = "realistic";
   bool sonar_noise = false;
   bool stats = false, check_only = false, version = false, no_ptu = false;
   FirmwareOptions opt;
@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
   app.add_option("--speed", speed, "simulation speed: N simulated seconds per second, or 'max'");
   app.add_option("--seed", opt.sim_options.seed, "seed of every random source of the simulator");
   app.add_flag("--odometry-noise", opt.sim_options.odometry_noise, "simulate encoder noise and wheel slip");
-  app.add_option("--sonar-model", sonar_model, "simulator: the sonars' model: ideal, stress or realistic (docs/SIMULATOR.md); default: the configuration's [sim.sonar] model, else ideal");
+  CLI::Option* model_opt = app.add_option("--sonar-model", sonar_model, "simulator: the sonars' model: ideal, stress or realistic (docs/SIMULATOR.md); a configuration's [sim.sonar] keys still apply after it")
+                               ->capture_default_str();
   app.add_flag("--sonar-noise", sonar_noise, "simulator: the same as --sonar-model stress (the project's first noise: range noise, drop-outs, spurious short echoes)");
   app.add_option("--pty", opt.ptys, "serve a link on a new pty; PATH becomes a symbolic link to it (repeatable)");
   app.add_option("--serial", opt.serial_device, "serve a link on a serial device (overrides [links.serial] device; re-opened when it comes back)");
@@ -71,15 +72,16 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   opt.sim_ptu = !no_ptu;
-  if (!sonar_model.empty()) {
-    const auto preset = sim::sonar_preset(sonar_model);
-    if (!preset) {
-      fmt::print(stderr, "robuterd: --sonar-model '{}': expected ideal, stress or realistic\n", sonar_model);
-      return kExitUsage;
-    }
-    opt.sim_options.sonar_model = preset;
-  } else if (sonar_noise) {
-    opt.sim_options.sonar_model = sim::SonarPreset::stress;
+  if (sonar_noise && model_opt->count() > 0) {
+    fmt::print(stderr, "robuterd: --sonar-noise is --sonar-model stress: give one of them\n");
+    return kExitUsage;
+  }
+  if (sonar_noise) sonar_model = "stress";
+  if (const auto preset = sim::sonar_preset(sonar_model)) {
+    opt.sim_options.sonar_model = *preset;
+  } else {
+    fmt::print(stderr, "robuterd: --sonar-model '{}': expected ideal, stress or realistic\n", sonar_model);
+    return kExitUsage;
   }
   if (speed == "max") {
     opt.speed = 0.0;
@@ -156,6 +158,8 @@ int main(int argc, char** argv) {
   if (opt.sim) {
     log::info("sim: world {}", opt.sim_options.world_file.empty() ? std::string("built-in default (source tree)")
                                                                    : opt.sim_options.world_file);
+    log::info("sim: sonar model {} (--sonar-model; [sim.sonar] keys adjust it), seed {}",
+              sim::sonar_preset_name(opt.sim_options.sonar_model), opt.sim_options.seed);
     // A log line, not stdout: with --stdio standard output is the command link.
     if (fw.ptu_pipe() != nullptr) log::info("sim: pan-tilt unit simulated in-process (--no-ptu: without it)");
   }

@@ -101,14 +101,16 @@ class SimulatedRobot:
 
 def start(world: Optional[str] = None, config: Optional[str] = None, binary: Optional[str] = None,
           args: Sequence[str] = (), speed: Optional[str] = None, seed: Optional[int] = None,
-          log_level: str = "warn", timeout: float = 30.0) -> SimulatedRobot:
+          log_level: str = "warn", timeout: float = 30.0, sonar_model: str = "ideal") -> SimulatedRobot:
     """Starts ``robuterd --sim --pty <tmp>/robuter.pty`` and waits (up to ``timeout`` s) for its
     pty. ``world``: a path or a name from ``worlds/``; ``config``: a TOML file; ``args``: more
-    command-line options."""
+    command-line options; ``sonar_model``: the simulator's sonars (``ideal``, ``stress`` or
+    ``realistic``, docs/SIMULATOR.md) — ideal by default, so a script's readings repeat, unlike
+    ``robuterd --sim`` alone, whose default is realistic."""
     exe = find_binary(binary)
     folder = tempfile.mkdtemp(prefix="robuter-sim-")
     port = os.path.join(folder, "robuter.pty")
-    command = [exe, "--sim", "--pty", port, "--log-level", log_level]
+    command = [exe, "--sim", "--sonar-model", sonar_model, "--pty", port, "--log-level", log_level]
     try:
         if world is not None:
             command += ["--world", _world_path(world)]

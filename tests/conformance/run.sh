@@ -6,7 +6,7 @@ set -u
 robuterd=$1; robuterctl=$2; script=$3; shift 3
 dir=$(mktemp -d); pty="$dir/robuter.pty"; log="$dir/robuterd.log"
 trap 'kill -9 $pid 2>/dev/null; rm -rf "$dir"' EXIT
-"$robuterd" --sim --pty "$pty" --log-level warn "$@" >"$log" 2>&1 &
+"$robuterd" --sim --sonar-model ideal --pty "$pty" --log-level warn "$@" >"$log" 2>&1 &
 pid=$!
 for _ in $(seq 100); do [[ -L "$pty" ]] && break; sleep 0.05; done
 [[ -L "$pty" ]] || { echo "robuterd did not create $pty"; cat "$log"; exit 1; }

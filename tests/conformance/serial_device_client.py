@@ -13,7 +13,7 @@ master, slave = os.openpty()
 tty.setraw(master)
 tty.setraw(slave)
 path = os.ttyname(slave)
-proc = subprocess.Popen([robuterd, "--sim", "--serial", path, "--baud", "115200", "--log-level", "warn"],
+proc = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--serial", path, "--baud", "115200", "--log-level", "warn"],
                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
 time.sleep(0.5)
 

@@ -5,7 +5,7 @@
 # usage: peak_memory.sh ROBUTERD LIMIT_KB
 bin=${1:?usage: peak_memory.sh ROBUTERD LIMIT_KB}
 limit=${2:?usage: peak_memory.sh ROBUTERD LIMIT_KB}
-out=$(printf 'XG 50000 20000\r' | "$bin" --sim --speed max --ticks 2000 --stats --stdio --log-level info 2>&1)
+out=$(printf 'XG 50000 20000\r' | "$bin" --sim --sonar-model ideal --speed max --ticks 2000 --stats --stdio --log-level info 2>&1)
 if ! printf '%s\n' "$out" | grep -aq 'planner: plan 1: path'; then
   printf '%s\n' "$out" | tail -20
   echo "FAIL: robuterd made no plan for XG 50000 20000"

@@ -32,7 +32,7 @@ log=$(mktemp); dir=$(mktemp -d)
 python3 -c 'import os,pty,sys,time; m,s=pty.openpty(); os.symlink(os.ttyname(s), sys.argv[1]); time.sleep(120)' "$dir/dev" &
 holder=$!
 for _ in $(seq 50); do [[ -e "$dir/dev" ]] && break; sleep 0.1; done
-"$bin" --sim --serial "$dir/dev" --log-level info >"$log" 2>&1 &
+"$bin" --sim --sonar-model ideal --serial "$dir/dev" --log-level info >"$log" 2>&1 &
 pid=$!
 for _ in $(seq 600); do grep -q starting "$log" && break; sleep 0.05; done  # up to 30 s (sanitizers, loaded CI)
 kill -TERM $pid; wait $pid; rc=$?

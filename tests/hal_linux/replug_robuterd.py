@@ -61,7 +61,7 @@ def check(name, ok, detail=""):
 
 master = plug()
 log = open(os.path.join(tmp, "log"), "w+")
-proc = subprocess.Popen([robuterd, "--sim", "--config", config, "--serial", dev, "--log-level", "info"],
+proc = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--config", config, "--serial", dev, "--log-level", "info"],
                         stdout=log, stderr=log)
 first = ask(master, "BO")
 check("BO before", first is not None and first.startswith("S "), repr(first))

@@ -28,6 +28,13 @@ check missing-world 2 "world: /nope.toml: cannot open" "$bin" --sim --world /nop
 check bad-speed 2 "--speed 'fast': expected a positive number or 'max'" "$bin" --sim --speed fast
 check bad-sonar-model 2 "--sonar-model 'perfect': expected ideal, stress or realistic" "$bin" --sim --sonar-model perfect --ticks 1
 check sonar-model-runs 0 "" "$bin" --sim --sonar-model realistic --ticks 200 --log-level off
+# The simulator's sonars are realistic unless a harness says otherwise (issue #19).
+for want in "realistic:" "ideal:--sonar-model ideal" "stress:--sonar-noise"; do
+  out=$("$bin" --sim --ticks 1 --log-level info ${want#*:} 2>&1 | grep 'sim: sonar model')
+  if [[ "$out" == *"sim: sonar model ${want%%:*} "* ]]; then pass=$((pass+1)); echo "ok   sonar-model-${want%%:*}: $out"
+  else fail=$((fail+1)); echo "FAIL sonar-model-${want%%:*}: [$out]"; fi
+done
+check sonar-noise-and-model 2 "--sonar-noise is --sonar-model stress: give one of them" "$bin" --sim --sonar-noise --sonar-model ideal --ticks 1
 
 # Inputs that are not what they should be (issue #14): folders, devices and oversize files are
 # refused with a reason; process-table errors name the key's file and line; a tick of 100 µs
@@ -42,9 +49,9 @@ check dev-zero-world 2 "world: /dev/zero: is a character device, not a regular f
 check bad-row-line 2 "bad_row.toml:3: key 'process.heartbeat.offset': offset 10 must be less than the period 10" "$bin" --sim --config "$configs/bad_row.toml"
 check bad-budget-line 2 "bad_budget.toml:3: key 'process.heartbeat.budget_us': budget 200000 µs exceeds the period of 100000 µs" "$bin" --sim --config "$configs/bad_budget.toml"
 check small-tick-valid 0 "is valid" "$bin" --check-config --config "$configs/small_tick.toml"
-check small-tick-runs 0 "" "$bin" --sim --config "$configs/small_tick.toml" --ticks 200 --log-level off
+check small-tick-runs 0 "" "$bin" --sim --sonar-model ideal --config "$configs/small_tick.toml" --ticks 200 --log-level off
 check pty-twice 2 "--pty $tmpdir/./x.pty: given twice (one link per path)" "$bin" --sim --pty "$tmpdir/x.pty" --pty "$tmpdir/./x.pty" --ticks 1
-out=$("$bin" --sim --planner-pictures "$tmpdir/pictures/new" --ticks 5 --log-level info 2>&1); rc=$?
+out=$("$bin" --sim --sonar-model ideal --planner-pictures "$tmpdir/pictures/new" --ticks 5 --log-level info 2>&1); rc=$?
 if [[ $rc -eq 0 && -d "$tmpdir/pictures/new" && "$out" == *"planner: --planner-pictures $tmpdir/pictures/new did not exist: created it"* ]]; then
   pass=$((pass+1)); echo "ok   planner-pictures-created: said so"
 else fail=$((fail+1)); echo "FAIL planner-pictures-created: rc=$rc out=[$out]"; fi
@@ -66,13 +73,13 @@ fi
 # SIGINT and SIGTERM: clean stop, exit status 0 (sent once robuterd says it is starting: the
 # handlers are installed before that line).
 log=$(mktemp)
-"$bin" --sim --log-level info >"$log" 2>&1 &
+"$bin" --sim --sonar-model ideal --log-level info >"$log" 2>&1 &
 pid=$!
 wait_started() { for _ in $(seq 600); do grep -q starting "$log" && return; sleep 0.05; done; }  # up to 30 s (sanitizers, loaded CI)
 wait_started
 kill -INT $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]] && grep -q "stopped after" "$log"; then pass=$((pass+1)); echo "ok   sigint: exit 0"; else fail=$((fail+1)); echo "FAIL sigint: rc=$rc"; cat "$log"; fi
-"$bin" --sim --log-level info >"$log" 2>&1 &
+"$bin" --sim --sonar-model ideal --log-level info >"$log" 2>&1 &
 pid=$!
 wait_started; kill -TERM $pid; wait $pid; rc=$?
 if [[ $rc -eq 0 ]]; then pass=$((pass+1)); echo "ok   sigterm: exit 0"; else fail=$((fail+1)); echo "FAIL sigterm: rc=$rc"; fi

@@ -53,7 +53,7 @@ sock.bind(path)
 log_path = os.path.join(tmp, "robuterd.log")
 env = {**os.environ, "NOTIFY_SOCKET": path, "WATCHDOG_USEC": "200000"}
 env.pop("WATCHDOG_PID", None)
-proc = subprocess.Popen([robuterd, "--sim", "--log-level", "info"], env=env, stdout=open(log_path, "w"),
+proc = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--log-level", "info"], env=env, stdout=open(log_path, "w"),
                         stderr=subprocess.STDOUT)
 try:
     first = receive(sock, "READY=1", 30)
@@ -82,7 +82,7 @@ try:
     with open(jlog, "w") as out:
         st = os.fstat(out.fileno())
         jenv = {**os.environ, "JOURNAL_STREAM": f"{st.st_dev}:{st.st_ino}", "NOTIFY_SOCKET": os.path.join(tmp, "none")}
-        rc = subprocess.run([robuterd, "--sim", "--ticks", "20", "--log-level", "info"], env=jenv, stdout=out,
+        rc = subprocess.run([robuterd, "--sim", "--sonar-model", "ideal", "--ticks", "20", "--log-level", "info"], env=jenv, stdout=out,
                             stderr=out, timeout=60).returncode
     text = open(jlog).read()
     check("journal: warnings carry <4>, information <6>",

@@ -87,7 +87,7 @@ def start(*extra):
     dangle, and their /dev/pts/N may meanwhile belong to another program."""
     log_path = os.path.join(tmp, "robuterd.log")
     before = open(log_path).read().count("link on") if os.path.exists(log_path) else 0
-    p = subprocess.Popen([robuterd, "--sim", "--pty", A, "--pty", B, "--log-level", "info", *extra],
+    p = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--pty", A, "--pty", B, "--log-level", "info", *extra],
                          stdout=open(log_path, "a"), stderr=subprocess.STDOUT)
     for _ in range(600):
         if open(log_path).read().count("link on") >= before + 2:
@@ -164,7 +164,7 @@ try:
     c.close()
     check("a half line never reaches the next client", (reply or "").startswith("C "), reply)
 
-    second = subprocess.run([robuterd, "--sim", "--pty", A, "--ticks", "10"], capture_output=True, text=True,
+    second = subprocess.run([robuterd, "--sim", "--sonar-model", "ideal", "--pty", A, "--ticks", "10"], capture_output=True, text=True,
                             timeout=60)
     check("a second robuterd on A is refused", second.returncode == 2 and "in use by another robuterd" in second.stderr,
           second.stderr.strip())
@@ -174,7 +174,7 @@ try:
     c.close()
     b.close()
 
-    twice = subprocess.run([robuterd, "--sim", "--pty", os.path.join(tmp, "c.pty"), "--pty",
+    twice = subprocess.run([robuterd, "--sim", "--sonar-model", "ideal", "--pty", os.path.join(tmp, "c.pty"), "--pty",
                             os.path.join(tmp, ".", "c.pty"), "--ticks", "10"], capture_output=True, text=True,
                            timeout=60)
     check("--pty X --pty X is refused", twice.returncode == 2 and "given twice" in twice.stderr, twice.stderr.strip())

@@ -28,7 +28,7 @@ class Robuterd:
         self.pty = os.path.join(tmp, f"{tag}.pty")
         self.log_path = os.path.join(tmp, f"{tag}.log")
         no_core = lambda: resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # noqa: E731
-        self.proc = subprocess.Popen([robuterd, "--sim", "--pty", self.pty, "--log-level", "info"],
+        self.proc = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--pty", self.pty, "--log-level", "info"],
                                      stdout=open(self.log_path, "w"), stderr=subprocess.STDOUT,
                                      env={**os.environ, **(env or {})}, preexec_fn=no_core, cwd=tmp)
         for _ in range(600):

@@ -41,7 +41,7 @@ class Robuterd:
         self.obs = os.path.join(tmp, name + "-observer.pty")  # a second link, to watch the robot
         self.log = open(os.path.join(tmp, name + ".log"), "w")
         OPEN.append(self)
-        self.proc = subprocess.Popen([exe, "--sim", "--pty", self.pty, "--pty", self.obs, "--log-level", "warn"],
+        self.proc = subprocess.Popen([exe, "--sim", "--sonar-model", "ideal", "--pty", self.pty, "--pty", self.obs, "--log-level", "warn"],
                                      stdout=self.log, stderr=subprocess.STDOUT)
         deadline = time.monotonic() + WAIT
         while not (os.path.islink(self.pty) and os.path.islink(self.obs)):

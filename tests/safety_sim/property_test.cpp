@@ -463,7 +463,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   report = fmt::format("seed {} (rule {}, map {}, noise {}, mask {}, latch {}, comm {} ticks, auto-toggle {}, motion time-out {} ms): {}\n"
                        "  latched-moving {}, ungranted {} (longest {} ticks), contact with sonar on {}\n"
                        "  commands: {}\n  world:\n{}",
-                       seed, cfg.emergency.rule, map_kind_name(map_kind), opt.sonar_model.has_value(), cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
+                       seed, cfg.emergency.rule, map_kind_name(map_kind), opt.sonar_model != sim::SonarPreset::ideal, cfg.emergency.mask, cfg.emergency.latch, cfg.emergency.comm_limit_ticks,
                        cfg.emergency.auto_toggle, cfg.emergency.motion_timeout_ms,
                        mon.first_violation.empty() ? arb.first : mon.first_violation,
                        mon.latched_moving, mon.ungranted, mon.longest_disagreement, mon.contact_us_on, log, toml);

@@ -142,18 +142,18 @@ TEST(Pictures, RobuterSimDrawsPlaceGrids) {
 TEST(Pictures, RobuterdWritesAPictureAtExit) {
   const std::string out = kOut + "/robuterd_exit.png";
   std::filesystem::remove(out);
-  ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --ptu-sweep --picture " + out), 0);
+  ASSERT_EQ(run(kBin + "/robuterd --sim --sonar-model ideal --speed max --ticks 300 --ptu-sweep --picture " + out), 0);
   int w = 0, h = 0;
   const double f = ink(out, w, h);
   EXPECT_GE(w, 1000);
   EXPECT_GT(f, 0.05);
   const std::string svg = kOut + "/robuterd_exit.svg";
-  ASSERT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 300 --picture " + svg), 0);
+  ASSERT_EQ(run(kBin + "/robuterd --sim --sonar-model ideal --speed max --ticks 300 --picture " + svg), 0);
   EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
 }
 
 TEST(Pictures, RobuterdRefusesAPictureItCannotWrite) {
-  EXPECT_EQ(run(kBin + "/robuterd --sim --speed max --ticks 10 --picture " + kOut + "/x.jpg"), 2);
+  EXPECT_EQ(run(kBin + "/robuterd --sim --sonar-model ideal --speed max --ticks 10 --picture " + kOut + "/x.jpg"), 2);
 }
 
 // The scene robuterd draws at exit, from a simulated robot: its layout explains it (title with

@@ -153,5 +153,25 @@ TEST(SimParams, ABrokenSimTableIsAStartUpErrorWithItsLine) {
   EXPECT_FALSE(fw2.ok());
 }
 
+// The options' sonar model comes first, for the ring and the pan-tilt; a configuration's
+// [sim.sonar] and [sim.pan_tilt] keys (its `model` too) are the last word (issue #19).
+TEST(SimParams, TheSonarModelIsTheOptionsAndTheSimTablesAdjustIt) {
+  hal::SimOptions opt;
+  EXPECT_EQ(opt.sonar_model, sim::SonarPreset::ideal);  // C++ harnesses: ideal unless they say
+  opt.sonar_model = sim::SonarPreset::realistic;
+  auto plain = hal::simulated_robot_config(Config{}, opt);
+  ASSERT_TRUE(plain);
+  EXPECT_TRUE(plain.value().ring.multipath);
+  EXPECT_TRUE(plain.value().ring.crosstalk);
+  EXPECT_TRUE(plain.value().pan_tilt.spurious_in_window);
+  auto adjusted = hal::simulated_robot_config(
+      config_from("[sim.sonar]\ncrosstalk = false\n[sim.pan_tilt]\nmodel = \"ideal\"\n"), opt);
+  ASSERT_TRUE(adjusted);
+  EXPECT_TRUE(adjusted.value().ring.multipath);
+  EXPECT_FALSE(adjusted.value().ring.crosstalk);
+  EXPECT_FALSE(adjusted.value().pan_tilt.multipath);
+  EXPECT_EQ(adjusted.value().pan_tilt.dropout_probability, 0.0);
+}
+
 }  // namespace
 }  // namespace robuter::test

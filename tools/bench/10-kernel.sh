@@ -25,7 +25,7 @@ cyclic() {
     }' "$hist"
   rm -f "$hist"
 }
-"$bin/robuterd" --sim --ticks "$ticks" --stats --log-level warn >"$stats" 2>&1 &
+"$bin/robuterd" --sim --sonar-model ideal --ticks "$ticks" --stats --log-level warn >"$stats" 2>&1 &
 pid=$!
 sleep $((seconds - 2))
 rss_kb=$(awk '/VmRSS/ {print $2}' /proc/$pid/status)
@@ -44,7 +44,7 @@ fi
 # The same pair with SCHED_FIFO and locked memory, as on the robot (needs root or CAP_SYS_NICE).
 rt_cfg=$(mktemp --suffix=.toml)
 printf '[kernel]\nrealtime = true\nrt_priority = 80\nlock_memory = true\n' >"$rt_cfg"
-if "$bin/robuterd" --sim --config "$rt_cfg" --ticks 1000 --stats --log-level warn >"$stats" 2>&1 && ! grep -q refused "$stats"; then
+if "$bin/robuterd" --sim --sonar-model ideal --config "$rt_cfg" --ticks 1000 --stats --log-level warn >"$stats" 2>&1 && ! grep -q refused "$stats"; then
   echo "robuterd --sim, SCHED_FIFO 80, mlockall, 10 s: $(grep '^tick ' "$stats")"
   if command -v cyclictest >/dev/null; then
     cyclic "cyclictest, SCHED_FIFO 80, mlockall, 10 ms, 10 s" -p 80 -m

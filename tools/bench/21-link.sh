@@ -13,7 +13,7 @@ trap 'pkill -INT -f "$dir/robuter.pty" 2>/dev/null; rm -rf "$dir"' EXIT
 run_case() {
   local label=$1 cfg=$2; shift 2
   local pty="$dir/robuter.pty"
-  "$bin/robuterd" --sim --pty "$pty" --log-level warn ${cfg:+--config "$cfg"} >"$dir/log" 2>&1 &
+  "$bin/robuterd" --sim --sonar-model ideal --pty "$pty" --log-level warn ${cfg:+--config "$cfg"} >"$dir/log" 2>&1 &
   local pid=$!
   for _ in $(seq 100); do [[ -L "$pty" ]] && break; sleep 0.05; done
   echo -n "$label: "

@@ -17,7 +17,7 @@ out=$(mktemp); times=$(mktemp); trap 'rm -f "$out" "$times"' EXIT
 # measure N: runs N ticks; sets wall, cpu (s) and sim (simulated s, from the --stats tick line).
 measure() {
   local TIMEFORMAT='%R %U %S'
-  { time "$bin/robuterd" --sim --world "$world" --speed max --ticks "$1" --ptu-sweep --stats \
+  { time "$bin/robuterd" --sim --sonar-model ideal --world "$world" --speed max --ticks "$1" --ptu-sweep --stats \
       --log-level warn >"$out" 2>&1; } 2>"$times"
   read -r wall user sys <"$times"
   cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.3f", u + s }')

@@ -54,7 +54,7 @@ def answer_time(m, limit=10.0):
 
 
 m = plug()
-proc = subprocess.Popen([robuterd, "--sim", "--config", cfg, "--serial", dev, "--log-level", "warn"],
+proc = subprocess.Popen([robuterd, "--sim", "--sonar-model", "ideal", "--config", cfg, "--serial", dev, "--log-level", "warn"],
                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 answer_time(m)
 times, missed = [], 0

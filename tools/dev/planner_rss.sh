@@ -9,7 +9,7 @@ gy=${3:-20000}
 ticks=${4:-3000}
 dir=$(mktemp -d)
 mkfifo "$dir/in"
-"$bin" --sim --speed max --ticks "$ticks" --log-level off --stdio <"$dir/in" >"$dir/out" 2>&1 &
+"$bin" --sim --sonar-model ideal --speed max --ticks "$ticks" --log-level off --stdio <"$dir/in" >"$dir/out" 2>&1 &
 pid=$!
 # The link stays open while the simulation runs: the goal first, the status a little later.
 { echo "XG $gx $gy"; sleep 1; echo "XP"; while kill -0 "$pid" 2>/dev/null; do sleep 0.2; done; } >"$dir/in" &

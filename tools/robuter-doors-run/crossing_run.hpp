@@ -20,7 +20,7 @@ struct CrossingSetup {
   double dy_m = 0.0;              // start moved along the world y axis (towards the door), m
   double dheading_deg = 0.0;      // start heading turned, degrees (counter-clockwise)
   std::uint64_t seed = 1;         // simulator seed
-  std::optional<sim::SonarPreset> sonar_model;  // the simulator's sonar model (none: ideal)
+  sim::SonarPreset sonar_model = sim::SonarPreset::ideal;  // the simulator's sonar model
   bool odometry_noise = false;    // simulator odometry noise
   bool send_ad = true;            // send Ad once the passage finder has ended
   bool ad_even_if_gate_failed = false;  // send Ad although the passage finder failed

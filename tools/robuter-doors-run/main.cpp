@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     }
     s.odometry_noise = noise || !sonar_model.empty();
     if (noise) s.sonar_model = robuter::sim::SonarPreset::stress;
-    if (!sonar_model.empty()) s.sonar_model = robuter::sim::sonar_preset(sonar_model);
+    if (!sonar_model.empty()) s.sonar_model = *robuter::sim::sonar_preset(sonar_model);  // checked by IsMember
     s.ad_even_if_gate_failed = any;
     s.trace_every = trace;
     s.trace_echoes = echoes;
