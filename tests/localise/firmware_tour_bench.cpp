@@ -28,7 +28,17 @@ int main(int argc, char** argv) {
   spec.kidnap = std::string(argv[1]) == "kidnap";
   spec.seconds = std::atof(argv[2]);
   spec.seed = std::strtoull(argv[3], nullptr, 10);
-  spec.sonar_noise = std::getenv("ROBUTER_TOUR_IDEAL_SONAR") == nullptr;
+  // The sonars: realistic (issue #19's model), or ROBUTER_TOUR_SONAR=ideal|stress|realistic
+  // (ROBUTER_TOUR_IDEAL_SONAR, the older switch, is ideal).
+  if (std::getenv("ROBUTER_TOUR_IDEAL_SONAR") != nullptr) spec.sonar_model = robuter::sim::SonarPreset::ideal;
+  if (const char* name = std::getenv("ROBUTER_TOUR_SONAR")) {
+    const auto model = robuter::sim::sonar_preset(name);
+    if (!model) {
+      std::fprintf(stderr, "ROBUTER_TOUR_SONAR=%s: expected ideal, stress or realistic\n", name);
+      return 2;
+    }
+    spec.sonar_model = *model;
+  }
   spec.trace = std::getenv("ROBUTER_TOUR_TRACE") != nullptr;
   spec.kidnap_at = 60.0 + 41.0 * static_cast<double>(spec.seed - 1);
   spec.kidnap_back = spec.seed % 2 == 0;
@@ -37,15 +47,17 @@ int main(int argc, char** argv) {
   if (!r.ok) return 1;
   const double deg = 180.0 / M_PI;
   if (spec.kidnap) {
-    std::printf("kidnap seed %llu: carried 3 m %s at %.0f s from (%.1f, %.1f): found after %.1f s (limit %.0f s); "
+    std::printf("kidnap seed %llu, %s sonars: carried 3 m %s at %.0f s from (%.1f, %.1f): found after %.1f s (limit %.0f s); "
                 "protective stops %u, trips %u, worst activation %u us\n",
-                static_cast<unsigned long long>(spec.seed), spec.kidnap_back ? "back" : "on", r.kidnapped_at, r.kidnap_x, r.kidnap_y,
+                static_cast<unsigned long long>(spec.seed), std::string(robuter::sim::sonar_preset_name(spec.sonar_model)).c_str(),
+                spec.kidnap_back ? "back" : "on", r.kidnapped_at, r.kidnap_x, r.kidnap_y,
                 r.found_after, spec.seconds, r.protective_stops, r.trips, r.run_us_max);
     return 0;
   }
-  std::printf("tour seed %llu: %.0f s, %.0f m driven; map pose p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; "
+  std::printf("tour seed %llu, %s sonars: %.0f s, %.0f m driven; map pose p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; "
               "odometry p95 %.0f mm %.2f deg; protective stops %u, trips %u, localise worst activation %u us\n",
-              static_cast<unsigned long long>(spec.seed), spec.seconds, r.driven, 1000.0 * r.map_p95, r.map_heading_p95 * deg,
+              static_cast<unsigned long long>(spec.seed), std::string(robuter::sim::sonar_preset_name(spec.sonar_model)).c_str(),
+              spec.seconds, r.driven, 1000.0 * r.map_p95, r.map_heading_p95 * deg,
               1000.0 * r.map_worst, r.map_heading_worst * deg, 1000.0 * r.odometry_p95, r.odometry_heading_p95 * deg,
               r.protective_stops, r.trips, r.run_us_max);
   return 0;

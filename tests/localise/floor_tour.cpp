@@ -99,7 +99,7 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
   sim.world_file = ROBUTER_WORLDS_DIR "/building_floor.toml";
   sim.seed = spec.seed;
   sim.odometry_noise = true;
-  if (spec.sonar_noise) sim.sonar_model = sim::SonarPreset::stress;
+  sim.sonar_model = spec.sonar_model;
   Config cfg;
   cfg.places.file = ROBUTER_WORLDS_DIR "/building_floor.places.toml";
   cfg.localise.enabled = true;

@@ -5,13 +5,15 @@
 
 #include <cstdint>
 
+#include "hal/sim/sonar_presets.hpp"
+
 namespace robuter::test {
 
 // How the tour runs.
 struct FloorTourSpec {
   double seconds = 60.0;          // robot time driven after the start, s
   std::uint64_t seed = 1;         // the simulator's noise
-  bool sonar_noise = true;        // the ring's noise on (the odometry's always is)
+  sim::SonarPreset sonar_model = sim::SonarPreset::realistic;  // the sonars' model (the odometry's noise is always on)
   bool kidnap = false;            // carried 3 m along the loop, the firmware not told
   double kidnap_at = 60.0;        // s into the tour (the first second after it with a clear spot)
   bool kidnap_back = false;       // carried back along the loop, not on (on, where back is no clear spot)

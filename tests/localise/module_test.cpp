@@ -147,7 +147,7 @@ TEST(LocaliseModule, TracksAlongTheCorridorWhereAPoorOdometryDrifts) {
 TEST(LocaliseModule, TheOperatorsTourGoesOnPastTheDoorsWithTheWallsOnTheMapPose) {
   FloorTourSpec spec;
   spec.seconds = 420.0;
-  spec.sonar_noise = false;
+  spec.sonar_model = sim::SonarPreset::ideal;
   const FloorTourResult r = run_floor_tour(spec);
   ASSERT_TRUE(r.ok);
   EXPECT_GT(r.driven, 115.0) << "stopped for good (108 m: corridor-b-4's door)";
@@ -169,7 +169,7 @@ TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
   for (const std::uint64_t seed : {1u, 6u, 7u}) {  // firmware_tour_bench's places for these seeds
     FloorTourSpec spec;
     spec.seed = seed;
-    spec.sonar_noise = false;
+    spec.sonar_model = sim::SonarPreset::ideal;
     spec.kidnap = true;
     spec.kidnap_at = 60.0 + 41.0 * static_cast<double>(seed - 1);
     spec.kidnap_back = seed % 2 == 0;

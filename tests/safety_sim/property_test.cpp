@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,15 @@ constexpr int kShards = 4;  // the sequences are split over this many tests (cte
 int total_sequences() {
   if (const char* env = std::getenv("ROBUTER_SAFETY_SIM_SEQUENCES")) return std::max(kShards, std::atoi(env));
   return sample(1000, 100);  // 100 under the sanitizers; 10,000 in make bench
+}
+
+// The sonar model of the noisy half of the sequences: stress, or ROBUTER_SAFETY_SIM_SONAR's.
+sim::SonarPreset noisy_sonar_model() {
+  const char* env = std::getenv("ROBUTER_SAFETY_SIM_SONAR");
+  if (env == nullptr) return sim::SonarPreset::stress;
+  const auto named = sim::sonar_preset(env);
+  if (!named) ADD_FAILURE() << "ROBUTER_SAFETY_SIM_SONAR=" << env << ": expected ideal, stress or realistic";
+  return named.value_or(sim::SonarPreset::stress);
 }
 
 // Debugging a failing seed: ROBUTER_SAFETY_SIM_SEED=n runs only that sequence (in shard 0) and
@@ -264,10 +274,11 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
   }
   hal::SimOptions opt;
   opt.seed = seed;
-  // Sonar noise (range noise, lost and spurious echoes) and odometry noise in half the sequences.
+  // Sonar noise and odometry noise in half the sequences: the stress sonar model, or the one
+  // ROBUTER_SAFETY_SIM_SONAR names (realistic: issue #19's acceptance, in make bench).
   opt.odometry_noise = rng.uniform() < 0.5;
   if (opt.odometry_noise) {
-    opt.sonar_model = sim::SonarPreset::stress;
+    opt.sonar_model = noisy_sonar_model();
     ++tot.noisy;
   }
   SimFirmware fw(file.path(), cfg, opt);

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Safety figures: range read to zero speed at the drive (seeded trials), ring latency and stopped
 # full-scan time before/after the watch schedule, then the random-sequence property of
-# docs/SAFETY.md §12–§13 at bench size (10,000 sequences; make test runs 2,000).
+# docs/SAFETY.md §12–§13 at bench size (10,000 sequences; make test runs 2,000), once per sonar
+# model of the noisy half (ROBUTER_BENCH_SAFETY_SONAR, default "stress realistic": the project's
+# first noise and the realistic model, issue #19).
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 trials=${ROBUTER_BENCH_SAFETY_TRIALS:-200}
@@ -17,17 +19,18 @@ if [[ ! -x "$bin/safety_sim_test" ]]; then
   exit 1
 fi
 rule=${ROBUTER_EMERGENCY_RULE:-envelope}
-echo "50-safety: random sequences, $rule rule, $sequences sequences (4 shards, in parallel)"
 # The shards run as separate processes, in parallel; each prints its figures, then the totals.
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+status=0
+for model in ${ROBUTER_BENCH_SAFETY_SONAR:-stress realistic}; do
+echo "50-safety: random sequences, $rule rule, $sequences sequences (4 shards, in parallel), noisy half: the $model sonar model"
 pids=()
 for shard in 0 1 2 3; do
-  ROBUTER_EMERGENCY_RULE=$rule ROBUTER_SAFETY_SIM_SEQUENCES=$sequences \
+  ROBUTER_EMERGENCY_RULE=$rule ROBUTER_SAFETY_SIM_SEQUENCES=$sequences ROBUTER_SAFETY_SIM_SONAR=$model \
     "$bin/safety_sim_test" --gtest_filter="Shards/RandomSequences.*/$shard" >"$out/$shard.log" 2>&1 &
   pids+=($!)
 done
-status=0
 for pid in "${pids[@]}"; do wait "$pid" || status=1; done
 cat "$out"/[0-3].log | grep -v '^\[\|^Running main\|^Note: Google Test filter' || true
 # Totals over the shards, from the per-shard lines.
@@ -36,7 +39,8 @@ awk 'BEGIN { closest = -1 }
      /sequences with a contact while the sonar watched/ {
        split($0, f, "watched: "); split(f[2], g, ";"); contacts += g[1]
        split($0, h, "sonar on "); c = h[2] + 0; if (closest < 0 || c < closest) closest = c }
-     END { printf "50-safety: total %d sequences (%d with noise), %d with a contact while the sonar watched, " \
-                  "closest approach with the sonar on %d mm\n", seq, noisy, contacts, closest }' \
+     END { printf "50-safety: total %d sequences (%d with noise, the " model " sonar model), %d with a contact while the sonar watched, " \
+                  "closest approach with the sonar on %d mm\n", seq, noisy, contacts, closest }' model="$model" \
   "$out"/[0-3].log
+done
 exit $status
