@@ -32,11 +32,17 @@ class DistanceField {
   double max_distance() const { return max_distance_; }
   bool empty() const { return dist_.empty(); }
 
-  // Distance at the cell holding world point p, m; max_distance() outside the grid.
-  double at(const Eigen::Vector2d& p) const {
+  // Whether world point p lies on the grid.
+  bool contains(const Eigen::Vector2d& p) const {
     const double fx = (p.x() - geo_.origin.x()) / geo_.resolution;
     const double fy = (p.y() - geo_.origin.y()) / geo_.resolution;
-    if (!(fx >= 0.0 && fy >= 0.0 && fx < geo_.width && fy < geo_.height)) return max_distance_;
+    return fx >= 0.0 && fy >= 0.0 && fx < geo_.width && fy < geo_.height;
+  }
+  // Distance at the cell holding world point p, m; max_distance() outside the grid.
+  double at(const Eigen::Vector2d& p) const {
+    if (!contains(p)) return max_distance_;
+    const double fx = (p.x() - geo_.origin.x()) / geo_.resolution;
+    const double fy = (p.y() - geo_.origin.y()) / geo_.resolution;
     const auto i = static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(geo_.width) +
                    static_cast<std::size_t>(static_cast<int>(fx));
     return dist_[i];

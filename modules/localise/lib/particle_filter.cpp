@@ -53,14 +53,11 @@ double ParticleFilter::recovery_radius() const {
 
 bool ParticleFilter::random_nearby_pose(Pose& out) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const auto& g = field_.geometry();
   const double r = recovery_radius();
   for (int k = 0; k < kNearbyDraws; ++k) {
     const double d = r * std::sqrt(u(rng_)), a = 2.0 * std::numbers::pi * u(rng_);
     const Eigen::Vector2d p(anchor_.x() + d * std::cos(a), anchor_.y() + d * std::sin(a));
-    const Eigen::Vector2d c = (p - g.origin) / g.resolution;
-    if (!(c.x() >= 0.0 && c.y() >= 0.0 && c.x() < g.width && c.y() < g.height)) continue;
-    if (field_.at(p) < params_.body_clearance) continue;
+    if (!field_.contains(p) || field_.at(p) < params_.body_clearance) continue;
     // Most about the estimate's heading (a kidnapping carries the robot more than it turns it:
     // the cloud's heading is the best guess even when its place is lost); the rest any heading.
     const double heading = u(rng_) < params_.recover_heading_share
