@@ -47,7 +47,7 @@ void read_sonar_params(Fields& f, SonarParams& p) {
   // The model first: the keys below may still change each of its effects.
   if (auto v = f.opt_string("model")) {
     const auto preset = sonar_preset(*v);
-    if (!preset) f.fail_at(*f.get("model"), "model: must be \"ideal\", \"stress\" or \"realistic\"");
+    if (!preset) f.fail_at(*f.get("model"), "model: expected " + std::string(sonar_preset_choices()));
     apply_sonar_preset(*preset, p);
   }
   if (auto v = f.opt_number("half_angle_deg")) {

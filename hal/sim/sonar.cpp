@@ -60,17 +60,6 @@ bool in_cone(const Vec2& o, const Vec2& u, double ch, const Vec2& p) {
   return v.dot(u) >= ch * v.norm();
 }
 
-// Where segment p-q crosses segment a-b (the bounce point); false when they do not cross.
-bool crossing(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b, Vec2& at) {
-  const Vec2 r = q - p, s = b - a;
-  const double den = cross(r, s);
-  if (den == 0.0) return false;
-  const double t = cross(a - p, s) / den, u = cross(a - p, r) / den;
-  if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) return false;
-  at = p + t * r;
-  return true;
-}
-
 // At most this many transducers fired together are looked at for cross-talk (a node has 4).
 constexpr std::size_t kMaxFiring = 8;
 
@@ -218,28 +207,32 @@ double SonarModel::measure_from(const Vec2& origin, double direction, Rng* rng) 
 void SonarModel::measure_firing(const Pose& robot, std::span<const SonarMount> mounts,
                                 std::span<double> out, Rng* rng) {
   const std::size_t n = std::min(mounts.size(), out.size());
-  const bool mates = params_.crosstalk && n <= kMaxFiring;
-  std::array<Vec2, kMaxFiring> origins, axes;
-  if (mates) {
+  if (!params_.crosstalk || n > kMaxFiring) {
     for (std::size_t i = 0; i < n; ++i) {
+      Vec2 o;
       double d;
-      sensor_in_world(robot, mounts[i], origins[i], d);
-      axes[i] = Vec2(std::cos(d), std::sin(d));
+      sensor_in_world(robot, mounts[i], o, d);
+      out[i] = arrival(o, d, {}, {});
     }
-  }
-  std::array<Vec2, kMaxFiring> mate_o, mate_a;
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec2 o;
-    double d;
-    sensor_in_world(robot, mounts[i], o, d);
-    std::size_t m = 0;
-    for (std::size_t j = 0; mates && j < n; ++j) {
-      if (j == i) continue;
-      mate_o[m] = origins[j];
-      mate_a[m] = axes[j];
-      ++m;
+  } else {
+    // Each sensor placed once; sensor i's mates are the others, gathered in front of the span.
+    std::array<Vec2, kMaxFiring> origins, axes;
+    std::array<double, kMaxFiring> directions{};
+    for (std::size_t i = 0; i < n; ++i) {
+      sensor_in_world(robot, mounts[i], origins[i], directions[i]);
+      axes[i] = Vec2(std::cos(directions[i]), std::sin(directions[i]));
     }
-    out[i] = arrival(o, d, std::span<const Vec2>(mate_o.data(), m), std::span<const Vec2>(mate_a.data(), m));
+    std::array<Vec2, kMaxFiring> mate_o, mate_a;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t m = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        mate_o[m] = origins[j];
+        mate_a[m++] = axes[j];
+      }
+      out[i] = arrival(origins[i], directions[i], std::span<const Vec2>(mate_o.data(), m),
+                       std::span<const Vec2>(mate_a.data(), m));
+    }
   }
   for (std::size_t i = 0; i < n; ++i) out[i] = report(out[i], rng);
 }
@@ -260,25 +253,19 @@ double SonarModel::arrival(const Vec2& origin, double direction, std::span<const
   // longer than the first arrival so far, the bounce point on the edge, inside both cones.
   for (std::size_t ci = 0; !mate_origins.empty() && ci < candidates_.size(); ++ci) {
     const Segment& sg = segs[static_cast<std::size_t>(candidates_[ci].segment)];
-    const Vec2 ab = sg.b - sg.a;
-    const double len2 = ab.squaredNorm();
-    Vec2 n(-ab.y(), ab.x());
-    n /= std::sqrt(len2);
-    double dy = n.dot(origin - sg.a);  // this transducer's distance from the edge's line
-    if (dy < 0.0) {
-      n = -n;
-      dy = -dy;
-    }
+    const Vec2 n = normal_towards(sg.a, sg.b, origin);
+    const double dy = n.dot(origin - sg.a);  // this transducer's distance from the edge's line
     if (dy <= 0.0) continue;
+    const Vec2 ab = sg.b - sg.a;
     for (std::size_t k = 0; k < mate_origins.size(); ++k) {
       const double dx = n.dot(mate_origins[k] - sg.a);
       if (dx <= 0.0) continue;  // the mate on the other side
-      const Vec2 image = mate_origins[k] - 2.0 * dx * n;
+      const Vec2 image = mirror(mate_origins[k], sg.a, n);
       const double path2 = (image - origin).squaredNorm();
       if (path2 >= 4.0 * first * first || path2 < 4.0 * params_.min_range * params_.min_range) continue;
       const Vec2 bounce = origin + (dy / (dy + dx)) * (image - origin);
       const double u = (bounce - sg.a).dot(ab);
-      if (u < 0.0 || u > len2) continue;  // off the edge
+      if (u < 0.0 || u > ab.squaredNorm()) continue;  // off the edge
       if (!in_cone(origin, axis, cos_half_, bounce) || !in_cone(mate_origins[k], mate_axes[k], cos_half_, bounce)) continue;
       first = 0.5 * std::sqrt(path2);
     }
@@ -295,8 +282,8 @@ double SonarModel::arrival(const Vec2& origin, double direction, std::span<const
       const Vec2 image_axis = axis - 2.0 * n.dot(axis) * n;
       const Beyond real_side{sg.a, n, grazing->segment};
       const Echo back = trace_beyond(image, std::atan2(image_axis.y(), image_axis.x()), &real_side);
-      Vec2 bounce;
-      if (back.found && back.range < first && crossing(image, back.point, sg.a, sg.b, bounce)) first = back.range;
+      // The path back must bounce off the edge itself, not off its line beyond the edge.
+      if (back.found && back.range < first && segments_intersect(image, back.point, sg.a, sg.b)) first = back.range;
     }
   }
   return std::isfinite(first) && first <= params_.max_range() ? first : -1.0;

@@ -2,23 +2,30 @@
 // The named sonar models' values; each value's source is in SIMULATOR.md.
 #include "hal/sim/sonar_presets.hpp"
 
+#include <array>
+#include <utility>
+
 namespace robuter::sim {
 
+namespace {
+// Every model with its name, in the order the messages list them.
+constexpr std::array<std::pair<std::string_view, SonarPreset>, 3> kNames{{
+    {"ideal", SonarPreset::ideal}, {"stress", SonarPreset::stress}, {"realistic", SonarPreset::realistic}}};
+}  // namespace
+
 std::optional<SonarPreset> sonar_preset(std::string_view name) {
-  if (name == "ideal") return SonarPreset::ideal;
-  if (name == "stress") return SonarPreset::stress;
-  if (name == "realistic") return SonarPreset::realistic;
+  for (const auto& [n, preset] : kNames)
+    if (n == name) return preset;
   return std::nullopt;
 }
 
 std::string_view sonar_preset_name(SonarPreset preset) {
-  switch (preset) {
-    case SonarPreset::ideal: return "ideal";
-    case SonarPreset::stress: return "stress";
-    case SonarPreset::realistic: return "realistic";
-  }
-  return "ideal";
+  for (const auto& [n, p] : kNames)
+    if (p == preset) return n;
+  return kNames[0].first;
 }
+
+std::string_view sonar_preset_choices() { return "ideal, stress or realistic"; }
 
 void apply_sonar_preset(SonarPreset preset, SonarParams& p) {
   p.noise_sigma = 0.0;

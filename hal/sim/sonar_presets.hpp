@@ -33,6 +33,8 @@ enum class SonarPreset {
 std::optional<SonarPreset> sonar_preset(std::string_view name);
 // The preset's name.
 std::string_view sonar_preset_name(SonarPreset preset);
+// The names, for messages: "ideal, stress or realistic".
+std::string_view sonar_preset_choices();
 // Sets the preset's effects in `p` (noise, drop-outs, spurious echoes, multipath, cross-talk).
 void apply_sonar_preset(SonarPreset preset, SonarParams& p);
 

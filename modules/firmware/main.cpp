@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
   if (const auto preset = sim::sonar_preset(sonar_model)) {
     opt.sim_options.sonar_model = *preset;
   } else {
-    fmt::print(stderr, "robuterd: --sonar-model '{}': expected ideal, stress or realistic\n", sonar_model);
+    fmt::print(stderr, "robuterd: --sonar-model '{}': expected {}\n", sonar_model, sim::sonar_preset_choices());
     return kExitUsage;
   }
   if (speed == "max") {

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   if (const char* name = std::getenv("ROBUTER_TOUR_SONAR")) {
     const auto model = robuter::sim::sonar_preset(name);
     if (!model) {
-      std::fprintf(stderr, "ROBUTER_TOUR_SONAR=%s: expected ideal, stress or realistic\n", name);
+      std::fprintf(stderr, "ROBUTER_TOUR_SONAR=%s: expected %s\n", name, std::string(robuter::sim::sonar_preset_choices()).c_str());
       return 2;
     }
     spec.sonar_model = *model;

@@ -40,7 +40,7 @@ sim::SonarPreset noisy_sonar_model() {
   const char* env = std::getenv("ROBUTER_SAFETY_SIM_SONAR");
   if (env == nullptr) return sim::SonarPreset::stress;
   const auto named = sim::sonar_preset(env);
-  if (!named) ADD_FAILURE() << "ROBUTER_SAFETY_SIM_SONAR=" << env << ": expected ideal, stress or realistic";
+  if (!named) ADD_FAILURE() << "ROBUTER_SAFETY_SIM_SONAR=" << env << ": expected " << sim::sonar_preset_choices();
   return named.value_or(sim::SonarPreset::stress);
 }
 

@@ -31,7 +31,7 @@ struct Scenario {
   PanTiltMount mount;                        // pan-tilt mount
   Rng noise{1234};                           // sonar noise and manoeuvre durations
   std::array<double, kRingSensors> ranges{}; // last ring readings, m
-  std::vector<Pose> visited;                 // the pose of every fourth ring reading (models compared)
+  std::vector<Pose> visited;                 // every fourth ring reading's pose in the first 600 s (models compared)
   double pan = 0.0;         // pan direction, rad
   double pan_step = 0.0873; // 5° per firing
   long sonar_reads = 0;     // ring sensor evaluations
@@ -56,7 +56,7 @@ struct Scenario {
   // One 10 ms tick number `k`.
   void tick(long k) {
     if (k % 4 == 0) {
-      if (k % 16 == 0 && visited.size() < 20000) visited.push_back(robot.pose());
+      if (k % 16 == 0 && k < 60000) visited.push_back(robot.pose());  // the first 600 s: the same poses every run
       for (int i = 0; i < kRingSensors; ++i) ranges[i] = ring.measure(robot.pose(), layout[i], &noise);
       sonar_reads += kRingSensors;
       auto near = [&](int n) { return ranges[n - 1] > 0.0 && ranges[n - 1] < 0.9; };

@@ -44,8 +44,8 @@ TEST(SonarPaths, ABeamBouncedOffAGrazingWallComesBackByTheWallBeyondAsALongReadi
   p.multipath = true;
   model.set_params(p);
   EXPECT_NEAR(model.measure_from({0.0, 0.0}, 0.0), 3.0, 1e-9);
-  // Turned 5° either way the bounce still lands on S, square to it no more: S's echo comes
-  // back only at normal incidence, which the image transducer's cone still holds.
+  // Turned 5°, the bounce still lands on S, square to it no more: S's echo comes back from
+  // its normal foot, which the image transducer's cone still holds.
   EXPECT_GT(model.measure_from({0.0, 0.0}, deg_to_rad(5.0)), 2.5);
 }
 

@@ -91,7 +91,7 @@ int run_render(const RenderRequest& r) {
   }
 
   const auto preset = sim::sonar_preset(r.sonar_model);
-  if (!preset) return fail("--sonar-model '" + r.sonar_model + "': expected ideal, stress or realistic");
+  if (!preset) return fail("--sonar-model '" + r.sonar_model + "': expected " + std::string(sim::sonar_preset_choices()));
   sim::Rng rng(r.seed);
 
   sim::Scene scene;
