@@ -265,6 +265,8 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("gate.lateral_tolerance_mm", g.lateral_tolerance_mm, 1, 1000);
   b.integer("gate.heading_tolerance_centideg", g.heading_tolerance_centideg, 10, 3000);
   b.integer("gate.max_manoeuvres", g.max_manoeuvres, 1, 100);
+  b.integer("gate.stall_ticks", g.stall_ticks, 50, 1'000'000);
+  b.integer("gate.back_off_mm", g.back_off_mm, 0, 2000);
   b.boolean("gate.hand_over", g.hand_over);
 
   b.integer("doors.safety_mm", d.safety_mm, 0, 1000);
@@ -273,6 +275,7 @@ void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
   b.integer("doors.forward_cm_s", d.forward_cm_s, 1, 100);
   b.integer("doors.back_cm_s", d.back_cm_s, 1, 100);
   b.integer("doors.entered_mm", d.entered_mm, 100, 20'000);
+  b.integer("doors.beside_mm", d.beside_mm, 10, 20'000);
   b.integer("doors.exit_mm", d.exit_mm, 0, 10'000);
   b.integer("doors.max_age_ticks", d.max_age_ticks, 10, 1'000'000);
   b.integer("doors.same_echo_mm", d.same_echo_mm, 0, 1000);
@@ -484,6 +487,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
   b.integer("emergency.margin_mm", c.emergency.margin_mm, 0, 500);
   b.integer("emergency.creep_cm_s", c.emergency.creep_cm_s, 0, 50);
   b.integer("emergency.free_age_ms", c.emergency.free_age_ms, 10, 600'000);
+  b.integer("emergency.single_echo_ms", c.emergency.single_echo_ms, 0, 600'000);
   b.boolean("emergency.narrow_arcs", c.emergency.narrow_arcs);
   b.integer("emergency.protective_clear_ms", c.emergency.protective_clear_ms, 0, 600'000);
   b.integer("emergency.reaction_ms", c.emergency.reaction_ms, 0, 10'000);

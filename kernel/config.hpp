@@ -71,6 +71,7 @@ struct EmergencyConfig {
   std::uint32_t margin_mm = 30;              // envelope: clearance kept around the body, mm
   std::uint32_t creep_cm_s = 20;             // envelope: fastest wheel where only the blind near field is unknown, cm/s
   std::uint32_t free_age_ms = 3000;          // envelope: free space older than this is unknown again, ms
+  std::uint32_t single_echo_ms = 3000;       // envelope: one echo's evidence that no later echo marks counts this long (0: for ever), ms
   bool narrow_arcs = true;                   // envelope: an echo meeting the a-priori map's walls marks only them and what no recent cone saw through (SAFETY.md §13)
   std::uint32_t protective_clear_ms = 1000;  // envelope: an automatic mode resumes after this long clear, ms
   std::uint32_t reaction_ms = 110;           // envelope: from a decision to the next one reaching the drive, ms
@@ -122,6 +123,8 @@ struct GateConfig {
   std::uint32_t lateral_tolerance_mm = 30;   // aligned when the axle is this close to the centre line, mm
   std::uint32_t heading_tolerance_centideg = 200;  // and the heading this close to the passage's normal, 0.01°
   std::uint32_t max_manoeuvres = 6;          // manoeuvres allowed before giving up
+  std::uint32_t stall_ticks = 500;           // a manoeuvre the robot has not moved in for this long backs off, ticks
+  std::uint32_t back_off_mm = 250;           // how far it backs off before scanning again, mm
   bool hand_over = false;                    // start the door crossing when aligned (the seed's door = ON); off: it lowers the sonar without a 2nd command (SAFETY.md §1)
 };
 
@@ -134,6 +137,7 @@ struct DoorsConfig {
   std::uint32_t forward_cm_s = 2;            // speed going straight, cm/s
   std::uint32_t back_cm_s = 1;               // speed of the wheel that backs off in a turn, cm/s
   std::uint32_t entered_mm = 1500;           // both sides seen closer than this: inside the door, mm
+  std::uint32_t beside_mm = 300;             // and those echoes this close to abreast of the pan axis, mm
   std::uint32_t exit_mm = 400;               // driven on after "through" so the rear clears the door, mm
   std::uint32_t max_age_ticks = 600;         // pan-tilt readings older than this are ignored, ticks
   std::uint32_t same_echo_mm = 20;           // neighbouring sectors this close in range see the same echo, mm

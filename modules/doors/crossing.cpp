@@ -40,7 +40,7 @@ CrossingView DoorCrossing::look(const ptu::Echoes& e, const PanTiltScan& scan, s
                                 const CrossingSettings& s) {
   CrossingView v;
   const SideDistances sd = side_distances(s.body);
-  bool near_left = false, near_right = false;
+  int near_left = 0, near_right = 0;  // sectors that hear a jamb beside the pan axis, each side
   for (const ptu::Echo& x : e) {
     if (!x.valid || x.far) continue;
     const int sector = ptu::wrap_sector(static_cast<int>(std::lround(x.bearing_deg / ptu::kSectorDegrees)));
@@ -52,12 +52,15 @@ CrossingView DoorCrossing::look(const ptu::Echoes& e, const PanTiltScan& scan, s
       else if (within(sector, s.sides.left_first, s.sides.left_last)) v.threats.left = true;
       else if (within(sector, s.sides.right_first, s.sides.right_last)) v.threats.right = true;
     }
-    if (x.range_mm < s.entered_mm) {
-      if (x.bearing_deg >= 60.0 && x.bearing_deg <= 120.0) near_left = true;
-      if (x.bearing_deg <= -60.0 && x.bearing_deg >= -120.0) near_right = true;
+    // Inside: the jambs beside the pan axis, heard by two sectors or more on each side — not the
+    // wall ahead heard at 60°, nor one spurious echo a side (the realistic sonar model, issue #19:
+    // "through" came with the body still before the door).
+    if (x.range_mm < s.entered_mm && std::abs(x.x_mm - s.echoes.pivot_x_mm) <= s.beside_mm) {
+      if (x.bearing_deg >= 60.0 && x.bearing_deg <= 120.0) ++near_left;
+      if (x.bearing_deg <= -60.0 && x.bearing_deg >= -120.0) ++near_right;
     }
   }
-  v.entered = near_left && near_right;
+  v.entered = near_left >= 2 && near_right >= 2;
   // The opening just ahead of the front face: its narrowest left and right edges. Narrower than
   // the body plus its margins, it blocks both sides at once (the seed's rules see one edge at a
   // time, turn away from it into the other, and wander in front of a gap it can never pass).
@@ -123,15 +126,25 @@ CrossingOutput DoorCrossing::step(const CrossingInputs& in) {
 
   if (state_ == ModeState::leaving) {
     const double dx = (in.pose.x - leave_from_.x) * 0.1, dy = (in.pose.y - leave_from_.y) * 0.1;
-    if (std::hypot(dx, dy) >= s_.exit_mm || st != Steer::straight) {
-      state_ = ModeState::crossed;  // clear of the door, or something ahead: stop here, through
+    if (std::hypot(dx, dy) >= s_.exit_mm) {
+      state_ = ModeState::crossed;  // the rear has left the doorway
       return out(Steer::stop);
     }
-    return out(Steer::straight);
+    // The rear still in the doorway: the seed's rules go on (ending "crossed" at the first threat
+    // left the body in the door, issue #19): turn away from one side; blocked on both, wait and
+    // give up as a blocked crossing does.
+    if (st == Steer::stop) {
+      if (wait_since_ == 0) wait_since_ = in.tick;
+      else if (in.tick - wait_since_ > s_.time_before_move_ticks) fail(ModeReason::cant_cross);
+      return out(Steer::stop);
+    }
+    wait_since_ = 0;
+    return out(st);
   }
   if (entered_ && view_.clear) {  // seed: "Door crossed successfully"
     state_ = s_.exit_mm > 0.0 ? ModeState::leaving : ModeState::crossed;
     leave_from_ = in.pose;
+    wait_since_ = 0;
     return out(state_ == ModeState::leaving && st == Steer::straight ? Steer::straight : Steer::stop);
   }
   if (st == Steer::stop) {

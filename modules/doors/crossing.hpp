@@ -21,6 +21,7 @@ struct CrossingSettings {
   std::int32_t max_dist_mm = 1500;           // MAX_DIST
   std::uint32_t time_before_move_ticks = 500;  // TIME_BEFORE_MOVE
   std::int32_t entered_mm = 1500;            // both sides this close: inside the door
+  double beside_mm = 300.0;                  // and each side's echo this close to abreast of the pan axis, mm
   double look_ahead_mm = 300.0;              // edges this far ahead of the front face measure the opening
   double spread_weight = 0.0;                // an echo is judged over this fraction of its uncertainty (0: at its bearing)
   double exit_mm = 400.0;                    // driven on once through

@@ -19,6 +19,7 @@ CrossingSettings crossing_settings(const Config& c) {
   s.max_dist_mm = static_cast<std::int32_t>(c.doors.max_dist_mm);
   s.time_before_move_ticks = c.doors.time_before_move_ticks;
   s.entered_mm = static_cast<std::int32_t>(c.doors.entered_mm);
+  s.beside_mm = c.doors.beside_mm;
   s.exit_mm = c.doors.exit_mm;
   s.max_age_ticks = c.doors.max_age_ticks;
   s.timeout_ticks = c.doors.timeout_ticks;

@@ -312,10 +312,12 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
     // certificate along nearly the same line of sight clears it, even a no-echo's. Hard
     // evidence stays hard.
     Cell& cell = cells_[arc[k]];
-    const bool hard_before = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick && (flags_[arc[k]] & kSoft) == 0;
+    const bool evidence_before = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
+    const bool hard_before = evidence_before && (flags_[arc[k]] & kSoft) == 0;
     const bool soft = explained && on_structure[k] == 0 && !hard_before;
     cell.hit_tick = tick;
-    flags_[arc[k]] = soft ? kSoft : 0;  // observed here
+    // Observed here. Evidence a second echo marks (or carried evidence) is confirmed: never single.
+    flags_[arc[k]] = static_cast<std::uint8_t>((soft ? kSoft : 0) | (evidence_before ? 0 : kSingle));
     sight_[arc[k]] = sight[k];
   }
 }
@@ -353,7 +355,13 @@ CellState EvidenceGrid::state(const Eigen::Vector2d& p, std::uint64_t tick, std:
   const int gx = index(p.x()), gy = index(p.y());
   if (!placed_ || !contains(gx, gy)) return CellState::unknown;
   const Cell& cell = at(gx, gy);
-  if (cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick) return CellState::obstacle;
+  if (cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick) {
+    // One echo's evidence that no later echo confirmed counts single_age ticks; then the cell is
+    // what its certificates say (as a rule stale: no speed but a hold or the blind creep).
+    const bool expired = s_.single_age > 0 && (flags_[slot(gx, gy)] & kSingle) != 0 && cell.hit_tick < tick &&
+                         tick - cell.hit_tick > s_.single_age;
+    if (!expired) return CellState::obstacle;
+  }
   if (cell.free_tick == 0) return CellState::unknown;
   return tick - cell.free_tick <= max_age || cell.free_tick > tick ? CellState::free : CellState::stale;
 }

@@ -55,6 +55,9 @@ struct GridSettings {
   // known structure on the arc, or narrow_age 0, the whole arc is marked.
   std::uint64_t narrow_age = 0;     // ticks
   double narrow_sight = 0.3491;     // rad (20°)
+  // Evidence of one echo that no later echo marked again counts this long (0: for ever): a
+  // spurious echo's arc, left where no cone looks again (docs/SAFETY.md §13, "Unconfirmed").
+  std::uint64_t single_age = 0;     // ticks
 };
 
 // A rolling window of cells centred on the robot (toroidal storage: moving the window clears only
@@ -102,6 +105,7 @@ class EvidenceGrid {
   bool sees_through(const SeenCone& c, const Eigen::Vector2d& p, const Eigen::Vector2d& from, std::uint64_t tick) const;
   // Changes how long a cone narrows an arc (the kernel's tick is known at init), ticks.
   void set_narrow_age(std::uint64_t ticks) { s_.narrow_age = ticks; }
+  void set_single_age(std::uint64_t ticks) { s_.single_age = ticks; }
   // The structure that explains echoes (nullptr: none, no narrowing); it must outlive the grid.
   void set_known_structure(KnownStructure* known) { known_ = known; }
   // Where the known structure lies now (KnownStructure::update), once per activation.
@@ -169,7 +173,8 @@ class EvidenceGrid {
   std::vector<Carried> next_;            // scratch of carry(), kCarried reserved at construction
   static constexpr std::uint8_t kFromCarry = 1;  // flag: the cell's evidence came from carry()
   static constexpr std::uint8_t kSoft = 2;       // flag: the cell's evidence is only explained arcs' (mark_arc)
-  std::vector<std::uint8_t> flags_;              // per slot: kFromCarry, kSoft
+  static constexpr std::uint8_t kSingle = 4;     // flag: one echo's evidence, not marked again since (mark_arc)
+  std::vector<std::uint8_t> flags_;              // per slot: kFromCarry, kSoft, kSingle
   std::vector<std::uint8_t> sight_;              // per slot: the line of sight of its last echo (sight_code)
   int mask_ = 255;           // side − 1
   std::vector<Cell> cells_;  // side² cells, slot (gx mod side, gy mod side)

@@ -71,6 +71,7 @@ void RingEnvelope::set_tick(double tick_s) {
   // A certificate rules a cell out as an echo's reflector for as long as the sweep trusts it to
   // drive through that cell (docs/SAFETY.md §13, "Evidence").
   grid_.set_narrow_age(cfg_.narrow_arcs ? e.free_age_ticks : 0);
+  grid_.set_single_age(static_cast<std::uint64_t>(std::ceil(cfg_.single_echo_ms / 1000.0 / tick_s)));
 }
 
 void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest) {

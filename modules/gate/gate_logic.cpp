@@ -48,6 +48,10 @@ void GateLogic::start(std::uint64_t tick) {
   reason_ = ModeReason::none;
   unlocked_since_ = 0;
   manoeuvres_ = 0;
+  back_offs_ = 0;
+  disagreements_ = 0;
+  unsettled_ = 0;
+  last_sighting_ = Sighting{};
   estimate_ = DoorEstimate{};
   go_.cancel();
 }
@@ -102,15 +106,51 @@ GateOutput GateLogic::step(const GateInputs& in) {
     default:
       break;
   }
+  if (phase_ == Phase::back) {
+    // Straight back until back_off_mm from where it began, or held again: then look again.
+    const double dx = in.pose.x - back_from_.x, dy = in.pose.y - back_from_.y;
+    if (std::hypot(dx, dy) >= 10.0 * s_.back_off_mm || stalled(in)) {
+      enter(Phase::settle, in);
+      state_ = ModeState::searching;
+      return out(0, 0);
+    }
+    return out(-s_.speed_cm_s, -s_.speed_cm_s);
+  }
   // Manoeuvring: one controller step from the current odometry.
   const motion::WheelSpeeds w = go_.step(motion::PostureUnits{in.pose.x, in.pose.y, in.pose.theta});
   if (!go_.active()) {
-    phase_ = Phase::settle;
-    phase_tick_ = in.tick;
+    enter(Phase::settle, in);
     state_ = ModeState::searching;
     return out(0, 0);
   }
+  // Held where it stands (a protective stop the ring cannot lift from here: evidence in the
+  // near field of the body, docs/DOORS.md §2): back off and look again from farther away.
+  if (stalled(in)) {
+    go_.cancel();
+    ++back_offs_;
+    back_from_ = in.pose;
+    enter(Phase::back, in);
+    return out(-s_.speed_cm_s, -s_.speed_cm_s);
+  }
   return out(w.left, w.right);
+}
+
+void GateLogic::enter(Phase p, const GateInputs& in) {
+  phase_ = p;
+  phase_tick_ = in.tick;
+  moved_pose_ = in.pose;
+  moved_tick_ = in.tick;
+}
+
+bool GateLogic::stalled(const GateInputs& in) {
+  const double dx = in.pose.x - moved_pose_.x, dy = in.pose.y - moved_pose_.y;
+  const std::int64_t dth = motion::wrap_centideg(static_cast<std::int64_t>(in.pose.theta) - moved_pose_.theta);
+  if (std::hypot(dx, dy) >= 50.0 || std::abs(dth) >= 50) {  // 5 mm, 0.5°
+    moved_pose_ = in.pose;
+    moved_tick_ = in.tick;
+    return false;
+  }
+  return in.tick - moved_tick_ >= s_.stall_ticks;
 }
 
 // Why a staging pose rather than the seed's reactive turns: one scan from a standstill gives the
@@ -133,7 +173,31 @@ void GateLogic::evaluate(const GateInputs& in) {
     scan_from_ = in.tick;
     return;
   }
+  // Acted on only when two scans in a row agree (in the odometry frame): one scan's spurious or
+  // lost echoes can move an edge by half a metre (issue #19), two scans rarely the same way.
+  const double th = in.pose.theta * 0.01 * kRad;
+  Sighting now;
+  now.ok = true;
+  now.x_mm = in.pose.x / 10.0 + estimate_.center_x * std::cos(th) - estimate_.center_y * std::sin(th);
+  now.y_mm = in.pose.y / 10.0 + estimate_.center_x * std::sin(th) + estimate_.center_y * std::cos(th);
+  now.normal_deg = in.pose.theta * 0.01 + estimate_.normal_deg;
+  const Sighting before = last_sighting_;
+  last_sighting_ = now;
+  const double turn = std::remainder(now.normal_deg - before.normal_deg, 360.0);
+  if (!before.ok || std::hypot(now.x_mm - before.x_mm, now.y_mm - before.y_mm) > s_.agree_mm ||
+      std::abs(turn) > s_.agree_deg) {
+    if (before.ok) ++disagreements_;
+    if (++unsettled_ > s_.max_looks) {
+      fail(ModeReason::no_passage);
+      return;
+    }
+    phase_ = Phase::scan;
+    phase_tick_ = in.tick;
+    scan_from_ = in.tick;
+    return;
+  }
   unlocked_since_ = 0;
+  unsettled_ = 0;
   const DoorEstimate& d = estimate_;
   const double nx = std::cos(d.normal_deg * kRad), ny = std::sin(d.normal_deg * kRad);
   // The axle (origin) against the centre line through the passage's centre along the normal.
@@ -155,8 +219,7 @@ void GateLogic::evaluate(const GateInputs& in) {
   // The staging pose: on the centre line, stage_mm (front face) before the passage, facing it.
   const double back = s_.stage_mm + s_.axle_to_front_mm;
   go_.start(compose(in.pose, d.center_x - back * nx, d.center_y - back * ny, d.normal_deg));
-  phase_ = Phase::move;
-  phase_tick_ = in.tick;
+  enter(Phase::move, in);
   state_ = ModeState::moving;
 }
 

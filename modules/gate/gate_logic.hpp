@@ -23,6 +23,11 @@ struct GateSettings {
   double heading_tolerance_deg = 2.0;  // aligned: heading this close to the passage's direction
   double distance_tolerance_mm = 150.0;  // aligned: front face this close to stage_mm (farther: drive on)
   std::uint32_t max_manoeuvres = 6;    // manoeuvres before giving up
+  std::uint32_t stall_ticks = 500;     // a manoeuvre that has not moved the robot for this long backs off, ticks
+  double back_off_mm = 250.0;          // how far it backs off straight before scanning again, mm
+  double agree_mm = 100.0;             // two scans agree when their passage centres are this close, mm
+  double agree_deg = 5.0;              // and their directions through it, degrees
+  std::uint32_t max_looks = 8;         // scans in a row that disagree with the one before: no passage
   double axle_to_front_mm = 695.0;     // wheel axle to the front face (pan_x + pivot_x), mm
   std::uint32_t settle_ticks = 20;     // still after stopping before a scan counts, ticks
   std::uint32_t scan_timeout_ticks = 1500;  // a complete fresh scan not in after this: scanner trouble, ticks
@@ -60,13 +65,21 @@ class GateLogic {
   bool active() const { return phase_ != Phase::idle; }
   const DoorEstimate& last_estimate() const { return estimate_; }
   std::uint32_t manoeuvres() const { return manoeuvres_; }
+  // Manoeuvres given up because the robot stood still (held by the safety core) and backed off.
+  std::uint32_t back_offs() const { return back_offs_; }
+  // Scans whose passage disagreed with the previous scan's (looked at again, not acted on).
+  std::uint32_t disagreements() const { return disagreements_; }
   // The last alignment errors measured: lateral (mm, + left of the centre line), heading (degrees).
   double lateral_error_mm() const { return lateral_mm_; }
   double heading_error_deg() const { return heading_deg_; }
   double front_distance_mm() const { return front_mm_; }
 
  private:
-  enum class Phase : std::uint8_t { idle, settle, scan, move };
+  enum class Phase : std::uint8_t { idle, settle, scan, move, back };
+  // Whether the robot has not moved (5 mm, 0.5°) for stall_ticks; notes the pose when it has.
+  bool stalled(const GateInputs& in);
+  // Begins the phase at `tick`, the pose as the stall watch's reference.
+  void enter(Phase p, const GateInputs& in);
   // Reads the fresh scan: lock, estimate, decide aligned / manoeuvre / wait / give up.
   void evaluate(const GateInputs& in);
   GateOutput out(std::int32_t l, std::int32_t r) const;
@@ -80,6 +93,19 @@ class GateLogic {
   std::uint64_t scan_from_ = 0;        // sectors read after this tick make a fresh scan
   std::uint64_t unlocked_since_ = 0;   // first evaluation without a lock (0: locked or none yet)
   std::uint32_t manoeuvres_ = 0;
+  std::uint32_t back_offs_ = 0;        // manoeuvres given up for a back-off in this run, count
+  SectorPose moved_pose_{};            // where the robot was when it last moved (stall watch; back-off start)
+  SectorPose back_from_{};             // where the back-off began
+  // The passage as one scan saw it, in the odometry frame: what the next scan must agree with.
+  struct Sighting {
+    bool ok = false;                   // a passage was estimated
+    double x_mm = 0.0, y_mm = 0.0;     // its centre, odometry frame, mm
+    double normal_deg = 0.0;           // the direction through it, odometry frame, degrees
+  };
+  Sighting last_sighting_{};           // the previous scan's (none at a start)
+  std::uint32_t disagreements_ = 0;    // scans that disagreed with the one before, this run, count
+  std::uint32_t unsettled_ = 0;        // scans in a row without two agreeing, count
+  std::uint64_t moved_tick_ = 0;       // when it last moved, ticks
   DoorEstimate estimate_{};
   double lateral_mm_ = 0.0, heading_deg_ = 0.0, front_mm_ = 0.0;
 };

@@ -23,6 +23,8 @@ GateSettings gate_settings(const Config& c) {
   s.lateral_tolerance_mm = c.gate.lateral_tolerance_mm;
   s.heading_tolerance_deg = c.gate.heading_tolerance_centideg / 100.0;
   s.max_manoeuvres = c.gate.max_manoeuvres;
+  s.stall_ticks = c.gate.stall_ticks;
+  s.back_off_mm = c.gate.back_off_mm;
   s.axle_to_front_mm = m.body.axle_to_front * 1000.0;
   s.wheel_base_mm = c.robot.wheel_base_mm;
   return s;

@@ -75,7 +75,14 @@ void locate_echoes(const PanTiltScan& scan, const SectorPose& now, std::uint64_t
         const std::uint64_t tj = scan.read_tick[j];
         if (mates[j] && (tj > e.tick ? tj - e.tick : e.tick - tj) > g.run_window_ticks) mates[j] = false;
       }
-      const BearingInterval b = echo_interval(scan.raw, mates, k, g);
+      BearingInterval b = echo_interval(scan.raw, mates, k, g);
+      if (b.empty()) {
+        // The neighbours contradict each other: one of them lied. A neighbour that heard nothing
+        // is the likelier liar (a lost echo, issue #19's realistic sonar): bound by echoes only.
+        std::array<bool, kSectors> heard = mates;
+        for (std::size_t j = 0; j < heard.size(); ++j) heard[j] = heard[j] && scan.raw[j] < g.far_mm;
+        b = echo_interval(scan.raw, heard, k, g);
+      }
       if (!b.empty()) {
         // The interval is in nominal sector angles; the firing was within a degree of them.
         const double nominal = kSectorDegrees * k;

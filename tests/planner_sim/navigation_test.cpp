@@ -12,6 +12,7 @@
 
 #include "picture/page.hpp"
 #include "tests/planner_sim/nav_harness.hpp"
+#include "tests/support/sample.hpp"
 
 namespace robuter {
 namespace {
@@ -46,6 +47,13 @@ Config lab_config() {
   return cfg;
 }
 
+// The lab run's start: the odometry set to (2.5, 2.0), then XG to (15.0, 5.5).
+void start_lab_run(test::SimFirmware& fw) {
+  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
+  fw.run_ticks(5);
+  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+}
+
 // Why: with the simulator's sonar noise, obstacle evidence the ring can never clear again (seed 1:
 // 11 m into the run, a turn paused by a protective stop) left the planner `moving` for ever, the
 // robot still (600 s simulated, before). A motion paused 3 s is replanned, and after 5 such
@@ -58,9 +66,7 @@ TEST(PlannerSim, WithSonarNoiseANavigationAlwaysEnds) {
   sim.seed = 1;
   test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg, sim, false, "");
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
-  fw.run_ticks(5);
-  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  ASSERT_NO_FATAL_FAILURE(start_lab_run(fw));
   const test::NavRecord r = test::run_navigation(fw, 40'000, 15.0, 5.5, "seed000-noise");
   std::printf("seed000 lab, sonar noise seed 1: state %d, %u plans, %.1f s simulated, %.2f m driven, min clearance %.3f m\n",
               static_cast<int>(r.state), r.plans, r.seconds, r.travelled, r.min_clearance);
@@ -93,9 +99,7 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   }
   test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", lab_config(), sim, false, pictures.string());
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
-  fw.run_ticks(5);
-  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  ASSERT_NO_FATAL_FAILURE(start_lab_run(fw));
   const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000");
   std::printf("seed000 lab: state %d, %u plans (%u replans), %u scans, %.1f s simulated, %.2f m driven, "
               "min clearance %.3f m, final error %.3f m, worst activation %u us, %d pictures, %u trips\n",
@@ -126,6 +130,34 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithNoPriorMap) {
   if (keep == nullptr) std::filesystem::remove_all(pictures);
 }
 
+// Issue #19: the same lab run with the realistic sonar model (multipath, cross-talk, lost and
+// spurious echoes) and odometry noise, seeded 1..3 (ROBUTER_LAB_SEEDS=n runs 1..n): every run
+// reaches the goal, without a contact or an emergency. The planner's map and the envelope take
+// the ring's noise as it comes (docs/PLANNER.md, docs/SAFETY.md §13 "Unconfirmed").
+TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithTheRealisticSonar) {
+  const int seeds = std::getenv("ROBUTER_LAB_SEEDS") ? std::atoi(std::getenv("ROBUTER_LAB_SEEDS")) : test::sample(3, 1);
+  for (int seed = 1; seed <= seeds; ++seed) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    Config cfg = lab_config();
+    cfg.emergency.comm_limit_ticks = 100'000;  // the test's link is silent: only the planner ends the run
+    hal::SimOptions sim;
+    sim.sonar_model = sim::SonarPreset::realistic;
+    sim.odometry_noise = true;
+    sim.seed = static_cast<std::uint64_t>(seed);
+    test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg, sim, false, "");
+    ASSERT_TRUE(fw.ok()) << fw.error();
+    ASSERT_NO_FATAL_FAILURE(start_lab_run(fw));
+    const test::NavRecord r = test::run_navigation(fw, 90'000, 15.0, 5.5, "seed000-realistic");
+    std::printf("seed000 lab, realistic sonar and odometry noise, seed %d: state %d, %u plans, %.1f s simulated, %.2f m "
+                "driven, min clearance %.3f m, final error %.3f m (world), %u trips\n",
+                seed, static_cast<int>(r.state), r.plans, r.seconds, r.travelled, r.min_clearance, r.final_error, r.trips);
+    EXPECT_EQ(r.state, PlannerState::reached);
+    EXPECT_FALSE(r.bumper);
+    EXPECT_EQ(r.trips, 0u);
+    EXPECT_GT(r.min_clearance, 0.0);
+  }
+}
+
 // (b) The same run with the default [planner] configuration (a 16 x 16 m window around the
 // odometry origin, which does not hold the goal): the XG moves the window between the robot and
 // the goal (docs/PLANNER.md, "The window"), then the run is (a)'s.
@@ -134,9 +166,7 @@ TEST(PlannerSim, ReachesTheGoal13mAwayInTheSeed000LabWithTheDefaultMapWindow) {
   if (const char* rule = std::getenv("ROBUTER_EMERGENCY_RULE")) cfg.emergency.rule = rule;
   test::SimFirmware fw(ROBUTER_WORLDS_DIR "/seed000_lab.toml", cfg);
   ASSERT_TRUE(fw.ok()) << fw.error();
-  ASSERT_EQ(fw.ask("AC 25000 20000 0"), "ack");
-  fw.run_ticks(5);
-  ASSERT_EQ(fw.ask("XG 150000 55000"), "ack");
+  ASSERT_NO_FATAL_FAILURE(start_lab_run(fw));
   const test::NavRecord r = test::run_navigation(fw, 60'000, 15.0, 5.5, "seed000-default");
   const PlannerModule* pm = test::planner_of(fw);
   ASSERT_NE(pm, nullptr);

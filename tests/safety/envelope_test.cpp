@@ -213,6 +213,25 @@ TEST(EvidenceGrid, ANoEchoAlongTheSameLineClearsOnlySoftEvidence) {
   }
 }
 
+// One echo that no later echo marks again counts single_age ticks (a spurious echo's arc, left
+// where no cone of the ring looks again: docs/SAFETY.md §13, "Unconfirmed"); then the cell is
+// what its certificates say. A second echo on the cell confirms it for good.
+TEST(EvidenceGrid, OneEchoNotMarkedAgainCountsSingleAgeASecondConfirmsIt) {
+  EvidenceGrid g = placed_grid();
+  g.set_single_age(300);
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  ASSERT_EQ(g.state({1.01, 0.0}, 10, kAge), CellState::obstacle);
+  EXPECT_EQ(g.state({1.01, 0.0}, 310, kAge), CellState::obstacle) << "within single_age";
+  EXPECT_EQ(g.state({1.01, 0.0}, 311, kAge), CellState::unknown) << "past it: never certified, unknown";
+  // A second echo from elsewhere whose arc crosses the cell: confirmed, for good.
+  g.add_reading(20, {0.0, 0.5}, -std::atan2(0.5, 1.01), std::hypot(1.01, 0.5), false, true);
+  EXPECT_EQ(g.state({1.01, 0.0}, 100'000, kAge), CellState::obstacle) << "two echoes: confirmed";
+  // Without single_age (the default) one echo counts for ever.
+  EvidenceGrid h = placed_grid();
+  h.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  EXPECT_EQ(h.state({1.01, 0.0}, 100'000, kAge), CellState::obstacle);
+}
+
 // AC sets the odometry: the robot stays, its coordinates move. Evidence goes with the world into
 // the new frame (never narrower), free certificates are forgotten.
 TEST(EvidenceGrid, ANewOdometryFrameCarriesTheEvidenceAndForgetsFreeSpace) {

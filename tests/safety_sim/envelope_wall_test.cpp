@@ -69,12 +69,13 @@ struct Approach {
 };
 
 // Straight at the wall at `speed` cm/s with the node delay `ud` and auto-toggle `uu`, the operator
-// repeating the AM until a protective stop leaves the robot at rest facing the wall.
-Approach approach(int speed, int ud, bool uu, bool check_cap) {
+// repeating the AM until a protective stop leaves the robot at rest facing the wall, within
+// `rest_within` m of it (a spurious echo of a noisy ring may stop it farther, for a while).
+Approach approach(int speed, int ud, bool uu, bool check_cap, hal::SimOptions sim = {}, double rest_within = 0.5) {
   Approach out;
   const Config cfg = envelope_rule_config(core_config());
   const StopModel model(cfg);
-  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", cfg);
+  SimFirmware fw(ROBUTER_SAFETY_SIM_WORLDS "/wall_ahead.toml", cfg, sim);
   EXPECT_TRUE(fw.ok()) << fw.error();
   if (!fw.ok()) return out;
   SafetyMonitor mon;
@@ -122,7 +123,7 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
     fw.step();
     const EmergencyState& e = fw.bb().emergency.reader().peek();
     const bool still = robot.wheel_speeds().left == 0.0 && robot.wheel_speeds().right == 0.0;
-    if (e.protective && still && kWallFaceX - front() < 0.5) {
+    if (e.protective && still && kWallFaceX - front() < rest_within) {
       out.at_rest = true;
       break;
     }
@@ -144,6 +145,18 @@ Approach approach(int speed, int ud, bool uu, bool check_cap) {
     out.overruns = st.overruns;
   }
   return out;
+}
+
+// Every setting acked, at rest by a protective stop, no contact or other violation, no
+// emergency, and the clearance between the margin and `hi_mm`.
+void expect_stopped_before_the_wall(const Approach& a, const StopModel& model, double hi_mm) {
+  EXPECT_TRUE(a.acked) << "every setting and request is acked";
+  EXPECT_TRUE(a.at_rest) << "the robot came to rest before the wall by a protective stop";
+  EXPECT_EQ(a.contacts, 0u) << a.first_violation;
+  EXPECT_EQ(a.violations, 0u) << a.first_violation;
+  EXPECT_EQ(a.trips, 0u) << "an obstacle in the envelope is a protective stop, not an emergency";
+  EXPECT_GE(a.clearance_mm, model.margin * 1000.0) << "the margin is kept";
+  EXPECT_LE(a.clearance_mm, hi_mm) << "stopped within margin + stopping distance + 100 mm";
 }
 
 // Acceptance: 10, 30, 60, 100 cm/s × UD 3, 10, 35, 100, 1000 × Uu 0/1 — every setting acked, no
@@ -174,13 +187,7 @@ TEST(EnvelopeWall, EverySpeedNodeDelayAndAutoToggleStopsBetweenTheMarginAndTheSt
                     a.clearance_mm, a.min_clearance_mm, a.seconds, a.protective);
         if (a.cap_samples > 0) std::printf("%.3f (%d)\n", a.min_cap_ratio, a.cap_samples);
         else std::printf("-\n");
-        EXPECT_TRUE(a.acked) << "every setting and request is acked";
-        EXPECT_TRUE(a.at_rest) << "the robot came to rest before the wall by a protective stop";
-        EXPECT_EQ(a.contacts, 0u) << a.first_violation;
-        EXPECT_EQ(a.violations, 0u) << a.first_violation;
-        EXPECT_EQ(a.trips, 0u) << "an obstacle in the envelope is a protective stop, not an emergency";
-        EXPECT_GE(a.clearance_mm, model.margin * 1000.0) << "the margin is kept";
-        EXPECT_LE(a.clearance_mm, hi) << "stopped within margin + stopping distance + 100 mm";
+        expect_stopped_before_the_wall(a, model, hi);
         if (fresh) {
           EXPECT_GT(a.cap_samples, 0);
           EXPECT_GE(a.min_cap_ratio, 0.9) << "granted speed ≥ 90 % of the analytic cap on the evidence ahead";
@@ -195,6 +202,31 @@ TEST(EnvelopeWall, EverySpeedNodeDelayAndAutoToggleStopsBetweenTheMarginAndTheSt
               worst_us, mean_us / std::max(runs, 1), static_cast<unsigned long long>(overruns), worst_ratio);
   RecordProperty("worst_cap_ratio", std::to_string(worst_ratio));
   RecordProperty("emergency_max_us", std::to_string(worst_us));
+}
+
+// Issue #19: the same approaches with the realistic sonar model (multipath, cross-talk, lost and
+// spurious echoes) and odometry noise, seeded: no contact, no emergency, at rest between the
+// margin and margin + stopping distance + 100 mm. The emergency module filters nothing: a
+// spurious echo in the envelope stops the robot (a protective stop) and the operator's repeated
+// AM goes on once it is clear. UD 3 and 10 (the ring's fresh data), Uu0.
+TEST(EnvelopeWall, WithTheRealisticSonarEverySpeedStopsBetweenTheMarginAndTheStoppingDistance) {
+  const Config cfg = envelope_rule_config(core_config());
+  const StopModel model(cfg);
+  std::printf("realistic sonar: speed  UD  clearance at rest  min clearance  time to rest  protective\n");
+  for (int speed : {10, 30, 60, 100}) {
+    for (int ud : {3, 10}) {
+      SCOPED_TRACE(testing::Message() << speed << " cm/s, UD" << ud << ", realistic sonar");
+      hal::SimOptions sim;
+      sim.sonar_model = sim::SonarPreset::realistic;
+      sim.odometry_noise = true;
+      sim.seed = static_cast<std::uint64_t>(speed * 100 + ud);
+      const double hi = (model.margin + model.stopping(speed / 100.0) + 0.1) * 1000.0;
+      const Approach a = approach(speed, ud, false, false, sim, hi / 1000.0);
+      std::printf("                 %3d cm/s %4d  %7.1f mm        %7.1f mm     %6.1f s     %3u\n", speed, ud,
+                  a.clearance_mm, a.min_clearance_mm, a.seconds, a.protective);
+      expect_stopped_before_the_wall(a, model, hi);
+    }
+  }
 }
 
 // Not a toy: 30 cm/s down the middle of a 1.2 m corridor (0.25 m each side of the body) keeps a

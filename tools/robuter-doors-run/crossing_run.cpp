@@ -15,6 +15,7 @@
 #include "hal/sim/rng.hpp"
 #include "modules/doors/doors_module.hpp"
 #include "modules/emergency/emergency.hpp"
+#include "modules/gate/gate_module.hpp"
 #include "modules/firmware/sim_firmware.hpp"
 #include "tools/robuter-doors-run/crossing_picture.hpp"
 
@@ -107,6 +108,17 @@ CrossingResult run_crossing(const CrossingSetup& s) {
       for (int i = 0; i < max_ticks && !done(); i += 500) {
         fw.run_until(done, 500);
         if (!done()) fw.ask("XD");
+        if (s.trace_every > 0) {  // the finder's progress: pose, state, manoeuvres, the envelope's stops
+          const auto& q = fw.sim().robot().pose();
+          const auto& e = fw.bb().emergency.reader().peek();
+          const auto* gm = fw.module<GateModule>("gate");
+          std::printf("  gate t %7.2f pose (%.3f, %.3f, %6.1f) state %d manoeuvres %u lateral %.0f mm heading %.1f deg "
+                      "front %.0f mm | protective %d stops %u granted %u%% held %d trips %u\n",
+                      fw.seconds(), q.x, q.y, q.theta * 180 / M_PI, static_cast<int>(gate().state),
+                      gm ? gm->logic().manoeuvres() : 0, gm ? gm->logic().lateral_error_mm() : 0.0,
+                      gm ? gm->logic().heading_error_deg() : 0.0, gm ? gm->logic().front_distance_mm() : 0.0,
+                      e.protective, e.protective_stops, e.granted_pct, e.held, e.trips);
+        }
       }
     };
     run_until_end([&] { return gate().state == ModeState::aligned || gate().state == ModeState::failed; }, 30000);
