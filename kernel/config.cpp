@@ -442,7 +442,8 @@ void bind_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& plan
 }
 
 // Binds every section of the schema.
-void bind(Binder& b, const toml::table& root, Config& c) {
+void bind(Binder& b, const std::shared_ptr<const toml::table>& document, Config& c) {
+  const toml::table& root = *document;
   constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
   for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
                         "demo", "process", "modules", "links", "hardware", "can", "places", "localise"})
@@ -450,7 +451,7 @@ void bind(Binder& b, const toml::table& root, Config& c) {
 
   b.foreign("sim");  // the simulated robot's own parameters: hal/sitl checks them
   if (const toml::node* n = b.claim("sim"); n && n->is_table())
-    c.sim = std::make_shared<const SimSection>(SimSection{*n->as_table()});
+    c.sim = std::make_shared<const SimSection>(SimSection{document, n->as_table()});
 
   b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
   b.boolean("kernel.realtime", c.kernel.realtime);
@@ -567,13 +568,13 @@ robot::RobotModel robot_model(const Config& c) {
 std::optional<ConfigError> parse_config(std::string_view text, const std::string& file, Config& out) {
   Config c;
   c.source = file;
-  toml::table root;
+  auto root = std::make_shared<toml::table>();
   try {
-    root = toml::parse(text, file);
+    *root = toml::parse(text, file);
   } catch (const toml::parse_error& e) {
     return ConfigError{file, static_cast<int>(e.source().begin.line), "", std::string(e.description())};
   }
-  Binder b(file, root);
+  Binder b(file, *root);
   bind(b, root, c);
   if (!b.error()) b.reject_unknown();
   if (b.error()) return b.error();

@@ -47,7 +47,7 @@ sim::Result<sim::SimConfig> simulated_robot_config(const Config& cfg, const SimO
   // The sonar model first: a configuration's [sim.sonar] / [sim.pan_tilt] keys are the last word.
   for (sim::SonarParams* p : {&c.ring, &c.pan_tilt}) sim::apply_sonar_preset(opt.sonar_model, *p);
   if (cfg.sim) {
-    auto applied = sim::apply_sim_config(cfg.sim->table, cfg.source, c, "sim.");
+    auto applied = sim::apply_sim_config(*cfg.sim->table, cfg.source, c, "sim.");
     if (!applied) return applied.error();
     c = std::move(applied).value();
   }

@@ -148,9 +148,17 @@ TEST(SimParams, ABrokenSimTableIsAStartUpErrorWithItsLine) {
   ASSERT_FALSE(fw.ok());
   EXPECT_NE(fw.error().find("robot.toml:4"), std::string::npos) << fw.error();
   EXPECT_NE(fw.error().find("wheelbase"), std::string::npos) << fw.error();
+  // A value out of range names its line too (before 2026-12-06 only the file: the [sim] table
+  // was copied out of the parsed file, and a toml++ copy drops the source positions).
   const Config neg = config_from("[sim.robot]\nwheel_base = -1\n");
   SimFirmware fw2(world.path(), neg);
   EXPECT_FALSE(fw2.ok());
+  EXPECT_NE(fw2.error().find("robot.toml:2"), std::string::npos) << fw2.error();
+  const Config wide = config_from("[kernel]\ntick_us = 10000\n\n[sim.sonar]\nhalf_angle_deg = 100\n");
+  SimFirmware fw3(world.path(), wide);
+  ASSERT_FALSE(fw3.ok());
+  EXPECT_NE(fw3.error().find("robot.toml:5"), std::string::npos) << fw3.error();
+  EXPECT_NE(fw3.error().find("half_angle_deg"), std::string::npos) << fw3.error();
 }
 
 // The options' sonar model comes first, for the ring and the pan-tilt; a configuration's
