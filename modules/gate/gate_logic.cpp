@@ -51,7 +51,7 @@ void GateLogic::start(std::uint64_t tick) {
   back_offs_ = 0;
   disagreements_ = 0;
   unsettled_ = 0;
-  last_sighting_ = Sighting{};
+  sighted_ = false;
   estimate_ = DoorEstimate{};
   go_.cancel();
 }
@@ -175,18 +175,14 @@ void GateLogic::evaluate(const GateInputs& in) {
   }
   // Acted on only when two scans in a row agree (in the odometry frame): one scan's spurious or
   // lost echoes can move an edge by half a metre (issue #19), two scans rarely the same way.
-  const double th = in.pose.theta * 0.01 * kRad;
-  Sighting now;
-  now.ok = true;
-  now.x_mm = in.pose.x / 10.0 + estimate_.center_x * std::cos(th) - estimate_.center_y * std::sin(th);
-  now.y_mm = in.pose.y / 10.0 + estimate_.center_x * std::sin(th) + estimate_.center_y * std::cos(th);
-  now.normal_deg = in.pose.theta * 0.01 + estimate_.normal_deg;
-  const Sighting before = last_sighting_;
-  last_sighting_ = now;
-  const double turn = std::remainder(now.normal_deg - before.normal_deg, 360.0);
-  if (!before.ok || std::hypot(now.x_mm - before.x_mm, now.y_mm - before.y_mm) > s_.agree_mm ||
-      std::abs(turn) > s_.agree_deg) {
-    if (before.ok) ++disagreements_;
+  const motion::PostureUnits now = compose(in.pose, estimate_.center_x, estimate_.center_y, estimate_.normal_deg);
+  const bool before = sighted_;
+  const double apart_mm = 0.1 * std::hypot(now.x - sighting_.x, now.y - sighting_.y);
+  const double turn_deg = 0.01 * motion::wrap_centideg(static_cast<std::int64_t>(now.theta) - sighting_.theta);
+  sighted_ = true;
+  sighting_ = now;
+  if (!before || apart_mm > s_.agree_mm || std::abs(turn_deg) > s_.agree_deg) {
+    if (before) ++disagreements_;
     if (++unsettled_ > s_.max_looks) {
       fail(ModeReason::no_passage);
       return;

@@ -96,13 +96,10 @@ class GateLogic {
   std::uint32_t back_offs_ = 0;        // manoeuvres given up for a back-off in this run, count
   SectorPose moved_pose_{};            // where the robot was when it last moved (stall watch; back-off start)
   SectorPose back_from_{};             // where the back-off began
-  // The passage as one scan saw it, in the odometry frame: what the next scan must agree with.
-  struct Sighting {
-    bool ok = false;                   // a passage was estimated
-    double x_mm = 0.0, y_mm = 0.0;     // its centre, odometry frame, mm
-    double normal_deg = 0.0;           // the direction through it, odometry frame, degrees
-  };
-  Sighting last_sighting_{};           // the previous scan's (none at a start)
+  // The passage as the previous scan saw it, in the odometry frame (centre and the direction
+  // through it): what the next scan must agree with. None at a start.
+  bool sighted_ = false;
+  motion::PostureUnits sighting_{};
   std::uint32_t disagreements_ = 0;    // scans that disagreed with the one before, this run, count
   std::uint32_t unsettled_ = 0;        // scans in a row without two agreeing, count
   std::uint64_t moved_tick_ = 0;       // when it last moved, ticks
