@@ -140,4 +140,11 @@ int World::obstacle_containing(const Vec2& p) const {
   return -1;
 }
 
+double World::clearance(const Vec2& p) const {
+  if (obstacle_containing(p) >= 0) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& s : segments_) best = std::min(best, point_segment_distance(p, s.a, s.b));
+  return best;
+}
+
 }  // namespace robuter::sim

@@ -62,6 +62,8 @@ class World {
 
   // Index of the first obstacle whose polygon strictly contains p, or -1.
   int obstacle_containing(const Vec2& p) const;
+  // Distance from p to the nearest surface, m; 0 inside a solid. A linear scan (tests, tools).
+  double clearance(const Vec2& p) const;
 
  private:
   std::vector<Obstacle> obstacles_;  // solid polygons

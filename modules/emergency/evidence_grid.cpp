@@ -65,7 +65,7 @@ void EvidenceGrid::collect(const Eigen::Vector2d& robot, double radius, bool nea
       const Eigen::Vector2d c((gx + 0.5) * s_.cell, (gy + 0.5) * s_.cell);
       if (((c - robot).squaredNorm() <= r2) != near) continue;
       if (next_.size() == kCarried) return;
-      next_.push_back({c, 0.0, cell.hit_tick});
+      next_.push_back({c, 0.0, cell.hit_tick, sight_[slot(gx, gy)]});
     }
   }
 }
@@ -96,10 +96,12 @@ void EvidenceGrid::carry(const Eigen::Matrix2d& rotation, const Eigen::Vector2d&
   for (Carried c : next_) {
     c.centre = rotation * c.centre + translation;
     c.turn += turn;
+    c.sight = static_cast<std::uint8_t>(c.sight + sight_code(turn));  // the line of sight turns with the frame
     for_box(c, [&](int gx, int gy) {
       Cell& cell = cells_[slot(gx, gy)];
       cell.hit_tick = std::max(cell.hit_tick, c.tick);
       flags_[slot(gx, gy)] = kFromCarry;  // carried evidence is never soft
+      sight_[slot(gx, gy)] = c.sight;
       return false;
     });
     carried_.push_back(c);
@@ -114,10 +116,10 @@ std::uint8_t EvidenceGrid::sight_code(double angle) {
   return static_cast<std::uint8_t>(static_cast<int>(std::lround(angle / kSightStep)) & 255);
 }
 
-bool EvidenceGrid::along_sight(std::size_t sl, double dx, double dy) const {
+bool EvidenceGrid::along_sight(std::size_t sl, double dx, double dy, double within) const {
   // The difference of two codes, as a signed step count in [-128, 127].
   const auto diff = static_cast<std::int8_t>(static_cast<std::uint8_t>(sight_code(std::atan2(dy, dx)) - sight_[sl]));
-  return std::abs(static_cast<int>(diff)) * kSightStep <= s_.narrow_sight;
+  return std::abs(static_cast<int>(diff)) * kSightStep <= within;
 }
 
 void EvidenceGrid::reset() {
@@ -206,6 +208,9 @@ void EvidenceGrid::certify_cone(std::uint64_t tick, const Eigen::Vector2d& origi
     const int x0 = std::max(index(lo.x()), ox_), x1 = std::min(index(hi.x()), ox_ + s_.side - 1);
     const int y0 = std::max(index(lo.y()), oy_), y1 = std::min(index(hi.y()), oy_ + s_.side - 1);
     const double rin2 = r_in * r_in, rout2 = r_out * r_out;
+    // The cosine's bound of "well inside the cone": half_angle - contradict_sight off its axis.
+    const double inner = std::cos(std::max(0.0, s_.half_angle - s_.contradict_sight));
+    const bool any_line = s_.contradict_sight >= std::numbers::pi;  // the rule before (measurement)
     for (int gy = y0; gy <= y1; ++gy) {
       const double dy = (gy + 0.5) * s_.cell - origin.y();
       for (int gx = x0; gx <= x1; ++gx) {
@@ -216,11 +221,23 @@ void EvidenceGrid::certify_cone(std::uint64_t tick, const Eigen::Vector2d& origi
         if (along <= 0.0 || along * along < r2 * ch * ch) continue;  // outside the cone
         Cell& cell = at(gx, gy);
         const bool evidence = cell.hit_tick != 0 && cell.hit_tick >= cell.free_tick;
-        // A no-echo clears only soft evidence (an explained arc's, mark_arc), and only looking
-        // along nearly the line of sight it was seen along; ties of a tick go to the evidence.
-        if (evidence && !contradicts &&
-            ((flags_[slot(gx, gy)] & kSoft) == 0 || cell.hit_tick >= tick || !along_sight(slot(gx, gy), dx, dy)))
-          continue;
+        if (evidence) {
+          // An echo from farther away clears evidence seen along nearly its own line of sight,
+          // well inside its cone (a longer echo along a line a reflector echoed along: it is
+          // gone, or was never there); evidence seen from elsewhere, or at its cone's edge, only
+          // once no echo has repeated it for sight_age — the beam may have glanced off that very
+          // surface on to a farther one (multipath, docs/SAFETY.md §13). A no-echo clears
+          // only soft evidence (an explained arc's, mark_arc), along nearly its line of sight;
+          // ties of a tick go to the evidence.
+          const std::size_t sl = slot(gx, gy);
+          const bool old_evidence = s_.sight_age > 0 && tick > cell.hit_tick + s_.sight_age;
+          const bool clears = contradicts ? any_line || old_evidence ||
+                                                (inner * inner * r2 <= along * along &&
+                                                 along_sight(sl, dx, dy, s_.contradict_sight))
+                                          : (flags_[sl] & kSoft) != 0 && cell.hit_tick < tick &&
+                                                along_sight(sl, dx, dy, s_.narrow_sight);
+          if (!clears) continue;
+        }
         cell.free_tick = tick;
       }
     }
@@ -289,10 +306,12 @@ void EvidenceGrid::mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, d
     const auto sl = static_cast<std::uint32_t>(slot(gx, gy));
     if (cells == 0 || arc[static_cast<std::size_t>(cells - 1)] != sl) {
       if (cells == kArcCells) break;
-      arc[static_cast<std::size_t>(cells++)] = sl;
+      arc[static_cast<std::size_t>(cells)] = sl;
+      // The line of sight to the cell's centre (the one certify_cone's test takes).
+      sight[static_cast<std::size_t>(cells++)] =
+          sight_code(std::atan2((gy + 0.5) * s_.cell - origin.y(), (gx + 0.5) * s_.cell - origin.x()));
     }
     if (!narrowing) continue;
-    sight[static_cast<std::size_t>(cells - 1)] = sight_code(a);
     if (structure) on_structure[static_cast<std::size_t>(cells - 1)] = 1;
     bool out = !structure;
     if (out) {
@@ -349,6 +368,11 @@ void EvidenceGrid::certify_rectangle(std::uint64_t tick, const Eigen::Vector2d& 
       at(gx, gy).free_tick = tick;
     }
   }
+}
+
+std::uint64_t EvidenceGrid::evidence_tick(const Eigen::Vector2d& p) const {
+  const int gx = index(p.x()), gy = index(p.y());
+  return placed_ && contains(gx, gy) ? at(gx, gy).hit_tick : 0;
 }
 
 CellState EvidenceGrid::state(const Eigen::Vector2d& p, std::uint64_t tick, std::uint64_t max_age) const {

@@ -58,6 +58,17 @@ struct GridSettings {
   // Evidence of one echo that no later echo marked again counts this long (0: for ever): a
   // spurious echo's arc, left where no cone looks again (docs/SAFETY.md §13, "Unconfirmed").
   std::uint64_t single_age = 0;     // ticks
+  // An echo from farther away clears obstacle evidence at most `sight_age` ticks old only looking
+  // along nearly the line of sight the evidence was seen along (within contradict_sight), with
+  // the cell at least as far inside its cone from either edge (docs/SAFETY.md §13, "Multipath"):
+  // a surface too oblique to echo to one transducer reflects its beam on (a long reading) while
+  // another transducer, less oblique, marks it. Both within the same angle, and no cone can glance
+  // off the straight face that echoed along the evidence's line: half the cone's half-angle each.
+  // Older evidence (no echo repeated it) any farther echo clears. contradict_sight π or more: any
+  // farther echo clears any evidence (the rule before; the census that measures the difference,
+  // tests/safety_sim/multipath_census.hpp).
+  double contradict_sight = 0.1091; // rad (6.25°)
+  std::uint64_t sight_age = 0;      // ticks (0: evidence of any age is kept so)
 };
 
 // A rolling window of cells centred on the robot (toroidal storage: moving the window clears only
@@ -86,7 +97,8 @@ class EvidenceGrid {
   // `range` m. The cone is certified free from the blanking range to range − shrink (cells wholly
   // in that band, centre in the cone); the echo's arc is marked as obstacle evidence unless
   // `no_echo`. `contradicts` false: the certificate leaves cells with obstacle evidence as they
-  // are (a single no-echo may be a lost echo). Work: the cells of the cone's bounding box (≤ 4,500
+  // are (a single no-echo may be a lost echo); true: it clears evidence seen along nearly its own
+  // line of sight (within contradict_sight), never evidence seen from elsewhere. Work: the cells of the cone's bounding box (≤ 4,500
   // at the default reach) plus ≤ 200 arc samples.
   void add_reading(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
                    bool contradicts);
@@ -94,7 +106,8 @@ class EvidenceGrid {
   // arc). mark_arc narrows the arc by `seen`, recent cones with an echo (docs/SAFETY.md §13); what
   // is left of an explained arc off the known structure is *soft* evidence, which a later
   // certificate along nearly the same line of sight (within narrow_sight) clears even without an
-  // echo. certify_cone never clears hard evidence unless `contradicts`.
+  // echo. certify_cone never clears hard evidence unless `contradicts`, and then only along
+  // nearly the line of sight it was seen along.
   void certify_cone(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
                     bool contradicts);
   void mark_arc(std::uint64_t tick, const Eigen::Vector2d& origin, double direction, double range, bool no_echo,
@@ -106,6 +119,7 @@ class EvidenceGrid {
   // Changes how long a cone narrows an arc (the kernel's tick is known at init), ticks.
   void set_narrow_age(std::uint64_t ticks) { s_.narrow_age = ticks; }
   void set_single_age(std::uint64_t ticks) { s_.single_age = ticks; }
+  void set_sight_age(std::uint64_t ticks) { s_.sight_age = ticks; }
   // The structure that explains echoes (nullptr: none, no narrowing); it must outlive the grid.
   void set_known_structure(KnownStructure* known) { known_ = known; }
   // Where the known structure lies now (KnownStructure::update), once per activation.
@@ -124,6 +138,8 @@ class EvidenceGrid {
   // What the grid says of the point p (odometry frame, m) at `tick`; free certificates older than
   // `max_age` ticks are stale. Outside the window: unknown.
   CellState state(const Eigen::Vector2d& p, std::uint64_t tick, std::uint64_t max_age) const;
+  // The tick of the newest obstacle evidence at p (0: none, or outside the window).
+  std::uint64_t evidence_tick(const Eigen::Vector2d& p) const;
 
   const GridSettings& settings() const { return s_; }
   // Global cell index of the window's low corner (tests).
@@ -137,9 +153,9 @@ class EvidenceGrid {
   };
   // A direction (rad) in 256 steps of a turn (the line of sight a soft cell was seen along).
   static std::uint8_t sight_code(double angle);
-  // Whether the line of sight (dx, dy) to slot sl's cell lies within narrow_sight of the one its
-  // soft evidence was seen along (to the code's step, 1.4°).
-  bool along_sight(std::size_t sl, double dx, double dy) const;
+  // Whether the line of sight (dx, dy) to slot sl's cell lies within `within` (rad) of the one
+  // its evidence was seen along (to the code's step, 1.4°).
+  bool along_sight(std::size_t sl, double dx, double dy, double within) const;
   // Whether the global cell (gx, gy) is inside the window.
   bool contains(int gx, int gy) const { return gx - ox_ >= 0 && gx - ox_ < s_.side && gy - oy_ >= 0 && gy - oy_ < s_.side; }
   // The storage slot of global cell (gx, gy) (toroidal: the window's cells are a mask away).
@@ -156,6 +172,7 @@ class EvidenceGrid {
     Eigen::Vector2d centre;  // the observed cell's centre, carried into the current frame, m
     double turn;             // rotation from the frame it was observed in to the current one, rad
     std::uint64_t tick;      // its evidence tick
+    std::uint8_t sight;      // the line of sight it was seen along, in the current frame (sight_code)
   };
   // Calls visit(gx, gy) for each window cell of the box holding a carried cell's turned square
   // (its half side: half a cell × (|cos turn| + |sin turn|)); stops early when visit returns true.

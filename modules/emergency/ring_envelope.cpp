@@ -22,6 +22,7 @@ GridSettings grid_settings(const EmergencyConfig&) {
   GridSettings g;
   g.blanking = robot::kRobuter.ring.blanking;
   g.half_angle = robot::kRobuter.ring.half_angle;
+  g.contradict_sight = 0.5 * g.half_angle;  // the cone's half-angle split evenly (docs/SAFETY.md §13, "Multipath")
   return g;
 }
 
@@ -72,6 +73,9 @@ void RingEnvelope::set_tick(double tick_s) {
   // drive through that cell (docs/SAFETY.md §13, "Evidence").
   grid_.set_narrow_age(cfg_.narrow_arcs ? e.free_age_ticks : 0);
   grid_.set_single_age(static_cast<std::uint64_t>(std::ceil(cfg_.single_echo_ms / 1000.0 / tick_s)));
+  // Evidence is kept from a reading along another line of sight for as long as a certificate
+  // counts (docs/SAFETY.md §13, "Multipath").
+  grid_.set_sight_age(e.free_age_ticks);
 }
 
 void RingEnvelope::observe(std::uint64_t tick, const Posture& posture, const UltrasonicRanges& ranges, bool at_rest) {

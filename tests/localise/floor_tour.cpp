@@ -50,13 +50,6 @@ Errors odometry_error(SimFirmware& fw) {
 
 constexpr double kKidnapClearance = 0.6;  // m: a kidnapping puts the robot this clear of every wall
 
-// The distance from p to the nearest surface of the world, m.
-double clearance(const sim::World& world, const Eigen::Vector2d& p) {
-  double best = 1e9;
-  for (const auto& s : world.segments()) best = std::min(best, sim::point_segment_distance(p, s.a, s.b));
-  return world.obstacle_containing(p) >= 0 ? 0.0 : best;
-}
-
 // An operator's client: every 0.2 s an AM towards the next point of the loop, by the true pose.
 class Driver {
  public:
@@ -131,7 +124,7 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
       const Eigen::Vector2d d = driver.heading_to_next();
       for (const double sign : {spec.kidnap_back ? -1.0 : 1.0, spec.kidnap_back ? 1.0 : -1.0}) {
         const Eigen::Vector2d to(p.x + sign * 3.0 * d.x(), p.y + sign * 3.0 * d.y());
-        if (clearance(robot.world(), to) < kKidnapClearance) continue;
+        if (robot.world().clearance(to) < kKidnapClearance) continue;
         out.kidnapped_at = i / 100.0;
         out.kidnap_x = p.x;
         out.kidnap_y = p.y;

@@ -59,6 +59,55 @@ TEST(EvidenceGrid, ANewerReadingThroughTheArcContradictsIt) {
   EXPECT_EQ(g.state({2.0, 0.0}, 20, kAge), CellState::obstacle);
 }
 
+// Multipath (docs/SAFETY.md §13): a wall square to one transducer echoes to it and is marked; a
+// transducer that meets the same wall too obliquely to echo may hear, by a bounce off it, a
+// surface beyond — a reading longer than the wall. That reading clears no evidence seen along
+// another line of sight; a longer echo along nearly the evidence's own line still clears it.
+TEST(EvidenceGrid, ALongEchoClearsEvidenceOnlyAlongNearlyTheLineOfSightItWasSeenAlong) {
+  EvidenceGrid g = placed_grid();
+  const Vector2d wall(1.01, 0.0);
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  ASSERT_EQ(g.state(wall, 10, kAge), CellState::obstacle);
+  // From 0.8 m aside, 38° off the first line of sight: a 2.4 m reading (the bounce).
+  const Vector2d side(0.0, 0.8);
+  g.add_reading(20, side, std::atan2(wall.y() - side.y(), wall.x() - side.x()), 2.4, false, true);
+  EXPECT_EQ(g.state(wall, 20, kAge), CellState::obstacle) << "seen from 38° aside: it may be the bounce";
+  // 5° off the line, the cell at the cone's edge: a cone that met the surface at the evidence's
+  // angle plus 5° may have met it too obliquely all across (the cell is what it glanced off).
+  const Vector2d near_line = wall - 1.2 * Vector2d(std::cos(0.087), std::sin(0.087));
+  g.add_reading(30, near_line, 0.087 + 0.2, 2.4, false, true);
+  EXPECT_EQ(g.state(wall, 30, kAge), CellState::obstacle) << "at the cone's edge";
+  // The same line of sight, the cell near the cone's axis: the reflector is not there.
+  g.add_reading(40, near_line, 0.087, 2.4, false, true);
+  EXPECT_EQ(g.state(wall, 40, kAge), CellState::free) << "nearly along its line of sight, well inside the cone";
+  // Evidence no echo marked again for longer than sight_age: any farther echo over it clears it.
+  EvidenceGrid h = placed_grid();
+  h.set_sight_age(100);
+  h.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  const double aside = std::atan2(wall.y() - side.y(), wall.x() - side.x());
+  h.add_reading(110, side, aside, 2.4, false, true);
+  EXPECT_EQ(h.state(wall, 110, kAge), CellState::obstacle) << "100 ticks old: still kept";
+  h.add_reading(111, side, aside, 2.4, false, true);
+  EXPECT_EQ(h.state(wall, 111, kAge), CellState::free) << "101 ticks old: cleared from aside";
+}
+
+// The line of sight of carried evidence turns with the frame (AC): the same physical lines clear
+// it, or not, as before the new frame.
+TEST(EvidenceGrid, CarriedEvidenceKeepsTheLineOfSightItWasSeenAlong) {
+  EvidenceGrid g = placed_grid();
+  g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);
+  const double turn = kPi / 2.0;  // the new frame: a quarter turn about the robot
+  g.carry(Eigen::Rotation2Dd(turn).toRotationMatrix(), {0.0, 0.0}, {0.0, 0.0});
+  const Vector2d wall(0.0, 1.01);  // the marked cell, in the new frame
+  ASSERT_EQ(g.state(wall, 10, kAge), CellState::obstacle);
+  const Vector2d side(-0.8, 0.0);
+  g.add_reading(20, side, std::atan2(wall.y() - side.y(), wall.x() - side.x()), 2.4, false, true);
+  EXPECT_EQ(g.state(wall, 20, kAge), CellState::obstacle) << "38° off its line of sight";
+  const Vector2d near_line = wall - 1.2 * Vector2d(std::cos(turn + 0.087), std::sin(turn + 0.087));
+  g.add_reading(30, near_line, turn + 0.087, 2.4, false, true);
+  EXPECT_EQ(g.state(wall, 30, kAge), CellState::free) << "5° off its line of sight, turned with the frame";
+}
+
 TEST(EvidenceGrid, AReadingThatDoesNotContradictLeavesEvidenceOneThatDoesClearsIt) {
   EvidenceGrid g = placed_grid();
   g.add_reading(10, {0.0, 0.0}, 0.0, 1.01, false, true);

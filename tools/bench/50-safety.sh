@@ -4,7 +4,7 @@
 # full-scan time before/after the watch schedule, then the random-sequence property of
 # docs/SAFETY.md §12–§13 at bench size (10,000 sequences; make test runs 2,000), once per sonar
 # model of the noisy half (ROBUTER_BENCH_SAFETY_SONAR, default "stress realistic": the project's
-# first noise and the realistic model, issue #19).
+# first noise and the realistic model, issue #19); then the multipath census.
 set -euo pipefail
 bin=${ROBUTER_BIN:-build/bin}
 trials=${ROBUTER_BENCH_SAFETY_TRIALS:-200}
@@ -43,4 +43,10 @@ awk 'BEGIN { closest = -1 }
                   "closest approach with the sonar on %d mm\n", seq, noisy, contacts, closest }' model="$model" \
   "$out"/[0-3].log
 done
+# Multipath against the evidence grid (docs/SAFETY.md §13, "Multipath"): a wanderer's realistic
+# ring for 1,800 s (make test: 240 s), the cells of real surfaces that bounced echoes clear, the
+# rule before and the rule now.
+echo "50-safety: multipath census, ${ROBUTER_BENCH_MULTIPATH_SECONDS:-1800} s per world"
+ROBUTER_MULTIPATH_SECONDS=${ROBUTER_BENCH_MULTIPATH_SECONDS:-1800} "$bin/safety_sim_test" --gtest_filter='Multipath.*' \
+  | grep '^multipath' || status=1
 exit $status

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The multipath census (multipath_census.hpp): a wanderer's ring into an evidence grid, clearings judged by the world.
+#include "tests/safety_sim/multipath_census.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+#include <cstdio>
+
+#include "hal/sim/footprint.hpp"
+#include "hal/sim/robot.hpp"
+#include "hal/sim/sonar_layout.hpp"
+#include "hal/sim/world_io.hpp"
+
+namespace robuter::test {
+
+namespace {
+
+constexpr double kOnSurface = 0.0125;  // a cell whose centre is this near a surface (half a cell) is on it, m
+constexpr double kLonger = 0.05;       // a reading this much longer than the ideal model's is multipath, m
+
+// Whether p lies within kCorner of a vertex of the world's solids (a surface's end).
+bool near_vertex(const sim::World& world, const Eigen::Vector2d& p) {
+  constexpr double kCorner = 0.05;  // m
+  for (const auto& s : world.segments())
+    if ((s.a - p).norm() <= kCorner || (s.b - p).norm() <= kCorner) return true;
+  return false;
+}
+
+// A cell of evidence a cone may clear.
+struct Seen {
+  Eigen::Vector2d at;      // its centre, m
+  std::uint64_t tick = 0;  // its evidence's tick
+};
+
+// The centres of the evidence cells a cone of `range` may clear (certify_cone's band and cone).
+void evidence_in_cone(const safety::EvidenceGrid& g, std::uint64_t tick, const Eigen::Vector2d& origin,
+                      double direction, double range, std::vector<Seen>& out) {
+  out.clear();
+  const auto& s = g.settings();
+  const double half_diag = s.cell * 0.7071067811865476;
+  const double r_in = s.blanking + half_diag, r_out = std::min(range - s.shrink, s.reach) - half_diag;
+  if (r_out <= r_in) return;
+  const double c = std::cos(direction), sn = std::sin(direction), ch = std::cos(s.half_angle);
+  const int x0 = static_cast<int>(std::floor((origin.x() - r_out) / s.cell));
+  const int x1 = static_cast<int>(std::floor((origin.x() + r_out) / s.cell));
+  const int y0 = static_cast<int>(std::floor((origin.y() - r_out) / s.cell));
+  const int y1 = static_cast<int>(std::floor((origin.y() + r_out) / s.cell));
+  for (int gy = y0; gy <= y1; ++gy)
+    for (int gx = x0; gx <= x1; ++gx) {
+      const Eigen::Vector2d p((gx + 0.5) * s.cell, (gy + 0.5) * s.cell);
+      const Eigen::Vector2d d = p - origin;
+      const double r2 = d.squaredNorm(), along = d.x() * c + d.y() * sn;
+      if (r2 < r_in * r_in || r2 > r_out * r_out || along <= 0.0 || along * along < r2 * ch * ch) continue;
+      if (g.state(p, tick, 1) == safety::CellState::obstacle) out.push_back({p, g.evidence_tick(p)});
+    }
+}
+
+// Evidence cells off every surface within kNear of `robot`.
+long phantom_near(const safety::EvidenceGrid& g, const sim::World& world, std::uint64_t tick, const Eigen::Vector2d& robot) {
+  constexpr double kNear = 1.5;  // m
+  const double cell = g.settings().cell;
+  long n = 0;
+  for (int gy = static_cast<int>(std::floor((robot.y() - kNear) / cell)); gy <= std::floor((robot.y() + kNear) / cell); ++gy)
+    for (int gx = static_cast<int>(std::floor((robot.x() - kNear) / cell)); gx <= std::floor((robot.x() + kNear) / cell); ++gx) {
+      const Eigen::Vector2d p((gx + 0.5) * cell, (gy + 0.5) * cell);
+      if ((p - robot).norm() > kNear || g.state(p, tick, 1) != safety::CellState::obstacle) continue;
+      if (world.clearance(p) > kOnSurface) ++n;
+    }
+  return n;
+}
+
+}  // namespace
+
+MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset preset, double seconds,
+                                 std::uint64_t seed, const safety::GridSettings& settings, std::uint64_t fresh) {
+  MultipathCensus out;
+  auto loaded = sim::load_world(world_file);
+  if (!loaded.ok()) return out;
+  const sim::World& world = loaded.value();
+  sim::Robot robot(world, sim::RobotParams{}, world.start.value_or(sim::Pose{}));
+  sim::SonarParams p = sim::default_ring_params();
+  sim::apply_sonar_preset(preset, p);
+  sim::SonarParams ideal_p = sim::default_ring_params();
+  sim::apply_sonar_preset(sim::SonarPreset::ideal, ideal_p);
+  sim::SonarModel ring(world, p), ideal(world, ideal_p);
+  const sim::RingLayout layout = sim::default_ring_layout();
+  sim::Rng rng(seed);
+  safety::EvidenceGrid grid(settings);
+  const sim::Box body = sim::RobotGeometry{}.body();  // the robot model's body, robot frame
+  std::array<double, sim::kRingSensors> ranges{};
+  std::vector<Seen> before;
+  enum class Mode { forward, turn, back } mode = Mode::forward;
+  long until = 0;
+  const long ticks = std::lround(seconds * 100.0);
+  for (long k = 1; k <= ticks; ++k) {
+    const auto tick = static_cast<std::uint64_t>(k);
+    const sim::Pose& at = robot.pose();
+    grid.follow({at.x, at.y});
+    if (k % 4 == 0) {
+      for (std::size_t n = 0; n < layout.size(); n += 4)
+        ring.measure_firing(at, std::span<const sim::SonarMount>(layout).subspan(n, 4),
+                            std::span<double>(ranges).subspan(n, 4), &rng);
+      for (std::size_t i = 0; i < layout.size(); ++i) {
+        const auto& m = layout[i];
+        const Eigen::Vector2d origin = sim::to_world(at, m.position);
+        const double direction = at.theta + m.direction;
+        const bool echo = ranges[i] > 0.0;
+        const double range = echo ? ranges[i] : p.max_range();
+        ++out.readings;
+        // An echo longer than the ideal model's at the same pose came by another path (multipath).
+        const double truth = echo ? ideal.measure(at, m) : 0.0;
+        const bool longer = echo && (truth <= 0.0 || ranges[i] > truth + kLonger);
+        before.clear();
+        if (longer) {
+          ++out.longer_than_truth;
+          evidence_in_cone(grid, tick, origin, direction, range, before);
+        }
+        grid.certify_cone(tick, origin, direction, range, !echo, echo);
+        for (const auto& c : before) {
+          if (grid.state(c.at, tick, 1) == safety::CellState::obstacle) continue;
+          if (world.clearance(c.at) <= kOnSurface) {
+            ++out.surface_cleared;
+            if (tick <= c.tick + fresh) ++out.fresh_cleared;
+            if (near_vertex(world, c.at)) ++out.corner_cleared;
+          }
+          else ++out.phantom_cleared;
+        }
+      }
+      for (std::size_t i = 0; i < layout.size(); ++i)
+        if (ranges[i] > 0.0)
+          grid.mark_arc(tick, sim::to_world(at, layout[i].position), at.theta + layout[i].direction, ranges[i], false);
+      auto near = [&](std::size_t n) { return ranges[n - 1] > 0.0 && ranges[n - 1] < 0.9; };
+      const bool blocked = near(22) || near(23) || near(24) || near(1) || near(2) || near(3) || near(4);
+      if (robot.bumper() && mode != Mode::back) {
+        mode = Mode::back;
+        until = k + 100;
+      } else if (k >= until) {
+        if (mode == Mode::back || (mode == Mode::forward && blocked)) {
+          mode = Mode::turn;
+          until = k + 40 + static_cast<long>(rng.uniform() * 160);
+        } else {
+          mode = Mode::forward;
+        }
+      }
+      switch (mode) {
+        case Mode::forward: robot.command({0.42, 0.38}); break;
+        case Mode::turn: robot.command({-0.25, 0.25}); break;
+        case Mode::back: robot.command({-0.15, -0.15}); break;
+      }
+    }
+    grid.certify_rectangle(tick, {at.x, at.y}, at.theta, body.lo, body.hi);
+    if (k % 100 == 0) out.phantom_near += phantom_near(grid, world, tick, {at.x, at.y});
+    robot.step(0.01);
+  }
+  out.travelled = robot.travelled();
+  return out;
+}
+
+}  // namespace robuter::test
