@@ -7,12 +7,12 @@
 #include <cmath>
 #include <span>
 #include <vector>
-#include <cstdio>
 
 #include "hal/sim/footprint.hpp"
 #include "hal/sim/robot.hpp"
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/world_io.hpp"
+#include "tests/support/wanderer.hpp"
 
 namespace robuter::test {
 
@@ -92,8 +92,7 @@ MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset
   const sim::Box body = sim::RobotGeometry{}.body();  // the robot model's body, robot frame
   std::array<double, sim::kRingSensors> ranges{};
   std::vector<Seen> before;
-  enum class Mode { forward, turn, back } mode = Mode::forward;
-  long until = 0;
+  Wanderer wanderer;
   const long ticks = std::lround(seconds * 100.0);
   for (long k = 1; k <= ticks; ++k) {
     const auto tick = static_cast<std::uint64_t>(k);
@@ -125,31 +124,15 @@ MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset
             ++out.surface_cleared;
             if (tick <= c.tick + fresh) ++out.fresh_cleared;
             if (near_vertex(world, c.at)) ++out.corner_cleared;
+          } else {
+            ++out.phantom_cleared;
           }
-          else ++out.phantom_cleared;
         }
       }
       for (std::size_t i = 0; i < layout.size(); ++i)
         if (ranges[i] > 0.0)
           grid.mark_arc(tick, sim::to_world(at, layout[i].position), at.theta + layout[i].direction, ranges[i], false);
-      auto near = [&](std::size_t n) { return ranges[n - 1] > 0.0 && ranges[n - 1] < 0.9; };
-      const bool blocked = near(22) || near(23) || near(24) || near(1) || near(2) || near(3) || near(4);
-      if (robot.bumper() && mode != Mode::back) {
-        mode = Mode::back;
-        until = k + 100;
-      } else if (k >= until) {
-        if (mode == Mode::back || (mode == Mode::forward && blocked)) {
-          mode = Mode::turn;
-          until = k + 40 + static_cast<long>(rng.uniform() * 160);
-        } else {
-          mode = Mode::forward;
-        }
-      }
-      switch (mode) {
-        case Mode::forward: robot.command({0.42, 0.38}); break;
-        case Mode::turn: robot.command({-0.25, 0.25}); break;
-        case Mode::back: robot.command({-0.15, -0.15}); break;
-      }
+      robot.command(wanderer.decide(k, ranges, robot.bumper(), rng));
     }
     grid.certify_rectangle(tick, {at.x, at.y}, at.theta, body.lo, body.hi);
     if (k % 100 == 0) out.phantom_near += phantom_near(grid, world, tick, {at.x, at.y});

@@ -15,8 +15,10 @@
 #include "hal/sim/sonar_layout.hpp"
 #include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/world_io.hpp"
+#include "tests/support/wanderer.hpp"
 
 using namespace robuter::sim;
+namespace test = robuter::test;
 
 namespace {
 
@@ -49,9 +51,7 @@ struct Scenario {
     ring.set_params(p);
   }
 
-  // What the wanderer is doing, and until which tick.
-  enum class Mode { Forward, Turn, Back } mode = Mode::Forward;  // current manoeuvre
-  long until = 0;  // tick at which the current manoeuvre ends
+  test::Wanderer wanderer;  // forward, turning from what the front sensors hear
 
   // One 10 ms tick number `k`.
   void tick(long k) {
@@ -59,25 +59,7 @@ struct Scenario {
       if (k % 16 == 0 && k < 60000) visited.push_back(robot.pose());  // the first 600 s: the same poses every run
       for (int i = 0; i < kRingSensors; ++i) ranges[i] = ring.measure(robot.pose(), layout[i], &noise);
       sonar_reads += kRingSensors;
-      auto near = [&](int n) { return ranges[n - 1] > 0.0 && ranges[n - 1] < 0.9; };
-      const bool blocked_ahead = near(22) || near(23) || near(24) || near(1) || near(2) ||
-                                 near(3) || near(4);
-      if (robot.bumper() && mode != Mode::Back) {
-        mode = Mode::Back;
-        until = k + 100;
-      } else if (k >= until) {
-        if (mode == Mode::Back || (mode == Mode::Forward && blocked_ahead)) {
-          mode = Mode::Turn;
-          until = k + 40 + static_cast<long>(noise.uniform() * 160);
-        } else {
-          mode = Mode::Forward;
-        }
-      }
-      switch (mode) {
-        case Mode::Forward: robot.command({0.42, 0.38}); break;
-        case Mode::Turn: robot.command({-0.25, 0.25}); break;
-        case Mode::Back: robot.command({-0.15, -0.15}); break;
-      }
+      robot.command(wanderer.decide(k, ranges, robot.bumper(), noise));
     }
     if (k % 3 == 0) {
       measure_pan_tilt(ptu, robot.pose(), mount, pan, &noise);
