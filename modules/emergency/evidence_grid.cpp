@@ -210,7 +210,6 @@ void EvidenceGrid::certify_cone(std::uint64_t tick, const Eigen::Vector2d& origi
     const double rin2 = r_in * r_in, rout2 = r_out * r_out;
     // The cosine's bound of "well inside the cone": half_angle - contradict_sight off its axis.
     const double inner = std::cos(std::max(0.0, s_.half_angle - s_.contradict_sight));
-    const bool any_line = s_.contradict_sight >= std::numbers::pi;  // the rule before (measurement)
     for (int gy = y0; gy <= y1; ++gy) {
       const double dy = (gy + 0.5) * s_.cell - origin.y();
       for (int gx = x0; gx <= x1; ++gx) {
@@ -231,7 +230,7 @@ void EvidenceGrid::certify_cone(std::uint64_t tick, const Eigen::Vector2d& origi
           // ties of a tick go to the evidence.
           const std::size_t sl = slot(gx, gy);
           const bool old_evidence = s_.sight_age > 0 && tick > cell.hit_tick + s_.sight_age;
-          const bool clears = contradicts ? any_line || old_evidence ||
+          const bool clears = contradicts ? old_evidence ||
                                                 (inner * inner * r2 <= along * along &&
                                                  along_sight(sl, dx, dy, s_.contradict_sight))
                                           : (flags_[sl] & kSoft) != 0 && cell.hit_tick < tick &&

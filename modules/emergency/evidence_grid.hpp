@@ -64,9 +64,8 @@ struct GridSettings {
   // a surface too oblique to echo to one transducer reflects its beam on (a long reading) while
   // another transducer, less oblique, marks it. Both within the same angle, and no cone can glance
   // off the straight face that echoed along the evidence's line: half the cone's half-angle each.
-  // Older evidence (no echo repeated it) any farther echo clears. contradict_sight π or more: any
-  // farther echo clears any evidence (the rule before; the census that measures the difference,
-  // tests/safety_sim/multipath_census.hpp).
+  // Older evidence (no echo repeated it) any farther echo clears (sight_age 1: all of it, the
+  // rule before this one, as tests/safety_sim/multipath_census.hpp measures it).
   double contradict_sight = 0.1091; // rad (6.25°)
   std::uint64_t sight_age = 0;      // ticks (0: evidence of any age is kept so)
 };

@@ -35,25 +35,17 @@ struct Seen {
   std::uint64_t tick = 0;  // its evidence's tick
 };
 
-// The centres of the evidence cells a cone of `range` may clear (certify_cone's band and cone).
-void evidence_in_cone(const safety::EvidenceGrid& g, std::uint64_t tick, const Eigen::Vector2d& origin,
-                      double direction, double range, std::vector<Seen>& out) {
+// The evidence cells within `reach` of `origin` (a superset of those one cone may clear: which it
+// did is what the grid says after it, not a second copy of its geometry).
+void evidence_near(const safety::EvidenceGrid& g, std::uint64_t tick, const Eigen::Vector2d& origin, double reach,
+                   std::vector<Seen>& out) {
   out.clear();
-  const auto& s = g.settings();
-  const double half_diag = s.cell * 0.7071067811865476;
-  const double r_in = s.blanking + half_diag, r_out = std::min(range - s.shrink, s.reach) - half_diag;
-  if (r_out <= r_in) return;
-  const double c = std::cos(direction), sn = std::sin(direction), ch = std::cos(s.half_angle);
-  const int x0 = static_cast<int>(std::floor((origin.x() - r_out) / s.cell));
-  const int x1 = static_cast<int>(std::floor((origin.x() + r_out) / s.cell));
-  const int y0 = static_cast<int>(std::floor((origin.y() - r_out) / s.cell));
-  const int y1 = static_cast<int>(std::floor((origin.y() + r_out) / s.cell));
+  const double cell = g.settings().cell;
+  const int x0 = static_cast<int>(std::floor((origin.x() - reach) / cell)), x1 = static_cast<int>(std::floor((origin.x() + reach) / cell));
+  const int y0 = static_cast<int>(std::floor((origin.y() - reach) / cell)), y1 = static_cast<int>(std::floor((origin.y() + reach) / cell));
   for (int gy = y0; gy <= y1; ++gy)
     for (int gx = x0; gx <= x1; ++gx) {
-      const Eigen::Vector2d p((gx + 0.5) * s.cell, (gy + 0.5) * s.cell);
-      const Eigen::Vector2d d = p - origin;
-      const double r2 = d.squaredNorm(), along = d.x() * c + d.y() * sn;
-      if (r2 < r_in * r_in || r2 > r_out * r_out || along <= 0.0 || along * along < r2 * ch * ch) continue;
+      const Eigen::Vector2d p((gx + 0.5) * cell, (gy + 0.5) * cell);
       if (g.state(p, tick, 1) == safety::CellState::obstacle) out.push_back({p, g.evidence_tick(p)});
     }
 }
@@ -115,7 +107,7 @@ MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset
         before.clear();
         if (longer) {
           ++out.longer_than_truth;
-          evidence_in_cone(grid, tick, origin, direction, range, before);
+          evidence_near(grid, tick, origin, std::min(range, settings.reach), before);
         }
         grid.certify_cone(tick, origin, direction, range, !echo, echo);
         for (const auto& c : before) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <numbers>
 #include <string>
 
 #include "modules/emergency/ring_envelope.hpp"
@@ -42,7 +41,7 @@ TEST(Multipath, BouncedEchoesClearATenthOfTheFreshEvidenceOfRealSurfacesTheyDidB
     if (test::kSanitized && env == nullptr && std::string(name) != "default.toml") continue;  // the lab only
     const std::string world = std::string(ROBUTER_SHIPPED_WORLDS) + "/" + name;
     safety::GridSettings any_line = firmware_grid();
-    any_line.contradict_sight = std::numbers::pi;
+    any_line.sight_age = 1;  // every reading's evidence is a batch old: any farther echo clears it
     const MultipathCensus before = multipath_census(world, sim::SonarPreset::realistic, seconds, 1, any_line, kFresh);
     const MultipathCensus now = multipath_census(world, sim::SonarPreset::realistic, seconds, 1, firmware_grid(), kFresh);
     for (const auto& [rule, c] : {std::pair{"any line of sight", before}, std::pair{"along its line of sight", now}})

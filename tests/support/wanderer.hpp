@@ -5,7 +5,7 @@
 #include <array>
 
 #include "hal/sim/rng.hpp"
-#include "hal/sim/robot.hpp"
+#include "hal/sim/types.hpp"
 #include "hal/sim/sonar_layout.hpp"
 
 namespace robuter::test {
