@@ -27,7 +27,7 @@ std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const safety::
     const std::uint64_t t = ranges.read_tick[k];
     if (t == 0 || t <= used_tick_[k]) continue;  // never read, or used by an earlier step
     const bool echo = (ranges.no_echo & (1u << k)) == 0;
-    if (!echo || ranges.mm[k] == 0 || history.empty() || t + kMaxAgeTicks < history.last_tick()) continue;
+    if (ranges.mm[k] == 0 || history.empty() || t + kMaxAgeTicks < history.last_tick()) continue;
     // The pose it was read from, in the robot frame of `now`.
     const safety::Pose2 at = history.at(t);
     const loc::Pose then(at.p.x(), at.p.y(), at.theta);
@@ -35,7 +35,7 @@ std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const safety::
     const Eigen::Vector2d offset = to_now * Eigen::Vector2d(then.x() - now.x(), then.y() - now.y());
     const loc::SonarReading& m = mount_[k];
     out[n++] = loc::SonarReading{offset + Eigen::Rotation2Dd(turn) * m.mount, loc::wrap_angle(m.direction + turn),
-                                 static_cast<double>(ranges.mm[k]) * 1e-3};
+                                 static_cast<double>(ranges.mm[k]) * 1e-3, !echo};  // a silence: none within mm
   }
   return n;
 }

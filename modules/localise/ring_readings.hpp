@@ -16,7 +16,8 @@ namespace robuter::localise {
 // The odometry posture (0.1 mm, 0.01°) as the filter's pose (m, m, rad).
 loc::Pose to_pose(std::int32_t x, std::int32_t y, std::int32_t theta);
 
-// Collects the ring's ranges read since the last step (per sensor, by read tick) and at most
+// Collects the ring's ranges read since the last step (per sensor, by read tick; a sensor that
+// heard nothing as a silence within the firing's reach, SonarReading::silence) and at most
 // kMaxAgeTicks before the history's last posture, as readings in the robot frame of odometry pose
 // `now`, each from the pose the history gives for its read tick (the safety core's PoseHistory:
 // interpolated between the executor's postures, extrapolated past the last): a range read 0.2 s

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace robuter::loc {
 namespace {
@@ -40,7 +41,7 @@ void transform_line(const double* f, int n, double* d, int* v, double* z) {
 
 DistanceField::DistanceField(const FieldGeometry& geometry, std::span<const std::uint8_t> occupied,
                              double max_distance)
-    : geo_(geometry), max_distance_(max_distance) {
+    : geo_(geometry), max_distance_(max_distance), inv_resolution_(1.0 / geometry.resolution) {
   const int w = geo_.width, h = geo_.height;
   if (w <= 0 || h <= 0 || occupied.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) return;
   const auto cells = occupied.size();
@@ -63,6 +64,23 @@ DistanceField::DistanceField(const FieldGeometry& geometry, std::span<const std:
   dist_.resize(cells);
   for (std::size_t i = 0; i < cells; ++i)
     dist_[i] = static_cast<float>(std::min(max_distance_, std::sqrt(sq[i]) * geo_.resolution));
+  // Each cell's gradient direction, quantised (1.4°): the sonar model asks it in its inner loops.
+  for (int k = 0; k < kNoNormal; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / kNoNormal;
+    directions_[static_cast<std::size_t>(k)] = Eigen::Vector2d(std::cos(a), std::sin(a));
+  }
+  const auto dist = [&](int x, int y) {
+    return (x < 0 || y < 0 || x >= w || y >= h) ? max_distance_ : static_cast<double>(dist_[at(x, y)]);
+  };
+  normal_.assign(cells, kNoNormal);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double gx = dist(x + 1, y) - dist(x - 1, y), gy = dist(x, y + 1) - dist(x, y - 1);
+      if (std::hypot(gx, gy) <= 0.5 * geo_.resolution) continue;  // flat: no wall near, or a ridge
+      double a = std::atan2(gy, gx) / (2.0 * std::numbers::pi);
+      if (a < 0.0) a += 1.0;
+      normal_[at(x, y)] = static_cast<std::uint8_t>(static_cast<int>(std::lround(a * kNoNormal)) % kNoNormal);
+    }
 }
 
 }  // namespace robuter::loc

@@ -2,6 +2,7 @@
 // The likelihood field's base: each cell's distance to the nearest occupied cell of a given map.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -40,12 +41,17 @@ class DistanceField {
   }
   // Distance at the cell holding world point p, m; max_distance() outside the grid.
   double at(const Eigen::Vector2d& p) const {
-    if (!contains(p)) return max_distance_;
-    const double fx = (p.x() - geo_.origin.x()) / geo_.resolution;
-    const double fy = (p.y() - geo_.origin.y()) / geo_.resolution;
-    const auto i = static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(geo_.width) +
-                   static_cast<std::size_t>(static_cast<int>(fx));
-    return dist_[i];
+    const std::size_t i = index(p);
+    return i == kOutside ? max_distance_ : dist_[i];
+  }
+  // The unit normal of the nearest wall at the cell holding p (the field's gradient there,
+  // central differences a cell either side: pointing away from the wall), into `out`; false
+  // where the field is flat there (outside the grid, no wall within reach, a ridge between two).
+  bool normal(const Eigen::Vector2d& p, Eigen::Vector2d& out) const {
+    const std::size_t i = index(p);
+    if (i == kOutside || normal_[i] == kNoNormal) return false;
+    out = directions_[normal_[i]];
+    return true;
   }
   // Distance of cell (x, y), m (inside the grid only).
   double cell(int x, int y) const {
@@ -57,9 +63,23 @@ class DistanceField {
   }
 
  private:
+  static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
+  static constexpr std::uint8_t kNoNormal = 255;  // normal_'s "flat"; 0..254 are directions
+  // The cell holding p, row by row; kOutside off the grid.
+  std::size_t index(const Eigen::Vector2d& p) const {
+    const double fx = (p.x() - geo_.origin.x()) * inv_resolution_;
+    const double fy = (p.y() - geo_.origin.y()) * inv_resolution_;
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < geo_.width && fy < geo_.height)) return kOutside;
+    return static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(geo_.width) +
+           static_cast<std::size_t>(static_cast<int>(fx));
+  }
+
   FieldGeometry geo_;
   double max_distance_ = 0.0;  // cap of every distance, m
+  double inv_resolution_ = 0.0;  // cells per m
   std::vector<float> dist_;    // per cell, m
+  std::vector<std::uint8_t> normal_;  // per cell: the gradient's direction, 255 steps of the turn
+  std::array<Eigen::Vector2d, kNoNormal> directions_{};  // unit vector of each step
 };
 
 }  // namespace robuter::loc

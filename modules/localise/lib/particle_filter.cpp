@@ -12,11 +12,15 @@
 namespace robuter::loc {
 namespace {
 constexpr int kNearbyDraws = 32;  // tries for a free pose near the anchor before drawing from the set
+constexpr double kPromiseCell = 0.10;       // the promise cache's cell side, m
+constexpr double kPromiseHeading = 0.0349;  // and its heading bin, rad (2°)
+constexpr int kPromiseProbes = 16;          // slots tried before the answer is worked out uncached
+static_assert(ParticleFilter::kMaxReadings <= 32, "promised() keeps one bit per reading");
 }  // namespace
 
 ParticleFilter::ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed)
     : field_(field), params_(params), rng_(seed), bins_(std::max(1, params.max_particles)),
-      arc_(arc_table(params.sonar)), cells_(std::max(1, params.max_particles)) {
+      arc_(arc_table(params.sonar)), cone_(cone_table(params.sonar)), cells_(std::max(1, params.max_particles)) {
   params_.max_particles = std::max(1, params_.max_particles);
   params_.min_particles = std::clamp(params_.min_particles, 1, params_.max_particles);
   const auto n = static_cast<std::size_t>(params_.max_particles);
@@ -24,6 +28,10 @@ ParticleFilter::ParticleFilter(const DistanceField& field, const FilterParams& p
   next_.resize(n);
   cdf_.resize(n);
   log_lik_.resize(n);
+  std::size_t slots = 1;
+  while (slots < 2 * n) slots <<= 1;  // a power of two, at least twice the particles
+  promise_keys_.assign(slots, 0);
+  promise_bits_.assign(slots, 0);
   const auto& g = field_.geometry();
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x)
@@ -122,12 +130,16 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
     auto& p = particles_[static_cast<std::size_t>(i)];
     p.pose = sample_motion(p.pose, s, params_.motion, rng_);
   }
-  kept_count_ = 0;
+  kept_count_ = informative_count_ = 0;
   for (const auto& r : readings) {
-    if (!informative(r, params_.sonar) || kept_count_ == kMaxReadings) continue;
+    const bool echo = informative(r, params_.sonar);
+    if ((!echo && !silent(r, params_.sonar)) || kept_count_ == kMaxReadings) continue;
     kept_[static_cast<std::size_t>(kept_count_++)] =
-        Kept{r.mount, Eigen::Vector2d(std::cos(r.direction), std::sin(r.direction)), r.range};
+        Kept{r.mount, Eigen::Vector2d(std::cos(r.direction), std::sin(r.direction)), r.range, !echo,
+             echo ? echo_within(r.range, params_.sonar) : silence_within(r.range, params_.sonar)};
+    if (echo) ++informative_count_;
   }
+  std::fill(promise_keys_.begin(), promise_keys_.end(), 0);
   stepping_ = true;
   weighed_ = 0;
   best_log_ = -1e300;
@@ -135,15 +147,54 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
   return true;
 }
 
-double ParticleFilter::log_likelihood(const Pose& pose) const {
+std::uint32_t ParticleFilter::promised(const Pose& pose) {
+  const auto bin = [](double v, double side) { return static_cast<std::int64_t>(std::floor(v / side)) & 0x1fffff; };
+  // 21 bits each of x, y and heading, and a top bit so that no key is 0 (empty).
+  const std::uint64_t key = (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(bin(pose.x(), kPromiseCell)) << 42) |
+                            (static_cast<std::uint64_t>(bin(pose.y(), kPromiseCell)) << 21) |
+                            static_cast<std::uint64_t>(bin(pose.z(), kPromiseHeading));
+  const std::size_t mask = promise_keys_.size() - 1;
+  std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+  bool vacant = false;  // slot is free for this key (else the probes found none: not cached)
+  for (int probe = 0; probe < kPromiseProbes; ++probe, slot = (slot + 1) & mask) {
+    if (promise_keys_[slot] == key) return promise_bits_[slot];
+    if (promise_keys_[slot] == 0) {
+      vacant = true;
+      break;
+    }
+  }
   const double c = std::cos(pose.z()), sn = std::sin(pose.z());
   const Eigen::Vector2d at(pose.x(), pose.y());
-  double l = field_.at(at) < params_.body_clearance ? std::log(params_.inside_weight) : 0.0;
+  std::uint32_t bits = 0;
   for (int k = 0; k < kept_count_; ++k) {
     const auto& r = kept_[static_cast<std::size_t>(k)];
     const Eigen::Vector2d origin = at + Eigen::Vector2d(c * r.mount.x() - sn * r.mount.y(), sn * r.mount.x() + c * r.mount.y());
     const Eigen::Vector2d axis(c * r.axis.x() - sn * r.axis.y(), sn * r.axis.x() + c * r.axis.y());
-    l += std::log(sonar_likelihood(field_, origin, axis, r.range, params_.sonar, arc_));
+    if (promises_echo(field_, origin, axis, r.within, params_.sonar, cone_)) bits |= std::uint32_t{1} << k;
+  }
+  if (vacant) {
+    promise_keys_[slot] = key;
+    promise_bits_[slot] = bits;
+  }
+  return bits;
+}
+
+double ParticleFilter::log_likelihood(const Pose& pose) {
+  const double c = std::cos(pose.z()), sn = std::sin(pose.z());
+  const Eigen::Vector2d at(pose.x(), pose.y());
+  double l = field_.at(at) < params_.body_clearance ? std::log(params_.inside_weight) : 0.0;
+  const std::uint32_t told = promised(pose);
+  for (int k = 0; k < kept_count_; ++k) {
+    const auto& r = kept_[static_cast<std::size_t>(k)];
+    const bool against = (told >> k) & 1u;
+    if (r.silence) {
+      if (against) l += std::log(params_.sonar.miss_weight);
+      continue;
+    }
+    const Eigen::Vector2d origin = at + Eigen::Vector2d(c * r.mount.x() - sn * r.mount.y(), sn * r.mount.x() + c * r.mount.y());
+    const Eigen::Vector2d axis(c * r.axis.x() - sn * r.axis.y(), sn * r.axis.x() + c * r.axis.y());
+    l += std::log(arc_likelihood(field_, origin, axis, r.range, params_.sonar, arc_) *
+                  (against ? params_.sonar.through_weight : 1.0));
   }
   return l;
 }
@@ -156,7 +207,7 @@ bool ParticleFilter::weigh_some(int n) {
     const double l = log_likelihood(particles_[k].pose);
     log_lik_[k] = l;
     best_log_ = std::max(best_log_, l);
-    if (kept_count_ > 0) likelihood_sum_ += std::exp(l / kept_count_);
+    if (informative_count_ > 0) likelihood_sum_ += std::exp(l / informative_count_);
   }
   if (weighed_ < count_) return false;
   finish_weighing();
@@ -168,7 +219,7 @@ bool ParticleFilter::weigh_some(int n) {
 }
 
 void ParticleFilter::finish_weighing() {
-  if (kept_count_ >= params_.recovery_readings && count_ > 0) {
+  if (informative_count_ >= params_.recovery_readings && count_ > 0) {
     const double mean_lik = likelihood_sum_ / count_;  // the per-reading geometric mean, averaged
     w_slow_ = w_slow_ == 0.0 ? mean_lik : w_slow_ + params_.alpha_slow * (mean_lik - w_slow_);
     w_fast_ = w_fast_ == 0.0 ? mean_lik : w_fast_ + params_.alpha_fast * (mean_lik - w_fast_);

@@ -118,13 +118,19 @@ class ParticleFilter {
   const FilterParams& params() const { return params_; }
 
  private:
-  // One informative reading, its direction worked out once per step.
+  // One informative reading or silence, its direction worked out once per step.
   struct Kept {
     Eigen::Vector2d mount;  // transducer in the robot frame, m
     Eigen::Vector2d axis;   // beam axis in the robot frame, unit
-    double range = 0.0;     // m
+    double range = 0.0;     // m (a silence: its reach)
+    bool silence = false;   // no echo within range
+    double within = 0.0;    // how near an echo the map promises tells against it, m
   };
-  double log_likelihood(const Pose& pose) const;
+  // Which of this step's readings the map tells against at `pose` (bit k: promises_echo() for
+  // kept_[k]), from the promise cache: poses in one cell of 0.1 m and 2° share the answer of the
+  // first one weighed there (the margins are 0.3 m: a cloud that tracks fills a few dozen cells).
+  std::uint32_t promised(const Pose& pose);
+  double log_likelihood(const Pose& pose);
   void finish_weighing();
   void update_estimate();
   void resample();
@@ -143,10 +149,14 @@ class ParticleFilter {
   std::vector<std::uint32_t> free_;  // cells whose centre is body_clearance from every wall
   KldBins bins_;                     // KLD-sampling's bins
   ArcTable arc_;                     // the sonar model's directions across the cone
+  ArcTable cone_;                    // and the rays promises_echo() traces
   KldBins cells_;                    // the estimate's cluster cells and their particle counts
   Estimate estimate_;                // as of the last step
-  std::array<Kept, kMaxReadings> kept_{};  // this step's informative readings
+  std::array<Kept, kMaxReadings> kept_{};  // this step's informative readings and silences
   int kept_count_ = 0;               // how many
+  int informative_count_ = 0;        // how many of them are echoes
+  std::vector<std::uint64_t> promise_keys_;  // the promise cache (open addressing, this step's):
+  std::vector<std::uint32_t> promise_bits_;  // cell keys (0: empty) and their promised() bits
   bool stepping_ = false;            // a step is under way (particles moved, not all weighed)
   int weighed_ = 0;                  // particles weighed so far in this step
   double best_log_ = 0.0;            // the largest log-likelihood so far in this step
