@@ -424,7 +424,10 @@ void bind_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& plan
   // max_particles, so it is bounded at the 2,000 whose activations were measured (LOCALISATION.md).
   b.integer("localise.min_particles", l.min_particles, 10, 2'000);
   b.integer("localise.max_particles", l.max_particles, 10, 2'000);
-  b.integer("localise.particles_per_run", l.particles_per_run, 10, 2'000);
+  // The bounds on an activation's work, capped where it was measured under 2 ms (LOCALISATION.md,
+  // "The module"): more would only let a setting break the bound.
+  b.integer("localise.particles_per_run", l.particles_per_run, 10, 300);
+  b.integer("localise.traces_per_run", l.traces_per_run, 10, 80);
   b.integer("localise.initial_sigma_mm", l.initial_sigma_mm, 0, 100'000);
   b.integer("localise.initial_sigma_deg", l.initial_sigma_deg, 0, 180);
   b.boolean("localise.report_corrected", l.report_corrected);

@@ -127,7 +127,7 @@ void LocaliseModule::run(Kernel& k) {
   }
   if (started_) {
     if (filter_->stepping()) {
-      if (filter_->weigh_some(static_cast<int>(cfg_.particles_per_run)))
+      if (filter_->weigh_some(static_cast<int>(cfg_.particles_per_run), static_cast<int>(cfg_.traces_per_run)))
         publish(tick, step_odometry_seq_ == last_posture_.odometry_seq);  // an AC since: no correction from it
     } else {
       const loc::Pose odo = localise::to_pose(last_posture_.x, last_posture_.y, last_posture_.theta);

@@ -126,5 +126,45 @@ TEST(ParticleFilterSlices, AStepInSlicesGivesTheWholeStepsParticles) {
   EXPECT_EQ(whole.w_slow(), sliced.w_slow());
 }
 
+// Why: the module's longest activation (issue #18: < 2 ms). A global search's particles each
+// trace the map's promises (no two share a cell), a tracking cloud's mostly share them: 200
+// particles a slice cost 3.3-3.6 ms in a global search. A slice now also ends once it has traced
+// `traces` of them — and the step's particles are still the whole step's.
+TEST(ParticleFilterSlices, ASliceEndsOnceItHasTracedItsBudgetOfPromises) {
+  const auto lab = test::load_lab("default.toml");
+  ParticleFilter whole(lab.field, FilterParams{}, 12), sliced(lab.field, FilterParams{}, 12);
+  whole.set_global();
+  sliced.set_global();
+  std::vector<SonarReading> readings(24);
+  for (std::size_t i = 0; i < readings.size(); ++i)
+    readings[i] = SonarReading{Eigen::Vector2d(0.3, 0.1), 0.26 * static_cast<double>(i), 0.5 + 0.15 * static_cast<double>(i),
+                               i % 4 == 3};  // a silence in four
+  whole.step(Pose(0, 0, 0), readings);
+  sliced.step(Pose(0, 0, 0), readings);
+  for (int k = 1; k <= 4; ++k) {
+    const Pose odo(0.15 * k, 0.02 * k, 0.05 * k);
+    ASSERT_TRUE(whole.step(odo, readings));
+    ASSERT_TRUE(sliced.begin_step(odo, readings));
+    int parts = 0, most = 0;
+    for (bool done = false; !done; ++parts) {
+      const int before = sliced.traced();
+      done = sliced.weigh_some(200, 25);
+      most = std::max(most, sliced.traced() - before);
+    }
+    EXPECT_LE(most, 25) << "step " << k;
+    if (k == 1) {
+      EXPECT_GT(parts, 2000 / 200);  // the global cloud's 2,000: the budget ended slices early
+    }
+    ASSERT_EQ(whole.particles().size(), sliced.particles().size());
+    for (std::size_t i = 0; i < whole.particles().size(); ++i)
+      ASSERT_EQ(whole.particles()[i].pose, sliced.particles()[i].pose) << "step " << k << " particle " << i;
+  }
+  // One particle a call at least: a budget of none still ends the step.
+  ASSERT_TRUE(sliced.begin_step(Pose(1.0, 0.1, 0.3), readings));
+  int calls = 1;
+  while (!sliced.weigh_some(200, 0)) ++calls;
+  EXPECT_EQ(calls, sliced.weighed());
+}
+
 }  // namespace
 }  // namespace robuter::loc

@@ -25,6 +25,14 @@ class KldBins {
   int count(int bx, int by, int bt) const;
   int size() const { return size_; }
   void clear();
+  // The bins, in the order they were first added or inserted: f(bx, by, bt, count).
+  template <typename F>
+  void for_each(F&& f) const {
+    for (const auto i : used_) {
+      const std::uint64_t k = keys_[i] - 1;
+      f(unpack(k >> 42), unpack(k >> 21), unpack(k), counts_[i]);
+    }
+  }
 
  private:
   std::vector<std::uint64_t> keys_;  // 0 = empty slot; key = packed bin + 1
@@ -36,6 +44,11 @@ class KldBins {
   // The slot holding the bin, or the empty slot where it would go.
   std::size_t slot(std::uint64_t key) const;
   static std::uint64_t key_of(int bx, int by, int bt);
+  // One 21-bit field of a key back to its (signed) bin.
+  static int unpack(std::uint64_t field) {
+    const auto v = static_cast<std::int32_t>(field & 0x1FFFFFu);
+    return v >= 0x100000 ? v - 0x200000 : v;
+  }
 };
 
 }  // namespace robuter::loc

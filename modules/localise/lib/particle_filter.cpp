@@ -141,10 +141,21 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
   }
   std::fill(promise_keys_.begin(), promise_keys_.end(), 0);
   stepping_ = true;
-  weighed_ = 0;
+  weighed_ = traced_ = 0;
   best_log_ = -1e300;
   likelihood_sum_ = 0.0;
   return true;
+}
+
+void ParticleFilter::aim(const Pose& pose) {
+  const double c = std::cos(pose.z()), sn = std::sin(pose.z());
+  Eigen::Matrix2d turn;
+  turn << c, -sn, sn, c;
+  const Eigen::Vector2d at(pose.x(), pose.y());
+  for (int k = 0; k < kept_count_; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    beams_[i] = Beam{at + turn * kept_[i].mount, turn * kept_[i].axis};
+  }
 }
 
 std::uint32_t ParticleFilter::promised(const Pose& pose) {
@@ -163,14 +174,12 @@ std::uint32_t ParticleFilter::promised(const Pose& pose) {
       break;
     }
   }
-  const double c = std::cos(pose.z()), sn = std::sin(pose.z());
-  const Eigen::Vector2d at(pose.x(), pose.y());
+  ++traced_;
   std::uint32_t bits = 0;
   for (int k = 0; k < kept_count_; ++k) {
-    const auto& r = kept_[static_cast<std::size_t>(k)];
-    const Eigen::Vector2d origin = at + Eigen::Vector2d(c * r.mount.x() - sn * r.mount.y(), sn * r.mount.x() + c * r.mount.y());
-    const Eigen::Vector2d axis(c * r.axis.x() - sn * r.axis.y(), sn * r.axis.x() + c * r.axis.y());
-    if (promises_echo(field_, origin, axis, r.within, params_.sonar, cone_)) bits |= std::uint32_t{1} << k;
+    const auto i = static_cast<std::size_t>(k);
+    if (promises_echo(field_, beams_[i].origin, beams_[i].axis, kept_[i].within, params_.sonar, cone_))
+      bits |= std::uint32_t{1} << k;
   }
   if (vacant) {
     promise_keys_[slot] = key;
@@ -180,29 +189,28 @@ std::uint32_t ParticleFilter::promised(const Pose& pose) {
 }
 
 double ParticleFilter::log_likelihood(const Pose& pose) {
-  const double c = std::cos(pose.z()), sn = std::sin(pose.z());
-  const Eigen::Vector2d at(pose.x(), pose.y());
-  double l = field_.at(at) < params_.body_clearance ? std::log(params_.inside_weight) : 0.0;
+  double l = field_.at(Eigen::Vector2d(pose.x(), pose.y())) < params_.body_clearance ? std::log(params_.inside_weight) : 0.0;
+  aim(pose);
   const std::uint32_t told = promised(pose);
   for (int k = 0; k < kept_count_; ++k) {
-    const auto& r = kept_[static_cast<std::size_t>(k)];
+    const auto i = static_cast<std::size_t>(k);
     const bool against = (told >> k) & 1u;
-    if (r.silence) {
-      if (against) l += std::log(params_.sonar.miss_weight);
+    if (kept_[i].silence) {
+      if (against) l += std::log(promise_factor(true, true, params_.sonar));
       continue;
     }
-    const Eigen::Vector2d origin = at + Eigen::Vector2d(c * r.mount.x() - sn * r.mount.y(), sn * r.mount.x() + c * r.mount.y());
-    const Eigen::Vector2d axis(c * r.axis.x() - sn * r.axis.y(), sn * r.axis.x() + c * r.axis.y());
-    l += std::log(arc_likelihood(field_, origin, axis, r.range, params_.sonar, arc_) *
-                  (against ? params_.sonar.through_weight : 1.0));
+    l += std::log(arc_likelihood(field_, beams_[i].origin, beams_[i].axis, kept_[i].range, params_.sonar, arc_) *
+                  promise_factor(false, against, params_.sonar));
   }
   return l;
 }
 
-bool ParticleFilter::weigh_some(int n) {
+bool ParticleFilter::weigh_some(int n, int traces) {
   if (!stepping_) return false;
   const int end = std::min(count_, weighed_ + std::max(0, n));
-  for (; weighed_ < end; ++weighed_) {
+  const int first = weighed_;
+  const int traced_before = traced_;
+  for (; weighed_ < end && (weighed_ == first || traced_ - traced_before < traces); ++weighed_) {
     const auto k = static_cast<std::size_t>(weighed_);
     const double l = log_likelihood(particles_[k].pose);
     log_lik_[k] = l;
@@ -252,6 +260,8 @@ void ParticleFilter::resample() {
   bins_.clear();
   injected_ = 0;
   int n = 0;
+  int needed_for = -1;  // the bins kld_needed() was last worked out for
+  double needed = 0.0;  // and what it asked for
   for (;;) {
     Pose pose;
     const bool injecting = u(rng_) < inject;
@@ -271,8 +281,10 @@ void ParticleFilter::resample() {
     bins_.insert(static_cast<int>(std::floor(pose.x() / params_.bin_xy)),
                  static_cast<int>(std::floor(pose.y() / params_.bin_xy)),
                  static_cast<int>(std::floor(pose.z() / params_.bin_theta)));
-    const double needed = std::max<double>(params_.min_particles,
-                                           kld_needed(bins_.size(), params_.kld_epsilon, params_.kld_z));
+    if (bins_.size() != needed_for) {  // the bound grows with the bins: worked out when they do
+      needed_for = bins_.size();
+      needed = std::max<double>(params_.min_particles, kld_needed(needed_for, params_.kld_epsilon, params_.kld_z));
+    }
     if (n >= params_.max_particles || n >= needed) break;
   }
   std::swap(particles_, next_);
@@ -295,11 +307,10 @@ void ParticleFilter::update_estimate() {
     const auto& p = particles_[static_cast<std::size_t>(i)].pose;
     cells_.add(cx(p), cy(p), 0);
   }
-  // The densest 3 x 3 block of cells, by the particles in it (each particle's block tried).
+  // The densest 3 x 3 block of cells, by the particles in it (the block about each occupied cell
+  // tried, in the order the particles first filled them: the first densest wins).
   int best = -1, bx = 0, by = 0;
-  for (int i = 0; i < count_; ++i) {
-    const auto& p = particles_[static_cast<std::size_t>(i)].pose;
-    const int x = cx(p), y = cy(p);
+  cells_.for_each([&](int x, int y, int, int) {
     int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) n += cells_.count(x + dx, y + dy, 0);
@@ -308,7 +319,7 @@ void ParticleFilter::update_estimate() {
       bx = x;
       by = y;
     }
-  }
+  });
   double w = 0.0, sx = 0.0, sy = 0.0, sc = 0.0, ss = 0.0;
   const auto in_block = [&](const Pose& p) { return std::abs(cx(p) - bx) <= 1 && std::abs(cy(p) - by) <= 1; };
   for (int i = 0; i < count_; ++i) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <span>
 #include <vector>
@@ -100,8 +101,16 @@ class ParticleFilter {
   // The odometry jumped without the robot moving (AC set it): the next step measures the motion
   // from `odometry`. A step under way goes on (its particles have moved already).
   void rebase(const Pose& odometry);
-  bool weigh_some(int n);
+  // weigh_some(n, traces) also ends the call once `traces` particles needed the map's promises
+  // traced (promised(): a pose in a cell no particle of this step was weighed in), the costly
+  // part: a cloud that tracks shares a few dozen cells, a global search's hardly any. Each call
+  // weighs one particle at least.
+  bool weigh_some(int n, int traces = std::numeric_limits<int>::max());
   bool stepping() const { return stepping_; }
+  // Of the step under way (or the last one): particles weighed, and how many of them needed the
+  // map's promises traced.
+  int weighed() const { return weighed_; }
+  int traced() const { return traced_; }
 
   // As of the last step (or set_pose / set_global).
   const Estimate& estimate() const { return estimate_; }
@@ -126,9 +135,18 @@ class ParticleFilter {
     bool silence = false;   // no echo within range
     double within = 0.0;    // how near an echo the map promises tells against it, m
   };
+  // A kept reading's transducer and beam axis in the map frame, for the particle being weighed.
+  struct Beam {
+    Eigen::Vector2d origin;  // m
+    Eigen::Vector2d axis;    // unit
+  };
+  // Every kept reading's beam for a particle at `pose`, into beams_ (the one robot-to-map
+  // transform of the readings).
+  void aim(const Pose& pose);
   // Which of this step's readings the map tells against at `pose` (bit k: promises_echo() for
-  // kept_[k]), from the promise cache: poses in one cell of 0.1 m and 2° share the answer of the
-  // first one weighed there (the margins are 0.3 m: a cloud that tracks fills a few dozen cells).
+  // kept_[k] along beams_[k]), from the promise cache: poses in one cell of 0.1 m and 2° share the
+  // answer of the first one weighed there (the margins are 0.3 m: a cloud that tracks fills a few
+  // dozen cells).
   std::uint32_t promised(const Pose& pose);
   double log_likelihood(const Pose& pose);
   void finish_weighing();
@@ -153,12 +171,14 @@ class ParticleFilter {
   KldBins cells_;                    // the estimate's cluster cells and their particle counts
   Estimate estimate_;                // as of the last step
   std::array<Kept, kMaxReadings> kept_{};  // this step's informative readings and silences
+  std::array<Beam, kMaxReadings> beams_{}; // and their beams for the particle being weighed
   int kept_count_ = 0;               // how many
   int informative_count_ = 0;        // how many of them are echoes
   std::vector<std::uint64_t> promise_keys_;  // the promise cache (open addressing, this step's):
   std::vector<std::uint32_t> promise_bits_;  // cell keys (0: empty) and their promised() bits
   bool stepping_ = false;            // a step is under way (particles moved, not all weighed)
   int weighed_ = 0;                  // particles weighed so far in this step
+  int traced_ = 0;                   // promised() calls that traced the promises (not cached)
   double best_log_ = 0.0;            // the largest log-likelihood so far in this step
   double likelihood_sum_ = 0.0;      // sum of the per-reading geometric mean likelihoods so far
   int count_ = 0;                    // particles in use

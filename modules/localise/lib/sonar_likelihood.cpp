@@ -84,15 +84,20 @@ double silence_within(double reach, const SonarModelParams& params) {
 }
 double echo_within(double range, const SonarModelParams& params) { return range - params.near_margin; }
 
+double promise_factor(bool silence, bool promised, const SonarModelParams& params) {
+  if (!promised) return 1.0;
+  return silence ? params.miss_weight : params.through_weight;
+}
+
 double silence_likelihood(const DistanceField& field, const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                           double reach, const SonarModelParams& params, const ArcTable& cone) {
-  return promises_echo(field, origin, axis, silence_within(reach, params), params, cone) ? params.miss_weight : 1.0;
+  return promise_factor(true, promises_echo(field, origin, axis, silence_within(reach, params), params, cone), params);
 }
 
 double sonar_likelihood(const DistanceField& field, const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                         double range, const SonarModelParams& params, const ArcTable& arc, const ArcTable& cone) {
-  const double p = arc_likelihood(field, origin, axis, range, params, arc);
-  return promises_echo(field, origin, axis, echo_within(range, params), params, cone) ? p * params.through_weight : p;
+  return arc_likelihood(field, origin, axis, range, params, arc) *
+         promise_factor(false, promises_echo(field, origin, axis, echo_within(range, params), params, cone), params);
 }
 
 double arc_likelihood(const DistanceField& field, const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,

@@ -82,6 +82,11 @@ double arc_likelihood(const DistanceField& field, const Eigen::Vector2d& origin,
 double silence_within(double reach, const SonarModelParams& params);
 double echo_within(double range, const SonarModelParams& params);
 
+// The factor an echo the map promises (nearer than echo_within() or silence_within()) puts on a
+// reading: miss_weight on a silence, through_weight on an echo; 1 where none is promised. The one
+// place this rule is made (sonar_likelihood(), silence_likelihood() and the filter use it).
+double promise_factor(bool silence, bool promised, const SonarModelParams& params);
+
 // The whole likelihood of an echo at `range`: arc_likelihood() times `through_weight` when the
 // map promises an echo nearer than echo_within(range) (the beam would have echoed there).
 double sonar_likelihood(const DistanceField& field, const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
