@@ -192,7 +192,7 @@ struct LocaliseConfig {
   std::uint32_t min_particles = 200;  // KLD-sampling keeps at least this many
   std::uint32_t max_particles = 2000; // and at most this many (every buffer is this size, from start-up)
   std::uint32_t particles_per_run = 200;  // particles weighed per activation (the bound on its work: docs/LOCALISATION.md)
-  std::uint32_t traces_per_run = 80;      // and of them, at most this many with the map's promises traced
+  std::uint32_t traces_per_run = 64;      // and of them, at most this many with the map's promises traced
   std::uint32_t initial_sigma_mm = 100;   // spread of the start pose (the odometry's, a state file's, XA's), mm
   std::uint32_t initial_sigma_deg = 5;    // and of its heading, degrees
   bool report_corrected = false;      // BO, BV and the XS stream report the map pose instead of the odometry's

@@ -63,8 +63,16 @@ bool ParticleFilter::random_nearby_pose(Pose& out) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double r = recovery_radius();
   for (int k = 0; k < kNearbyDraws; ++k) {
-    const double d = r * std::sqrt(u(rng_)), a = 2.0 * std::numbers::pi * u(rng_);
-    const Eigen::Vector2d p(anchor_.x() + d * std::cos(a), anchor_.y() + d * std::sin(a));
+    Eigen::Vector2d p;
+    if (u(rng_) < params_.recover_along_share) {  // along the heading's line, a little across it
+      const double along = r * (2.0 * u(rng_) - 1.0);
+      const double across = params_.recover_cross_sigma * std::normal_distribution<double>(0.0, 1.0)(rng_);
+      const Eigen::Vector2d dir(std::cos(estimate_.pose.z()), std::sin(estimate_.pose.z()));
+      p = Eigen::Vector2d(anchor_.x(), anchor_.y()) + along * dir + across * Eigen::Vector2d(-dir.y(), dir.x());
+    } else {
+      const double d = r * std::sqrt(u(rng_)), a = 2.0 * std::numbers::pi * u(rng_);
+      p = Eigen::Vector2d(anchor_.x() + d * std::cos(a), anchor_.y() + d * std::sin(a));
+    }
     if (!field_.contains(p) || field_.at(p) < params_.body_clearance) continue;
     // Most about the estimate's heading (a kidnapping carries the robot more than it turns it:
     // the cloud's heading is the best guess even when its place is lost); the rest any heading.

@@ -45,6 +45,9 @@ struct FilterParams {
   double recover_growth = 1.0;     // and the radius grows by this per metre driven since, m/m
   double recover_heading_share = 0.75;  // the share of them drawn about the estimate's heading,
   double recover_heading_sigma = 0.26;  // this far (rad, 15°, one sigma); the rest any heading
+  double recover_along_share = 0.5;  // the share of them drawn along the estimate's heading line
+  double recover_cross_sigma = 0.25; // (a corridor's axis: a carry along it is what the ring cannot
+                                     // tell), this far across it (m, one sigma); the rest in the disc
   int recovery_readings = 6;       // a step with fewer informative readings leaves augmented MCL's
                                    // averages as they were: a few echoes (a room whose walls are
                                    // out of reach) are no measure of whether the robot is lost
