@@ -20,8 +20,7 @@ KldBins::KldBins(int capacity)
 }
 
 std::uint64_t KldBins::key_of(int bx, int by, int bt) {
-  const auto pack = [](int v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1FFFFFu); };
-  return ((pack(bx) << 42) | (pack(by) << 21) | pack(bt)) + 1;
+  return pack_bins(bx, by, bt) + 1;
 }
 
 std::size_t KldBins::slot(std::uint64_t key) const {

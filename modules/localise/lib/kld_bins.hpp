@@ -12,6 +12,13 @@ namespace robuter::loc {
 // standard normal upper quantile `z`.
 double kld_needed(int bins, double epsilon, double z);
 
+// An (x, y, theta) bin as one 64-bit key: 21 bits of each (two's complement), bit 63 clear.
+// KldBins keys on it; the filter's promise cache too (particle_filter.cpp). unpack() reverses it.
+inline std::uint64_t pack_bins(int bx, int by, int bt) {
+  const auto pack = [](int v) { return static_cast<std::uint64_t>(static_cast<std::uint32_t>(v) & 0x1FFFFFu); };
+  return (pack(bx) << 42) | (pack(by) << 21) | pack(bt);
+}
+
 // A set of (x, y, theta) bin keys with room for `capacity` distinct ones: open addressing over a
 // table of twice the capacity, cleared in time proportional to what was inserted.
 class KldBins {

@@ -167,11 +167,10 @@ void ParticleFilter::aim(const Pose& pose) {
 }
 
 std::uint32_t ParticleFilter::promised(const Pose& pose) {
-  const auto bin = [](double v, double side) { return static_cast<std::int64_t>(std::floor(v / side)) & 0x1fffff; };
-  // 21 bits each of x, y and heading, and a top bit so that no key is 0 (empty).
-  const std::uint64_t key = (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(bin(pose.x(), kPromiseCell)) << 42) |
-                            (static_cast<std::uint64_t>(bin(pose.y(), kPromiseCell)) << 21) |
-                            static_cast<std::uint64_t>(bin(pose.z(), kPromiseHeading));
+  const auto bin = [](double v, double side) { return static_cast<int>(std::floor(v / side)); };
+  // The cell's bins, and a top bit so that no key is 0 (empty).
+  const std::uint64_t key = (std::uint64_t{1} << 63) |
+                            pack_bins(bin(pose.x(), kPromiseCell), bin(pose.y(), kPromiseCell), bin(pose.z(), kPromiseHeading));
   const std::size_t mask = promise_keys_.size() - 1;
   std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
   bool vacant = false;  // slot is free for this key (else the probes found none: not cached)
