@@ -144,8 +144,8 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
     if (spec.trace && i % 100 == 0) {
       const Localisation& l = fw.bb().localisation.reader().peek();
       const auto& t = fw.sim().robot().pose();
-      std::printf("t %.0f truth %.2f %.2f %.0f  map error %.0f mm  state %d estimate %.2f %.2f major %d cluster %u%% particles %u\n",
-                  i / 100.0, t.x, t.y, t.theta * 180.0 / M_PI, m.position * 1000.0, static_cast<int>(l.state), l.x * 1e-4, l.y * 1e-4,
+      std::printf("t %.0f truth %.2f %.2f %.0f  map error %.0f mm  state %d estimate %.2f %.2f %.0f major %d cluster %u%% particles %u\n",
+                  i / 100.0, t.x, t.y, t.theta * 180.0 / M_PI, m.position * 1000.0, static_cast<int>(l.state), l.x * 1e-4, l.y * 1e-4, l.theta * 0.01,
                   l.major_mm, static_cast<unsigned>(l.cluster_pct), static_cast<unsigned>(l.particles));
     }
     if (spec.kidnap) {

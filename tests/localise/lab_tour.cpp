@@ -182,6 +182,7 @@ std::vector<TourSample> run_tour(const Lab& lab, const TourSpec& spec, const Fil
         t.odometry_heading = std::abs(wrap_angle(odo.z() - truth.z()));
         t.particles = e.particles;
         t.step_cpu = cpu;
+        t.scouts_fired = filter.scouts_fired();
         out.push_back(t);
       }
     }

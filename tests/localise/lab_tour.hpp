@@ -48,6 +48,7 @@ struct TourSample {
   double odometry_heading = 0.0;// rad
   int particles = 0;            // the filter's count after the step
   double step_cpu = 0.0;        // the step's thread CPU time, s (with slices: the costliest part)
+  int scouts_fired = 0;         // times a scout fired since the start (ParticleFilter::scouts_fired())
 };
 
 std::vector<TourSample> run_tour(const Lab& lab, const TourSpec& spec, const FilterParams& params = {});

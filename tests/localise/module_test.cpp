@@ -164,10 +164,14 @@ TEST(LocaliseModule, TheOperatorsTourGoesOnPastTheDoorsWithTheWallsOnTheMapPose)
 // rose to 0.2-0.46; tracking keeps it at 0.00), and then over the whole floor. Recovery now starts
 // past 0.1, near the last compact estimate, mostly about its heading: these three places, at the
 // first crossing and beside the east-west corridor's doors, are found within 30 s (0 of 30 seeded
-// places before, 13 of 30 now: the rest lie in the north-south corridors, featureless for 13 m).
+// places before, 13 of 30 then: the rest lie in the north-south corridors, featureless for 13 m).
+// Seeds 8 and 9 (corridor-b and the north-east corner) were not found even so: at the wrong place
+// the ring explains as well as at the right one, augmented MCL's averages never part and nothing
+// is drawn. The scouts along the heading line (docs/LOCALISATION.md, "Scouts") find both (found
+// after 6.4 and 5.8 s; neither before them: checked), so the three must all be found.
 TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
   int found = 0;
-  for (const std::uint64_t seed : {1u, 6u, 7u}) {  // firmware_tour_bench's places for these seeds
+  for (const std::uint64_t seed : {6u, 8u, 9u}) {  // firmware_tour_bench's places for these seeds
     FloorTourSpec spec;
     spec.seed = seed;
     spec.sonar_model = sim::SonarPreset::ideal;
@@ -182,7 +186,7 @@ TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
     std::printf("seed %llu: carried at %.0f s from (%.1f, %.1f): found after %.1f s\n", static_cast<unsigned long long>(seed),
                 r.kidnapped_at, r.kidnap_x, r.kidnap_y, r.found_after);
   }
-  EXPECT_GE(found, 2);
+  EXPECT_EQ(found, 3);
 }
 
 // Why: along a north-south corridor the walls are the same for 13 m, and the ring hears what tells
@@ -191,11 +195,12 @@ TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
 // neither: carried 3 m along that corridor (the realistic sonars, the first lap of seed 1), the
 // robot was found within 30 s at 2 of these 5 moments (170 and 180 s); with the silences and the
 // incidence at 4 (all but 180 s; docs/LOCALISATION.md, "The sonar model"); with recovery drawing
-// along the heading line (2026-12-07) at 4 again (all but 120 s). The sanitizer tree tries the
-// same five (it tried two, 120 and 170 s, for time: the five took 18.7 s there in make test).
+// along the heading line (2026-12-07) at 4 again (all but 120 s); with the scouts along the
+// heading line (2026-12-07, later) at all 5, within 1.2-16 s. The sanitizer tree tries the same
+// five (it tried two, 120 and 170 s, for time: the five took 18.7 s there in make test).
 TEST(LocaliseModule, ARobotCarriedAlongANorthSouthCorridorIsFoundAgain) {
   const std::vector<double> moments = {100.0, 120.0, 150.0, 170.0, 180.0};
-  const int needed = 4;
+  const int needed = 5;
   int found = 0;
   for (const double at : moments) {
     FloorTourSpec spec;

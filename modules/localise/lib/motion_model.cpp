@@ -35,9 +35,13 @@ Pose sample_motion(const Pose& pose, const OdometryStep& step, const MotionNoise
   const double trans = step.trans - std::sqrt(noise.trans_from_trans * t * t +
                                               noise.trans_from_rot * (r1 * r1 + r2 * r2)) * unit(rng);
   const double rot2 = step.rot2 - std::sqrt(noise.rot_from_rot * r2 * r2 + noise.rot_from_trans * t * t) * unit(rng);
-  const double heading = pose.z() + rot1;
-  return Pose(pose.x() + trans * std::cos(heading), pose.y() + trans * std::sin(heading),
-              wrap_angle(heading + rot2));
+  return move_pose(pose, OdometryStep{rot1, trans, rot2});
+}
+
+Pose move_pose(const Pose& pose, const OdometryStep& step) {
+  const double heading = pose.z() + step.rot1;
+  return Pose(pose.x() + step.trans * std::cos(heading), pose.y() + step.trans * std::sin(heading),
+              wrap_angle(heading + step.rot2));
 }
 
 }  // namespace robuter::loc

@@ -34,6 +34,8 @@ OdometryStep odometry_step(const Pose& before, const Pose& after);
 
 // `pose` moved by `step` with noise drawn from `rng`.
 Pose sample_motion(const Pose& pose, const OdometryStep& step, const MotionNoise& noise, std::mt19937_64& rng);
+// `pose` moved by `step` exactly (sample_motion() moves it by a step with the noise added).
+Pose move_pose(const Pose& pose, const OdometryStep& step);
 
 // An angle in (-pi, pi].
 double wrap_angle(double a);

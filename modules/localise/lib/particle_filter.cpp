@@ -53,6 +53,9 @@ void ParticleFilter::set_pose(const Pose& mean, const Eigen::Vector3d& sigma) {
   anchor_ = Pose(mean.x(), mean.y(), wrap_angle(mean.z()));
   since_anchor_ = 0.0;
   update_estimate();
+  scout_count_ = 0;  // scouts start afresh about the given pose
+  scout_fired_ = -1;
+  place_scouts();
 }
 
 double ParticleFilter::recovery_radius() const {
@@ -108,11 +111,14 @@ void ParticleFilter::set_global() {
   w_slow_ = w_fast_ = 0.0;
   since_anchor_ = std::numeric_limits<double>::infinity();  // anywhere: recovery draws globally
   update_estimate();
+  scout_count_ = 0;
+  scout_fired_ = -1;
+  place_scouts();
 }
 
 bool ParticleFilter::step(const Pose& odometry, std::span<const SonarReading> readings) {
   if (!begin_step(odometry, readings)) return false;
-  return weigh_some(count_);
+  return weigh_some(count_ + scout_count_);
 }
 
 void ParticleFilter::rebase(const Pose& odometry) {
@@ -138,6 +144,11 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
     auto& p = particles_[static_cast<std::size_t>(i)];
     p.pose = sample_motion(p.pose, s, params_.motion, rng_);
   }
+  for (int i = 0; i < scout_count_; ++i) {
+    auto& sc = scouts_[static_cast<std::size_t>(i)];
+    sc.pose = move_pose(sc.pose, s);
+    sc.free = i == 0 || fits(sc.pose);
+  }
   kept_count_ = informative_count_ = 0;
   for (const auto& r : readings) {
     const bool echo = informative(r, params_.sonar);
@@ -149,7 +160,7 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
   }
   std::fill(promise_keys_.begin(), promise_keys_.end(), 0);
   stepping_ = true;
-  weighed_ = traced_ = 0;
+  weighed_ = traced_ = scouts_weighed_ = 0;
   best_log_ = -1e300;
   likelihood_sum_ = 0.0;
   return true;
@@ -214,21 +225,27 @@ double ParticleFilter::log_likelihood(const Pose& pose) {
 
 bool ParticleFilter::weigh_some(int n, int traces) {
   if (!stepping_) return false;
-  const int end = std::min(count_, weighed_ + std::max(0, n));
-  const int first = weighed_;
   const int traced_before = traced_;
-  for (; weighed_ < end && (weighed_ == first || traced_ - traced_before < traces); ++weighed_) {
+  int done = 0;  // particles and scouts weighed in this call
+  const auto may = [&] { return done < n && (done == 0 || traced_ - traced_before < traces); };
+  for (; weighed_ < count_ && may(); ++weighed_, ++done) {
     const auto k = static_cast<std::size_t>(weighed_);
     const double l = log_likelihood(particles_[k].pose);
     log_lik_[k] = l;
     best_log_ = std::max(best_log_, l);
     if (informative_count_ > 0) likelihood_sum_ += std::exp(l / informative_count_);
   }
-  if (weighed_ < count_) return false;
+  for (; weighed_ == count_ && scouts_weighed_ < scout_count_ && may(); ++scouts_weighed_, ++done) {
+    auto& sc = scouts_[static_cast<std::size_t>(scouts_weighed_)];
+    if (sc.free) sc.log_lik = log_likelihood(sc.pose);
+  }
+  if (weighed_ < count_ || scouts_weighed_ < scout_count_) return false;
   finish_weighing();
+  weigh_scouts();
   update_estimate();  // from the weighed particles, before resampling draws from them
   resample();
   estimate_.particles = count_;
+  place_scouts();
   stepping_ = false;
   return true;
 }
@@ -246,6 +263,75 @@ void ParticleFilter::finish_weighing() {
     total += particles_[k].weight;
   }
   for (int i = 0; i < count_; ++i) particles_[static_cast<std::size_t>(i)].weight /= total;
+}
+
+void ParticleFilter::weigh_scouts() {
+  scout_fired_ = -1;
+  if (scout_count_ == 0) return;
+  const double reference = scouts_[0].log_lik;
+  // A step of a few echoes is no evidence (recovery_readings: the rule augmented MCL's averages
+  // follow). In a room whose walls are mostly out of reach, such steps fired scouts at unmapped
+  // furniture's echoes and sent two of #17's routes astray (docs/LOCALISATION.md, "Scouts").
+  const bool counts = informative_count_ >= params_.recovery_readings;
+  double most = params_.scout_threshold;
+  for (int i = 1; i < scout_count_; ++i) {
+    auto& sc = scouts_[static_cast<std::size_t>(i)];
+    if (!sc.free) {
+      sc.evidence = 0.0;
+      continue;
+    }
+    if (counts)
+      sc.evidence = std::max(0.0, sc.evidence + params_.likelihood_power * (sc.log_lik - reference) - params_.scout_drift);
+    if (sc.evidence >= most) {
+      most = sc.evidence;
+      scout_fired_ = i;
+    }
+  }
+  if (scout_fired_ < 0) return;
+  ++scouts_fired_;
+  // The draws go to every scout with evidence, by its odds against the one that fired: evidence
+  // against the estimate's place is often evidence for several others alike.
+  double acc = 0.0;
+  for (int i = 0; i < scout_count_; ++i) {
+    const auto& sc = scouts_[static_cast<std::size_t>(i)];
+    acc += i > 0 && sc.evidence > 0.0 ? std::exp(sc.evidence - most) : 0.0;
+    scout_cdf_[static_cast<std::size_t>(i)] = acc;
+  }
+}
+
+void ParticleFilter::place_scouts() {
+  const int wanted = std::clamp(params_.scouts, 0, kMaxScouts);
+  if (wanted == 0 || count_ == 0 || !std::isfinite(since_anchor_)) {  // none, or a global search
+    scout_count_ = 0;
+    return;
+  }
+  const Pose& e = estimate_.pose;
+  const Eigen::Vector2d dir(std::cos(e.z()), std::sin(e.z()));
+  const bool fresh = scout_count_ != wanted + 1 || scout_fired_ >= 0;
+  scout_count_ = wanted + 1;
+  scouts_[0] = Scout{e, 0.0, 0.0, true};
+  for (int i = 1; i < scout_count_; ++i) {
+    auto& sc = scouts_[static_cast<std::size_t>(i)];
+    if (!fresh && sc.evidence > 0.0) continue;  // it follows the odometry while it gathers evidence
+    const int k = (i + 1) / 2;                   // 1, 1, 2, 2, ...: ahead and behind in turn
+    const double along = (i % 2 == 1 ? 1.0 : -1.0) * params_.scout_spacing * k;
+    const Pose p(e.x() + along * dir.x(), e.y() + along * dir.y(), e.z());
+    sc = Scout{p, 0.0, 0.0, fits(p)};
+  }
+}
+
+bool ParticleFilter::fits(const Pose& pose) const {
+  const Eigen::Vector2d at(pose.x(), pose.y());
+  return field_.contains(at) && field_.at(at) >= params_.body_clearance;
+}
+
+Pose ParticleFilter::about_scout() {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double x = std::uniform_real_distribution<double>(0.0, scout_cdf_[static_cast<std::size_t>(scout_count_ - 1)])(rng_);
+  const auto at = std::upper_bound(scout_cdf_.begin(), scout_cdf_.begin() + scout_count_, x) - scout_cdf_.begin();
+  const Pose& c = scouts_[static_cast<std::size_t>(std::min<std::ptrdiff_t>(at, scout_count_ - 1))].pose;
+  return Pose(c.x() + params_.scout_sigma_xy * unit(rng_), c.y() + params_.scout_sigma_xy * unit(rng_),
+              wrap_angle(c.z() + params_.scout_sigma_theta * unit(rng_)));
 }
 
 void ParticleFilter::resample() {
@@ -271,8 +357,12 @@ void ParticleFilter::resample() {
   double needed = 0.0;  // and what it asked for
   for (;;) {
     Pose pose;
-    const bool injecting = u(rng_) < inject;
-    if (injecting && global) {
+    const bool scouting = scout_fired_ >= 0 && u(rng_) < params_.scout_share;
+    const bool injecting = !scouting && u(rng_) < inject;
+    if (scouting) {
+      pose = about_scout();
+      ++injected_;
+    } else if (injecting && global) {
       pose = random_free_pose();
       ++injected_;
     } else if (injecting && random_nearby_pose(pose)) {

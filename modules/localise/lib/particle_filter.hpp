@@ -54,6 +54,22 @@ struct FilterParams {
   double likelihood_power = 0.5;   // each reading's likelihood to this power: the ring's 24
                                    // readings of one step are not independent (AMCL's answer is
                                    // to use fewer beams; this keeps them all and flattens each)
+  // Scouts (docs/LOCALISATION.md, "Scouts along the heading line"): single poses at
+  // scout_spacing steps along the estimate's heading line, half ahead and half behind, moved by
+  // the odometry and weighed every step like a particle. Each sums its evidence against the
+  // estimate (a CUSUM of the log-likelihood ratio, times likelihood_power, less scout_drift a
+  // step, never below 0); one whose sum reaches scout_threshold draws scout_share of the next
+  // particles about itself, and the filter decides. A scout with no evidence is placed again on
+  // the line each step. A carry along a corridor, which the ring cannot tell while the walls run
+  // on, is what they watch for: a door or a crossing is evidence for the one where the robot is.
+  int scouts = 16;                 // how many (0: none; at most kMaxScouts)
+  double scout_spacing = 0.5;      // m between neighbours on the line
+  double scout_threshold = 6.0;    // evidence that fires a scout
+  double scout_drift = 0.25;       // evidence taken off each scout's sum a step (the prior that
+                                   // the estimate is right)
+  double scout_share = 0.5;        // the share of the next particles drawn about a scout that fired
+  double scout_sigma_xy = 0.15;    // their spread about it, m (one sigma)
+  double scout_sigma_theta = 0.09; // and in heading, rad (5°)
   MotionNoise motion;              // the odometry model's noise
   SonarModelParams sonar;          // the ring's model
 };
@@ -78,8 +94,18 @@ struct Estimate {
                                                             // bounds: the pose is known
 };
 
+// A single pose the filter watches beside its cloud (FilterParams' scouts).
+struct Scout {
+  Pose pose = Pose::Zero();  // map frame
+  double log_lik = 0.0;      // at the step's weighing
+  double evidence = 0.0;     // its CUSUM against the estimate
+  bool free = false;         // on the map, body_clearance from every wall: else not weighed (open
+                             // space off the map explains any echo as well as clutter does)
+};
+
 class ParticleFilter {
  public:
+  static constexpr int kMaxScouts = 16;
   // Allocates every buffer (max_particles particles, the field's free cells); nothing after.
   ParticleFilter(const DistanceField& field, const FilterParams& params, std::uint64_t seed);
 
@@ -97,9 +123,10 @@ class ParticleFilter {
 
   // The same step in parts, for a caller with a budget per activation: begin_step() moves the
   // particles and keeps the readings (true when a step begins; false while one is under way or
-  // the robot has not moved enough), weigh_some() weighs up to `n` more particles and, once all
-  // are weighed, resamples (true when the step is done). step() is begin_step() and one
-  // weigh_some() of every particle: the same draws, the same result.
+  // the robot has not moved enough), weigh_some() weighs up to `n` more particles (then the
+  // scouts, which count in `n` too) and, once all are weighed, resamples (true when the step is
+  // done). step() is begin_step() and one weigh_some() of every particle and scout: the same
+  // draws, the same result.
   bool begin_step(const Pose& odometry, std::span<const SonarReading> readings);
   // The odometry jumped without the robot moving (AC set it): the next step measures the motion
   // from `odometry`. A step under way goes on (its particles have moved already).
@@ -107,7 +134,7 @@ class ParticleFilter {
   // weigh_some(n, traces) also ends the call once `traces` particles needed the map's promises
   // traced (promised(): a pose in a cell no particle of this step was weighed in), the costly
   // part: a cloud that tracks shares a few dozen cells, a global search's hardly any. Each call
-  // weighs one particle at least.
+  // weighs one particle (or scout) at least.
   bool weigh_some(int n, int traces = std::numeric_limits<int>::max());
   bool stepping() const { return stepping_; }
   // Of the step under way (or the last one): particles weighed, and how many of them needed the
@@ -121,8 +148,12 @@ class ParticleFilter {
   // The average measurement likelihoods of augmented MCL (per reading), slow and fast.
   double w_slow() const { return w_slow_; }
   double w_fast() const { return w_fast_; }
-  // Particles drawn at random from the free cells at the last step.
+  // Particles drawn at random (free cells, nearby or about a scout) at the last step.
   int injected() const { return injected_; }
+  // The scouts (the first is the estimate they are weighed against), as of the last step.
+  std::span<const Scout> scouts() const { return {scouts_.data(), static_cast<std::size_t>(scout_count_)}; }
+  // How many times a scout fired since construction.
+  int scouts_fired() const { return scouts_fired_; }
   // Cells of the map where the robot fits (body_clearance from every wall): 0 and there is no pose.
   std::size_t free_cells() const { return free_.size(); }
   // The radius recovery draws its random particles in now, m (infinite after set_global()).
@@ -153,6 +184,14 @@ class ParticleFilter {
   std::uint32_t promised(const Pose& pose);
   double log_likelihood(const Pose& pose);
   void finish_weighing();
+  // The scouts' evidence from this step's weighing; scout_fired_ the one past the threshold.
+  void weigh_scouts();
+  // The estimate and the scouts with no evidence placed on its heading line; all of them after
+  // one fired, none while the filter searches the whole map.
+  void place_scouts();
+  Pose about_scout();
+  // On the map, body_clearance from every wall.
+  bool fits(const Pose& pose) const;
   void update_estimate();
   void resample();
   Pose random_free_pose();
@@ -192,6 +231,12 @@ class ParticleFilter {
   bool have_odometry_ = false;       // step() has seen an odometry pose
   Pose anchor_ = Pose::Zero();       // the last compact estimate (or set_pose's mean)
   double since_anchor_ = 0.0;        // the odometry's travel since then, m (infinite: global)
+  std::array<Scout, kMaxScouts + 1> scouts_{};  // [0]: the estimate; then the line's scouts
+  std::array<double, kMaxScouts + 1> scout_cdf_{};  // their cumulative odds when one fired
+  int scout_count_ = 0;              // in use (0: none)
+  int scouts_weighed_ = 0;           // of this step
+  int scout_fired_ = -1;             // the scout past the threshold at this step (-1: none)
+  int scouts_fired_ = 0;             // how many times one fired
 };
 
 }  // namespace robuter::loc
