@@ -282,7 +282,7 @@ void ParticleFilter::weigh_scouts() {
     }
     if (counts)
       sc.evidence = std::max(0.0, sc.evidence + params_.likelihood_power * (sc.log_lik - reference) - params_.scout_drift);
-    if (sc.evidence >= most) {
+    if (sc.evidence > 0.0 && sc.evidence >= most) {  // (a threshold of 0: no scout fires on none)
       most = sc.evidence;
       scout_fired_ = i;
     }
