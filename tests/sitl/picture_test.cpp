@@ -15,6 +15,7 @@
 
 #include "hal/sitl/sim_picture.hpp"
 #include "tests/support/layout_check.hpp"
+#include "tests/support/missing_path.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {
@@ -79,7 +80,8 @@ TEST(Pictures, RobuterSimRendersAnSvgAtAGivenPose) {
 }
 
 TEST(Pictures, RobuterSimRefusesBadArguments) {
-  EXPECT_NE(run(kBin + "/robuter-sim render --world /nonexistent.toml -o " + kOut + "/x.png"), 0);
+  const robuter::test::MissingPaths paths;  // a world file that is not there, whatever this machine holds
+  EXPECT_NE(run(kBin + "/robuter-sim render --world " + paths.missing("world.toml") + " -o " + kOut + "/x.png"), 0);
   EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " -o " + kOut + "/x.jpg"), 0);
   EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " --pose 1,2 -o " + kOut + "/x.png"), 0);
   EXPECT_NE(run(kBin + "/robuter-sim render --world " + kWorld + " --pose 0.1,0.1,0 -o " + kOut + "/x.png"), 0);
