@@ -8,11 +8,21 @@
 
 namespace robuter::sim {
 
+// How a surface reflects ultrasound (docs/SIMULATOR.md, "Surfaces"): the kind decides the
+// widest incidence at which it still echoes back to the transducer.
+enum class Surface : unsigned char {
+  standard,  // the model's max_incidence (40°): unmarked surfaces, every shipped world
+  smooth,    // specular (painted plaster, glass, metal): max_incidence_smooth (22.5°)
+  rough,     // irregularities larger than half the wavelength (brick, shelving): max_incidence_rough (90°)
+};
+inline constexpr int kSurfaceKinds = 3;  // number of Surface values
+
 // An obstacle edge in the world frame.
 struct Segment {
-  Vec2 a;            // first end, m
-  Vec2 b;            // second end, m
-  int obstacle = 0;  // index of the obstacle the edge belongs to
+  Vec2 a;                              // first end, m
+  Vec2 b;                              // second end, m
+  int obstacle = 0;                    // index of the obstacle the edge belongs to
+  Surface surface = Surface::standard; // how the edge reflects sound (its obstacle's)
 };
 
 // An axis-aligned rectangle (in whatever frame the caller uses).

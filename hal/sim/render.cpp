@@ -17,6 +17,8 @@ using picture::Swatch;
 constexpr Rgb kFloor{1.0, 1.0, 1.0};
 const Ink kGrid{{0.90, 0.90, 0.92}, Swatch::line, "grid, 1 m", 1.0, 1.0};
 const Ink kObstacle{{0.55, 0.55, 0.58}, Swatch::fill, "obstacle"};
+const Ink kObstacleSmooth{{0.55, 0.70, 0.85}, Swatch::fill, "obstacle, smooth surface (specular)"};
+const Ink kObstacleRough{{0.75, 0.55, 0.40}, Swatch::fill, "obstacle, rough surface (diffuse)"};
 const Ink kWall{{0.20, 0.20, 0.22}, Swatch::line, "obstacle edge, thin wall", 1.0, 2.5};
 const Ink kDoor{{0.10, 0.60, 0.20}, Swatch::dashed, "door (name, width)"};
 const Ink kRobot{{0.55, 0.70, 0.95}, Swatch::fill, "robot at its true pose", 0.85};
@@ -81,7 +83,7 @@ void draw_grid(Pen& p) {
   cairo_stroke(p.cr);
 }
 
-// Obstacles filled grey with a dark outline; thin (two-vertex) walls as thick lines.
+// Obstacles filled grey (blue-grey when smooth, brown when rough) with a dark outline; thin (two-vertex) walls as thick lines.
 void draw_obstacles(Pen& p, const World& w) {
   for (const auto& ob : w.obstacles()) {
     const auto& v = ob.vertices;
@@ -90,7 +92,9 @@ void draw_obstacles(Pen& p, const World& w) {
     for (std::size_t i = 1; i < v.size(); ++i) p.line(v[i]);
     if (v.size() >= 3) {
       cairo_close_path(p.cr);
-      p.use(kObstacle);
+      p.use(ob.surface == Surface::smooth  ? kObstacleSmooth
+            : ob.surface == Surface::rough ? kObstacleRough
+                                           : kObstacle);
       cairo_fill_preserve(p.cr);
     }
     p.use(kWall);

@@ -66,9 +66,13 @@ void read_sonar_params(Fields& f, SonarParams& p) {
     non_negative(f, "min_range", *v);
     p.min_range = *v;
   }
-  if (auto v = f.opt_number("max_incidence_deg")) {
-    if (*v < 0.0 || *v > 90.0) f.fail_at(*f.get("max_incidence_deg"), "max_incidence_deg: must be within 0..90");
-    p.max_incidence = deg_to_rad(*v);
+  for (const auto& [key, field] : {std::pair{"max_incidence_deg", &SonarParams::max_incidence},
+                                    std::pair{"max_incidence_smooth_deg", &SonarParams::max_incidence_smooth},
+                                    std::pair{"max_incidence_rough_deg", &SonarParams::max_incidence_rough}}) {
+    if (auto v = f.opt_number(key)) {
+      if (*v < 0.0 || *v > 90.0) f.fail_at(*f.get(key), std::string(key) + ": must be within 0..90");
+      p.*field = deg_to_rad(*v);
+    }
   }
   if (auto v = f.opt_number("noise_sigma")) {
     non_negative(f, "noise_sigma", *v);

@@ -33,7 +33,8 @@ struct SimConfig {
 //              contact_tolerance max_substep_travel trail_spacing
 //   [odometry] scale_left scale_right wheel_base_error noise slip_mean slip_sigma seed
 //   [sonar]    model ("ideal", "stress", "realistic": sets the effects below, read first)
-//              half_angle_deg timeout_ms sound_speed min_range max_incidence_deg noise_sigma
+//              half_angle_deg timeout_ms sound_speed min_range max_incidence_deg
+//              max_incidence_smooth_deg max_incidence_rough_deg noise_sigma
 //              noise_relative spurious_probability dropout_probability spurious_in_window
 //              multipath crosstalk scale offset no_echo node_delay_ms seed
 //   [[sonar.sensor]] number (1..24, required) x y direction_deg (a mounting error; the node

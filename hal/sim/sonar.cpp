@@ -78,7 +78,10 @@ void SonarModel::set_params(const SonarParams& params) {
   const double half = std::min(params_.half_angle, deg_to_rad(89.0));
   cos_half_ = std::cos(half);
   sin_half_ = std::sin(half);
-  cos_max_incidence_ = std::cos(std::clamp(params_.max_incidence, 0.0, kPi / 2));
+  const auto cos_of = [](double a) { return std::cos(std::clamp(a, 0.0, kPi / 2)); };
+  cos_max_incidence_[static_cast<std::size_t>(Surface::standard)] = cos_of(params_.max_incidence);
+  cos_max_incidence_[static_cast<std::size_t>(Surface::smooth)] = cos_of(params_.max_incidence_smooth);
+  cos_max_incidence_[static_cast<std::size_t>(Surface::rough)] = cos_of(params_.max_incidence_rough);
 }
 
 // Mount moved into the world frame, then the world-frame trace.
@@ -132,7 +135,7 @@ Echo SonarModel::trace_beyond(const Vec2& origin, double direction, const Beyond
       const Vec2 n(-ab.y(), ab.x());
       cosi = std::min(1.0, std::abs(n.dot(p)) / (std::sqrt(len2) * range));
     }
-    const bool echoes = cosi >= cos_max_incidence_;
+    const bool echoes = cosi >= cos_max_incidence_[static_cast<std::size_t>(sg.surface)];
     if (echoes) nearest = std::min(nearest, range);
     const Vec2 pw = origin + Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y());
     candidates_.push_back({range, pw, cosi, static_cast<int>(i), echoes, !echoes});

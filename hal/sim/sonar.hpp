@@ -4,6 +4,7 @@
 // optional seeded noise, drop-outs and spurious short echoes.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -23,7 +24,9 @@ struct SonarParams {
   double ranging_speed = 0.0;              // speed the receiver turns echo times into ranges with
                                            // (the firmware's calibration), m/s; 0 = sound_speed
   double min_range = 0.15;                 // echoes nearer than this are lost in blanking, m
-  double max_incidence = deg_to_rad(40.0); // echoes hitting a surface more obliquely are lost, rad
+  double max_incidence = deg_to_rad(40.0); // echoes hitting a standard surface more obliquely are lost, rad
+  double max_incidence_smooth = deg_to_rad(22.5); // the same for a smooth surface (Webots' sonar), rad
+  double max_incidence_rough = deg_to_rad(90.0);  // the same for a rough one (diffuse: any), rad
   double noise_sigma = 0.0;                // Gaussian range noise, m
   double noise_relative = 0.0;             // extra Gaussian noise proportional to range, fraction
   double spurious_probability = 0.0;       // chance a reading is a spurious short echo
@@ -73,7 +76,7 @@ class SonarModel {
 
   // The ideal echo for a transducer at `origin` looking along `direction` (world frame):
   // the nearest visible surface point inside the cone and the range whose incidence is within
-  // max_incidence. Surfaces nearer than min_range blind the sensor (no echo).
+  // its surface kind's max incidence. Surfaces nearer than min_range blind the sensor (no echo).
   Echo trace(const Vec2& origin, double direction);
   // The same for a sensor mounted on a robot at `robot`.
   Echo trace(const Pose& robot, const SonarMount& mount);
@@ -126,7 +129,7 @@ class SonarModel {
   SonarParams params_;                 // behaviour
   double cos_half_ = 1.0;              // cos(half_angle), cached
   double sin_half_ = 0.0;              // sin(half_angle), cached
-  double cos_max_incidence_ = 0.0;     // cos(max_incidence), cached
+  std::array<double, kSurfaceKinds> cos_max_incidence_{};  // cos of each surface kind's max incidence, cached
   std::vector<Candidate> candidates_;  // scratch, capacity = edge count
   GridScratch scratch_;                // grid query scratch
 };

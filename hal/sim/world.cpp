@@ -62,6 +62,7 @@ void World::finalize(double cell) {
     const Vec2 ab = b - a;
     const double len = ab.norm();
     if (len <= 0.0) return;
+    const Surface kind = obstacles_[static_cast<std::size_t>(idx)].surface;
     const Box eb{a.cwiseMin(b), a.cwiseMax(b)};
     cuts.assign({0.0, 1.0});
     near.clear();
@@ -88,7 +89,7 @@ void World::finalize(double cell) {
       }
     });
     if (near.empty()) {
-      segments_.push_back({a, b, idx});
+      segments_.push_back({a, b, idx, kind});
       return;
     }
     std::sort(cuts.begin(), cuts.end());
@@ -102,11 +103,11 @@ void World::finalize(double cell) {
       });
       if (!hidden && open < 0.0) open = t0;
       if (hidden && open >= 0.0) {
-        segments_.push_back({a + open * ab, a + t0 * ab, idx});
+        segments_.push_back({a + open * ab, a + t0 * ab, idx, kind});
         open = -1.0;
       }
     }
-    if (open >= 0.0) segments_.push_back({open == 0.0 ? a : Vec2(a + open * ab), b, idx});
+    if (open >= 0.0) segments_.push_back({open == 0.0 ? a : Vec2(a + open * ab), b, idx, kind});
   };
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     const auto& v = obstacles_[i].vertices;

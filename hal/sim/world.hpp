@@ -16,6 +16,7 @@ struct Obstacle {
   std::string name;           // name from the file, or "obstacle N"
   std::vector<Vec2> vertices; // polygon vertices in order, m (2 vertices = a thin wall line)
   int line = 0;               // line of the source file that defined it (0 if built in code)
+  Surface surface = Surface::standard;  // how its faces reflect sound
 };
 
 // An opening left in a wall, recorded so tests and the planner know where passages are.

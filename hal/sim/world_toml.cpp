@@ -97,7 +97,17 @@ class TomlWorldReader {
     return name;
   }
 
-  // [world]: name, units (m, cm, mm), wall_thickness.
+  // An object's optional `surface` key ("standard", "smooth" or "rough"); `fallback` when absent.
+  Surface read_surface(Fields& f, Surface fallback) {
+    const auto given = f.opt_string("surface");
+    if (!given) return fallback;
+    if (*given == "standard") return Surface::standard;
+    if (*given == "smooth") return Surface::smooth;
+    if (*given == "rough") return Surface::rough;
+    f.fail_at(*f.get("surface"), "surface: must be \"standard\", \"smooth\" or \"rough\", found \"" + *given + "\"");
+  }
+
+  // [world]: name, units (m, cm, mm), wall_thickness, surface (the objects' default).
   void read_world() {
     const auto* t = root_.get_as<toml::table>("world");
     world_.name = stem();
@@ -112,6 +122,7 @@ class TomlWorldReader {
       if (*th <= 0.0) g.fail_at(*g.get("wall_thickness"), "wall_thickness: must be positive");
       wall_thickness_ = *th;
     }
+    surface_ = read_surface(g, Surface::standard);
     g.finish();
   }
 
@@ -134,12 +145,12 @@ class TomlWorldReader {
 
   // A straight wall piece from s0 to s1 along the wall line, as a rectangle polygon.
   void add_piece(const std::string& name, int line, const Vec2& from, const Vec2& u, double s0,
-                 double s1, double thickness) {
+                 double s1, double thickness, Surface surface) {
     if (s1 - s0 <= 1e-12) return;
     const Vec2 n(-u.y(), u.x());
     const Vec2 a = from + s0 * u, b = from + s1 * u;
     const double h = 0.5 * thickness;
-    world_.add_obstacle({name, {a - h * n, b - h * n, b + h * n, a + h * n}, line});
+    world_.add_obstacle({name, {a - h * n, b - h * n, b + h * n, a + h * n}, line, surface});
   }
 
   // [[wall]]: a straight wall (from/to) with optional doors, or a chain of walls (points, with
@@ -150,6 +161,7 @@ class TomlWorldReader {
     const std::string name = take_name(f, "wall", index);
     const double th = f.opt_length("thickness").value_or(wall_thickness_);
     if (th <= 0.0) f.fail_at(*f.get("thickness"), "thickness: must be positive");
+    const Surface surface = read_surface(f, surface_);
     const auto* doors_node = f.get("doors");
     const auto* points_node = f.get("points");
     const auto closed = f.opt_bool("closed");
@@ -168,7 +180,7 @@ class TomlWorldReader {
         const Vec2 d = pts[i + 1] - pts[i];
         const double len = d.norm();
         if (len <= 0.0) f.fail_at(*points_node, "points: two consecutive points are equal");
-        add_piece(name, f.line(), pts[i], d / len, -0.5 * th, len + 0.5 * th, th);
+        add_piece(name, f.line(), pts[i], d / len, -0.5 * th, len + 0.5 * th, th, surface);
       }
       return;
     }
@@ -219,10 +231,10 @@ class TomlWorldReader {
     }
     double s = -0.5 * th;
     for (const auto& g : gaps) {
-      add_piece(name, f.line(), from, u, s, g.s0, th);
+      add_piece(name, f.line(), from, u, s, g.s0, th, surface);
       s = g.s1;
     }
-    add_piece(name, f.line(), from, u, s, len + 0.5 * th, th);
+    add_piece(name, f.line(), from, u, s, len + 0.5 * th, th, surface);
   }
 
   // [[box]]: centre, size [along its x, along its y], angle_deg.
@@ -232,11 +244,12 @@ class TomlWorldReader {
     const Vec2 c = f.point("center");
     const Vec2 size = f.point("size");
     const double a = deg_to_rad(f.opt_number("angle_deg").value_or(0.0));
+    const Surface surface = read_surface(f, surface_);
     f.finish();
     if (size.x() <= 0.0 || size.y() <= 0.0) f.fail_at(*f.get("size"), "size: must be positive");
     const Vec2 u(std::cos(a), std::sin(a)), v(-std::sin(a), std::cos(a));
     const Vec2 hx = 0.5 * size.x() * u, hy = 0.5 * size.y() * v;
-    world_.add_obstacle({name, {c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy}, f.line()});
+    world_.add_obstacle({name, {c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy}, f.line(), surface});
   }
 
   // [[rectangle]]: axis-aligned, min and max corners.
@@ -244,11 +257,12 @@ class TomlWorldReader {
     Fields f(t, file_, "[[rectangle]]", scale_);
     const std::string name = take_name(f, "rectangle", index);
     const Vec2 lo = f.point("min"), hi = f.point("max");
+    const Surface surface = read_surface(f, surface_);
     f.finish();
     if (hi.x() <= lo.x() || hi.y() <= lo.y()) {
       f.fail(f.line(), "max must be above and to the right of min");
     }
-    world_.add_obstacle({name, {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}, f.line()});
+    world_.add_obstacle({name, {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}, f.line(), surface});
   }
 
   // [[polygon]]: points, closed explicitly by repeating the first point at the end.
@@ -257,6 +271,7 @@ class TomlWorldReader {
     const std::string name = take_name(f, "polygon", index);
     auto pts = f.points("points");
     const auto* node = f.get("points");
+    const Surface surface = read_surface(f, surface_);
     f.finish();
     if (pts.size() < 4) {
       f.fail_at(*node, "bad count: a polygon needs at least 3 corners plus the closing point (" +
@@ -267,7 +282,7 @@ class TomlWorldReader {
     }
     pts.pop_back();
     if (std::abs(polygon_area(pts)) <= 1e-12) f.fail_at(*node, "polygon has no area");
-    world_.add_obstacle({name, std::move(pts), f.line()});
+    world_.add_obstacle({name, std::move(pts), f.line(), surface});
   }
 
   // [[marker]]: a named pose (x, y, heading_deg).
@@ -292,6 +307,7 @@ class TomlWorldReader {
   World world_;                           // being built
   double scale_ = 1.0;                    // file length unit, m
   double wall_thickness_ = 0.10;          // default wall thickness, m
+  Surface surface_ = Surface::standard;   // default surface of the objects ([world] surface)
   std::map<std::string, int> names_;      // object names seen, with their lines
 };
 
