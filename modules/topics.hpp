@@ -359,6 +359,7 @@ struct Localisation {
   std::uint32_t odometry_seq = 0; // Posture.odometry_seq the odometry pose belongs to
   std::uint32_t request_seq = 0;  // LocaliseRequest.seq taken (the link's read-your-writes after XA)
   std::uint32_t run_us_max = 0;   // longest activation since start, µs (thread CPU time)
+  std::uint32_t scouts_fired = 0; // times a scout's evidence drew particles to it since start (docs/LOCALISATION.md, "Scouts")
   std::uint64_t tick = 0;         // tick of the report
 };
 

@@ -182,6 +182,7 @@ void LocaliseModule::publish(std::uint64_t tick, bool stepped) {
   report_.sigma_theta = motion::radians_to_centideg(sigma_theta);
   report_.cluster_pct = static_cast<std::uint8_t>(std::lround(std::clamp(e.cluster_weight, 0.0, 1.0) * 100.0));
   report_.particles = static_cast<std::uint16_t>(std::clamp(e.particles, 0, 65535));
+  report_.scouts_fired = static_cast<std::uint32_t>(filter_->scouts_fired());
   report_.tick = tick;
   // The estimate corrects the map frame only as one compact cluster (docs/LOCALISATION.md, "States").
   if (e.compact) {

@@ -48,17 +48,17 @@ int main(int argc, char** argv) {
   const double deg = 180.0 / M_PI;
   if (spec.kidnap) {
     std::printf("kidnap seed %llu, %s sonars: carried 3 m %s at %.0f s from (%.1f, %.1f): found after %.1f s (limit %.0f s); "
-                "protective stops %u, trips %u, worst activation %u us\n",
+                "protective stops %u, trips %u, worst activation %u us, scouts fired %u\n",
                 static_cast<unsigned long long>(spec.seed), std::string(robuter::sim::sonar_preset_name(spec.sonar_model)).c_str(),
                 spec.kidnap_back ? "back" : "on", r.kidnapped_at, r.kidnap_x, r.kidnap_y,
-                r.found_after, spec.seconds, r.protective_stops, r.trips, r.run_us_max);
+                r.found_after, spec.seconds, r.protective_stops, r.trips, r.run_us_max, r.scouts_fired);
     return 0;
   }
   std::printf("tour seed %llu, %s sonars: %.0f s, %.0f m driven; map pose p95 %.0f mm %.2f deg, worst %.0f mm %.2f deg; "
-              "odometry p95 %.0f mm %.2f deg; protective stops %u, trips %u, localise worst activation %u us\n",
+              "odometry p95 %.0f mm %.2f deg; protective stops %u, trips %u, localise worst activation %u us, scouts fired %u\n",
               static_cast<unsigned long long>(spec.seed), std::string(robuter::sim::sonar_preset_name(spec.sonar_model)).c_str(),
               spec.seconds, r.driven, 1000.0 * r.map_p95, r.map_heading_p95 * deg,
               1000.0 * r.map_worst, r.map_heading_worst * deg, 1000.0 * r.odometry_p95, r.odometry_heading_p95 * deg,
-              r.protective_stops, r.trips, r.run_us_max);
+              r.protective_stops, r.trips, r.run_us_max, r.scouts_fired);
   return 0;
 }

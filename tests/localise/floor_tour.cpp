@@ -175,6 +175,7 @@ FloorTourResult run_floor_tour(const FloorTourSpec& spec) {
   out.protective_stops = e.protective_stops;
   out.trips = e.trips;
   out.run_us_max = l.run_us_max;
+  out.scouts_fired = l.scouts_fired;
   return out;
 }
 

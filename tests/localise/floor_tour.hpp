@@ -35,6 +35,7 @@ struct FloorTourResult {
   std::uint32_t protective_stops = 0; // the envelope's
   std::uint32_t trips = 0;            // emergencies
   std::uint32_t run_us_max = 0;       // the localisation's longest activation, µs CPU
+  std::uint32_t scouts_fired = 0;     // times a scout drew particles (a tracked tour: none)
   double kidnapped_at = -1.0;         // kidnap: s into the tour it happened (-1: no clear spot)
   double kidnap_x = 0.0;              // and where the robot was carried from, m
   double kidnap_y = 0.0;

@@ -183,8 +183,11 @@ TEST(LocaliseModule, ARobotCarriedAlongTheCorridorIsFoundAgain) {
     ASSERT_TRUE(r.ok);
     ASSERT_GE(r.kidnapped_at, 0.0) << "seed " << seed << ": no clear spot 3 m along";
     if (r.found_after >= 0.0) ++found;
-    std::printf("seed %llu: carried at %.0f s from (%.1f, %.1f): found after %.1f s\n", static_cast<unsigned long long>(seed),
-                r.kidnapped_at, r.kidnap_x, r.kidnap_y, r.found_after);
+    // The scouts found it, and the firmware's report says so (Localisation::scouts_fired).
+    EXPECT_GT(r.scouts_fired, 0u) << "seed " << seed;
+    std::printf("seed %llu: carried at %.0f s from (%.1f, %.1f): found after %.1f s, scouts fired %u\n",
+                static_cast<unsigned long long>(seed), r.kidnapped_at, r.kidnap_x, r.kidnap_y, r.found_after,
+                r.scouts_fired);
   }
   EXPECT_EQ(found, 3);
 }

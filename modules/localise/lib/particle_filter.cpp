@@ -53,9 +53,7 @@ void ParticleFilter::set_pose(const Pose& mean, const Eigen::Vector3d& sigma) {
   anchor_ = Pose(mean.x(), mean.y(), wrap_angle(mean.z()));
   since_anchor_ = 0.0;
   update_estimate();
-  scout_count_ = 0;  // scouts start afresh about the given pose
-  scout_fired_ = -1;
-  place_scouts();
+  place_scouts(true);  // scouts start afresh about the given pose
 }
 
 double ParticleFilter::recovery_radius() const {
@@ -70,13 +68,13 @@ bool ParticleFilter::random_nearby_pose(Pose& out) {
     if (u(rng_) < params_.recover_along_share) {  // along the heading's line, a little across it
       const double along = r * (2.0 * u(rng_) - 1.0);
       const double across = params_.recover_cross_sigma * std::normal_distribution<double>(0.0, 1.0)(rng_);
-      const Eigen::Vector2d dir(std::cos(estimate_.pose.z()), std::sin(estimate_.pose.z()));
+      const Eigen::Vector2d dir = heading_line();
       p = Eigen::Vector2d(anchor_.x(), anchor_.y()) + along * dir + across * Eigen::Vector2d(-dir.y(), dir.x());
     } else {
       const double d = r * std::sqrt(u(rng_)), a = 2.0 * std::numbers::pi * u(rng_);
       p = Eigen::Vector2d(anchor_.x() + d * std::cos(a), anchor_.y() + d * std::sin(a));
     }
-    if (!field_.contains(p) || field_.at(p) < params_.body_clearance) continue;
+    if (!fits(p)) continue;
     // Most about the estimate's heading (a kidnapping carries the robot more than it turns it:
     // the cloud's heading is the best guess even when its place is lost); the rest any heading.
     const double heading = u(rng_) < params_.recover_heading_share
@@ -111,9 +109,7 @@ void ParticleFilter::set_global() {
   w_slow_ = w_fast_ = 0.0;
   since_anchor_ = std::numeric_limits<double>::infinity();  // anywhere: recovery draws globally
   update_estimate();
-  scout_count_ = 0;
-  scout_fired_ = -1;
-  place_scouts();
+  place_scouts(true);
 }
 
 bool ParticleFilter::step(const Pose& odometry, std::span<const SonarReading> readings) {
@@ -147,7 +143,7 @@ bool ParticleFilter::begin_step(const Pose& odometry, std::span<const SonarReadi
   for (int i = 0; i < scout_count_; ++i) {
     auto& sc = scouts_[static_cast<std::size_t>(i)];
     sc.pose = move_pose(sc.pose, s);
-    sc.free = i == 0 || fits(sc.pose);
+    sc.free = i == 0 || fits(sc.pose.head<2>());
   }
   kept_count_ = informative_count_ = 0;
   for (const auto& r : readings) {
@@ -245,7 +241,7 @@ bool ParticleFilter::weigh_some(int n, int traces) {
   update_estimate();  // from the weighed particles, before resampling draws from them
   resample();
   estimate_.particles = count_;
-  place_scouts();
+  place_scouts(false);
   stepping_ = false;
   return true;
 }
@@ -299,15 +295,17 @@ void ParticleFilter::weigh_scouts() {
   }
 }
 
-void ParticleFilter::place_scouts() {
+void ParticleFilter::place_scouts(bool afresh) {
   const int wanted = std::clamp(params_.scouts, 0, kMaxScouts);
+  // Afresh too after one fired (its evidence is spent) and after a search (none were out).
+  const bool fresh = afresh || scout_fired_ >= 0 || scout_count_ != wanted + 1;
+  if (afresh) scout_fired_ = -1;
   if (wanted == 0 || count_ == 0 || !std::isfinite(since_anchor_)) {  // none, or a global search
     scout_count_ = 0;
     return;
   }
   const Pose& e = estimate_.pose;
-  const Eigen::Vector2d dir(std::cos(e.z()), std::sin(e.z()));
-  const bool fresh = scout_count_ != wanted + 1 || scout_fired_ >= 0;
+  const Eigen::Vector2d dir = heading_line();
   scout_count_ = wanted + 1;
   scouts_[0] = Scout{e, 0.0, 0.0, true};
   for (int i = 1; i < scout_count_; ++i) {
@@ -316,12 +314,15 @@ void ParticleFilter::place_scouts() {
     const int k = (i + 1) / 2;                   // 1, 1, 2, 2, ...: ahead and behind in turn
     const double along = (i % 2 == 1 ? 1.0 : -1.0) * params_.scout_spacing * k;
     const Pose p(e.x() + along * dir.x(), e.y() + along * dir.y(), e.z());
-    sc = Scout{p, 0.0, 0.0, fits(p)};
+    sc = Scout{p, 0.0, 0.0, fits(p.head<2>())};
   }
 }
 
-bool ParticleFilter::fits(const Pose& pose) const {
-  const Eigen::Vector2d at(pose.x(), pose.y());
+Eigen::Vector2d ParticleFilter::heading_line() const {
+  return {std::cos(estimate_.pose.z()), std::sin(estimate_.pose.z())};
+}
+
+bool ParticleFilter::fits(const Eigen::Vector2d& at) const {
   return field_.contains(at) && field_.at(at) >= params_.body_clearance;
 }
 

@@ -186,12 +186,16 @@ class ParticleFilter {
   void finish_weighing();
   // The scouts' evidence from this step's weighing; scout_fired_ the one past the threshold.
   void weigh_scouts();
-  // The estimate and the scouts with no evidence placed on its heading line; all of them after
-  // one fired, none while the filter searches the whole map.
-  void place_scouts();
+  // The estimate and the scouts with no evidence placed on its heading line; all of them
+  // `afresh` (a pose or a search given) or after one fired; none while the filter searches the
+  // whole map.
+  void place_scouts(bool afresh);
   Pose about_scout();
-  // On the map, body_clearance from every wall.
-  bool fits(const Pose& pose) const;
+  // The unit vector along the estimate's heading: the line scouts and recovery draws lie on.
+  Eigen::Vector2d heading_line() const;
+  // On the map, body_clearance from every wall: a place the robot fits (the one rule for scouts
+  // and recovery draws).
+  bool fits(const Eigen::Vector2d& at) const;
   void update_estimate();
   void resample();
   Pose random_free_pose();
