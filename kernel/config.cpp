@@ -344,6 +344,7 @@ void bind_demo(Binder& b, DemoConfig& d) {
   b.integer("demo.sensor_b", d.sensor_b, 1, robot::kRingSensors);
   b.integer("demo.front_sensor", d.front_sensor, 1, robot::kRingSensors);
   b.integer("demo.align_tolerance_mm", d.align_tolerance_mm, 1, 1000);
+  b.integer("demo.calibration_readings", d.calibration_readings, 1, 9);  // demo::kMaxCalibrationReadings (asserted there)
   b.integer("demo.laps", d.laps, 0, 1'000'000);
   b.integer("demo.calibration_timeout_ticks", d.calibration_timeout_ticks, 0, 10'000'000);
 }

@@ -240,6 +240,7 @@ struct DemoConfig {
   std::uint32_t sensor_b = 19;               // the other one (seed text: 19)
   std::uint32_t front_sensor = 1;            // the sensor that measures DISTX
   std::uint32_t align_tolerance_mm = 5;      // side readings this close count as alike
+  std::uint32_t calibration_readings = 3;    // each calibration figure is the median of this many fresh readings (1: the seed's one)
   std::uint32_t laps = 6;                    // laps, then stop (the seed ended its program after n > 5: DOORS.md DM-2); 0 = for ever
   std::uint32_t calibration_timeout_ticks = 6000;  // align + advance longer than this: failed no-landmark, ticks (0: no limit)
 };

@@ -67,6 +67,28 @@ double Course::reading(const CourseInputs& in, int s) const {
   return in.ranges->mm[i];
 }
 
+void Course::take(const CourseInputs& in, int s, Recent& r, double offset) const {
+  const double v = reading(in, s);
+  const std::uint64_t t = in.ranges->read_tick[static_cast<std::size_t>(s - 1)];
+  if (v < 0.0 || t == r.tick) return;
+  r.tick = t;
+  const int n = std::clamp(s_.calibration_readings, 1, kMaxCalibrationReadings);
+  r.mm[static_cast<std::size_t>(r.next)] = v + offset;
+  r.next = (r.next + 1) % n;
+  r.count = std::min(r.count + 1, n);
+}
+
+// Why a median: one noise pulse (a short reading where the box is not) or one cross-talk echo
+// would otherwise be the calibration (docs/DOORS.md §4); the median of three ignores one.
+double Course::median(const Recent& r) const {
+  const int n = std::clamp(s_.calibration_readings, 1, kMaxCalibrationReadings);
+  if (r.count < n) return -1.0;
+  std::array<double, kMaxCalibrationReadings> v = r.mm;
+  const auto mid = v.begin() + n / 2;
+  std::nth_element(v.begin(), mid, v.begin() + n);
+  return *mid;
+}
+
 CourseOutput Course::step(const CourseInputs& in) {
   if (phase_ == Phase::done || phase_ == Phase::failed) return out(0, 0);
   if (phase_ == Phase::wait) {
@@ -101,10 +123,13 @@ CourseOutput Course::step(const CourseInputs& in) {
       phase_ = Phase::align;
       align_dir_ = 0;
       calibration_tick_ = in.tick;
+      side_a_ = side_b_ = Recent{};
       return out(0, 0);
     case Phase::align: {
       // Phase 1: turn on one wheel until the two side sensors read alike (seed cases 1 and 2).
-      const double a = reading(in, s_.sensor_a), b = reading(in, s_.sensor_b);
+      take(in, s_.sensor_a, side_a_);
+      take(in, s_.sensor_b, side_b_);
+      const double a = median(side_a_), b = median(side_b_);
       if (a < 0.0 || b < 0.0) return out(0, 0);
       const int want = a > b + s_.align_tolerance_mm ? 1 : (a < b - s_.align_tolerance_mm ? -1 : 0);
       if (want != 0 && (align_dir_ == 0 || want == align_dir_)) {
@@ -114,22 +139,20 @@ CourseOutput Course::step(const CourseInputs& in) {
       side_mm_ = a;  // ERRO
       radius_mm_ = (2.0 * R + s_.disty_mm - side_mm_) / 2.0;
       phase_ = Phase::advance;
-      front_mm_ = -1.0;
-      front_tick_ = 0;
+      front_ = Recent{};
+      advance_x_ = at.x;
+      advance_y_ = at.y;
       turn_start_th_ = at.th;  // the heading to keep
       return out(0, 0);
     }
     case Phase::advance: {
-      // Phase 2: on to DISTX from the front box; between readings the range is carried by odometry.
-      const auto fi = static_cast<std::size_t>(s_.front_sensor - 1);
-      if (in.ranges->read_tick[fi] != front_tick_ && reading(in, s_.front_sensor) > 0.0) {
-        front_tick_ = in.ranges->read_tick[fi];
-        front_mm_ = reading(in, s_.front_sensor);
-        front_at_x_ = at.x;
-        front_at_y_ = at.y;
-      }
-      if (front_mm_ < 0.0) return out(0, 0);
-      const double left = front_mm_ - std::hypot(at.x - front_at_x_, at.y - front_at_y_) - s_.distx_mm;
+      // Phase 2: on to DISTX from the front box; each reading plus the path driven when it was
+      // taken says where the box is, and between readings the median is carried by odometry.
+      const double driven = std::hypot(at.x - advance_x_, at.y - advance_y_);
+      take(in, s_.front_sensor, front_, driven);
+      const double box = median(front_);
+      if (box < 0.0) return out(0, 0);
+      const double left = box - driven - s_.distx_mm;
       if (left > 0.0) {
         const auto v = static_cast<std::int32_t>(std::clamp(left / 20.0, 1.0, static_cast<double>(s_.slow_cm_s)));
         const double x0 = at.x, y0 = at.y;  // hold the aligned heading

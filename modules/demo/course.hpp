@@ -3,11 +3,14 @@
 // odometry, re-calibrated once a lap against known boxes in three phases.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "modules/topics.hpp"
 
 namespace robuter::demo {
+
+inline constexpr int kMaxCalibrationReadings = 9;  // the most readings a calibration median takes
 
 // The course and the calibration, mm and cm/s (seed dem.h: DISTX 1.2 m, DISTY 1 m, RAIO 1 m).
 struct CourseSettings {
@@ -23,6 +26,7 @@ struct CourseSettings {
   int sensor_b = 19;
   int front_sensor = 1;             // the sensor that measures DISTX
   double align_tolerance_mm = 5.0;  // readings this close count as alike
+  int calibration_readings = 3;     // medians of this many fresh readings (1..kMaxCalibrationReadings; 1: the seed's one)
   std::uint32_t laps = 6;           // laps, then stop (seed: n > 5 ends the program); 0 = for ever
   std::uint32_t wheel_base_mm = 600;  // DBW
   std::uint64_t stale_ticks = 100;  // a ring reading older than this is not used, ticks
@@ -76,6 +80,19 @@ class Course {
   double reading(const CourseInputs& in, int s) const;
   CourseOutput out(std::int32_t l, std::int32_t r) const;
 
+  // The last few fresh readings of one sensor, each less an offset (the front box's: the path
+  // driven when it was taken, so all of them say where the box is), mm.
+  struct Recent {
+    std::array<double, kMaxCalibrationReadings> mm{};  // ring of values
+    int count = 0;                                       // values held (≤ the setting)
+    int next = 0;                                        // slot the next one goes to
+    std::uint64_t tick = 0;                              // read tick of the last one taken
+  };
+  // Takes sensor s's reading into r when it is fresh and new, plus `offset`.
+  void take(const CourseInputs& in, int s, Recent& r, double offset = 0.0) const;
+  // The median of r's values once it holds calibration_readings of them, else < 0.
+  double median(const Recent& r) const;
+
   CourseSettings s_;
   Phase phase_ = Phase::done;
   std::uint32_t lap_ = 0;
@@ -83,9 +100,9 @@ class Course {
   double turn_start_th_ = 0.0;          // heading when the current arc began, rad (course frame)
   double arc_cx_ = 0.0, arc_cy_ = 0.0, arc_r_ = 0.0;  // current arc, mm
   double side_mm_ = 0.0, radius_mm_ = 0.0;
-  double front_mm_ = -1.0;              // last front reading, mm
-  double front_at_x_ = 0.0, front_at_y_ = 0.0;  // where it was taken (course frame), mm
-  std::uint64_t front_tick_ = 0;        // its read tick
+  Recent side_a_, side_b_;              // the side sensors' last readings while aligning, mm
+  Recent front_;                        // the front box's distance from where the advance began, mm
+  double advance_x_ = 0.0, advance_y_ = 0.0;  // where the advance began (course frame), mm
   std::uint64_t calibration_tick_ = 0;  // tick the calibration (align) began
   int align_dir_ = 0;                   // +1 turning right, −1 left, 0 not decided
 };

@@ -22,6 +22,8 @@ demo::CourseSettings course_settings(const Config& c) {
   s.sensor_b = static_cast<int>(c.demo.sensor_b);
   s.front_sensor = static_cast<int>(c.demo.front_sensor);
   s.align_tolerance_mm = c.demo.align_tolerance_mm;
+  static_assert(demo::kMaxCalibrationReadings == 9, "kernel/config.cpp bounds demo.calibration_readings by 9");
+  s.calibration_readings = static_cast<int>(c.demo.calibration_readings);
   s.laps = c.demo.laps;
   s.wheel_base_mm = c.robot.wheel_base_mm;
   s.calibration_timeout_ticks = c.demo.calibration_timeout_ticks;

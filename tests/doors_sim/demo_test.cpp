@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,8 +27,9 @@ struct LapError {
 
 // Runs `laps` laps; the error of each lap's end. Contact or an emergency ends the run early.
 // `xd`: the XD reply once the laps are done and the robot has had 1 s to stop.
+// `where`, if given: the XE reply and the true pose at the end (why a run stopped short).
 std::vector<LapError> run_laps(std::uint32_t laps, bool odometry_noise, std::uint64_t seed, bool* contact, std::string* xd,
-                               sim::SonarPreset sonar = sim::SonarPreset::ideal) {
+                               sim::SonarPreset sonar = sim::SonarPreset::ideal, std::string* where = nullptr) {
   Config cfg;
   cfg.demo.enabled = true;
   cfg.demo.laps = laps;
@@ -58,6 +60,12 @@ std::vector<LapError> run_laps(std::uint32_t laps, bool odometry_noise, std::uin
   }
   fw.run_ticks(100);
   *xd = fw.ask("XD").value_or("");
+  if (where != nullptr) {
+    const auto& p = fw.sim().robot().pose();
+    char pose[96];
+    std::snprintf(pose, sizeof pose, " at (%.2f m, %.2f m, %.0f deg)", p.x, p.y, p.theta * 180.0 / M_PI);
+    *where = fw.ask("XE").value_or("") + pose;
+  }
   EXPECT_EQ(fw.sim().robot().wheel_speeds().left, 0.0);
   EXPECT_EQ(fw.sim().robot().wheel_speeds().right, 0.0);
   return out;
@@ -95,10 +103,37 @@ TEST(Demo, FiveLapsWithOdometryNoiseEndOnTheRecalibrationPoint) {
 }
 
 // Issue #19: the same five laps with the realistic sonar model (multipath, cross-talk, lost and
-// spurious echoes) as well: the calibration on the boxes still holds every lap's end. Seed 7;
-// seed 11 stops for good in its first circle (docs/DOORS.md §5: evidence two far echoes' arcs
-// confirmed, carried into the body's near field — open).
+// spurious echoes) as well: the calibration on the boxes (medians of three readings) still holds
+// every lap's end. Seed 7; seeds 11, 14, 16 and 17 of 1–20 are held for good by protective stops
+// (docs/SIMULATOR.md, "With the calibration's medians"; docs/SAFETY.md §13, "Still open").
+//
+// ROBUTER_DEMO_SEEDS=N runs seeds 1..N instead and prints, for each, the laps driven and the
+// worst end-of-lap error, then how many ran every lap and how many within 120 mm every lap (the
+// survey docs/SIMULATOR.md's table gives; no assertion but contact).
 TEST(Demo, FiveLapsWithTheRealisticSonarEndOnTheRecalibrationPoint) {
+  if (const char* seeds = std::getenv("ROBUTER_DEMO_SEEDS")) {
+    const int n = std::atoi(seeds);
+    int all_laps = 0, within = 0;
+    for (int seed = 1; seed <= n; ++seed) {
+      bool contact = false;
+      std::string xd, where;
+      const std::vector<LapError> e = run_laps(5, true, static_cast<std::uint64_t>(seed), &contact, &xd,
+                                               sim::SonarPreset::realistic, &where);
+      double worst = 0.0, worst_deg = 0.0, sum = 0.0;
+      for (const LapError& l : e) {
+        worst = std::max(worst, l.position_mm);
+        worst_deg = std::max(worst_deg, std::abs(l.heading_deg));
+        sum += l.position_mm;
+      }
+      EXPECT_FALSE(contact) << "seed " << seed;
+      all_laps += e.size() == 5 ? 1 : 0;
+      within += e.size() == 5 && worst < 120.0 ? 1 : 0;
+      std::printf("survey seed %d: %zu of 5 laps, mean %.0f mm, worst %.0f mm, %.1f deg; XD %s; XE %s\n", seed, e.size(),
+                  e.empty() ? 0.0 : sum / static_cast<double>(e.size()), worst, worst_deg, xd.c_str(), where.c_str());
+    }
+    std::printf("survey: %d of %d seeds ran 5 laps, %d within 120 mm every lap\n", all_laps, n, within);
+    return;
+  }
   check_laps(5, true, 7, 120.0, 5.0, sim::SonarPreset::realistic);
 }
 
