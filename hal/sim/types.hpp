@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/angles.hpp"
+
 namespace robuter::sim {
 
 using Vec2 = Eigen::Vector2d;  // a point or direction in the plane, m
@@ -35,12 +37,8 @@ constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
 // The firmware's wheel speeds are integer cm/s; the model works in m/s.
 constexpr double cm_per_s_to_m_per_s(double cm_s) { return cm_s * 0.01; }
 
-// Folds an angle into (-pi, pi] so headings compare and print sensibly.
-inline double wrap_angle(double a) {
-  a = std::remainder(a, 2.0 * kPi);
-  if (a <= -kPi) a += 2.0 * kPi;
-  return a;
-}
+// Folds an angle into (-pi, pi] so headings compare and print sensibly (robot/angles.hpp: one rule).
+using robot::wrap_angle;
 
 // The pose's heading as a unit vector.
 inline Vec2 heading_vector(const Pose& p) { return {std::cos(p.theta), std::sin(p.theta)}; }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/angles.hpp"
+
 namespace robuter::demo {
 
 namespace {
@@ -14,18 +16,14 @@ constexpr double kHeadingGain = 1.0;     // turn rate per heading error, 1/s
 constexpr double kLateralGain = 0.004;   // turn rate per mm off the path, rad/s per mm
 constexpr double kMaxLateralTerm = 0.3;  // cap of the lateral correction, rad/s
 constexpr double kEndTolerance = 0.003;  // a half-circle ends this close to 180°, rad
-// An angle brought into (−π, π].
-double wrap(double a) {
-  a = std::remainder(a, 2.0 * kPi);
-  return a <= -kPi ? a + 2.0 * kPi : a;
-}
+using robot::wrap_angle;  // (−π, π]: robot/angles.hpp
 }  // namespace
 
 Course::Local Course::local(const SectorPose& p) const {
   const double th0 = origin_.theta * 0.01 * kPi / 180.0;
   const double dx = (p.x - origin_.x) * 0.1, dy = (p.y - origin_.y) * 0.1;
   return {dx * std::cos(th0) + dy * std::sin(th0), -dx * std::sin(th0) + dy * std::cos(th0),
-          wrap(p.theta * 0.01 * kPi / 180.0 - th0)};
+          wrap_angle(p.theta * 0.01 * kPi / 180.0 - th0)};
 }
 
 CourseOutput Course::out(std::int32_t l, std::int32_t r) const {
@@ -43,7 +41,7 @@ CourseOutput Course::out(std::int32_t l, std::int32_t r) const {
 // 11 cm/s turn on 1.03 m); following the path on odometry removes that error.
 CourseOutput Course::follow_line(double x0, double y0, double h, const Local& at, std::int32_t speed) const {
   const double left_of = -(at.x - x0) * std::sin(h) + (at.y - y0) * std::cos(h);  // mm
-  const double w = kHeadingGain * wrap(h - at.th) - std::clamp(kLateralGain * left_of, -kMaxLateralTerm, kMaxLateralTerm);
+  const double w = kHeadingGain * wrap_angle(h - at.th) - std::clamp(kLateralGain * left_of, -kMaxLateralTerm, kMaxLateralTerm);
   const double half = s_.wheel_base_mm / 20.0;  // half the wheel base, cm
   return out(static_cast<std::int32_t>(std::lround(speed - w * half)), static_cast<std::int32_t>(std::lround(speed + w * half)));
 }
@@ -53,7 +51,7 @@ CourseOutput Course::follow_arc(double cx, double cy, double r, const Local& at,
   const double tangent = phi - kPi / 2.0;                              // clockwise travel
   const double outside = std::hypot(at.x - cx, at.y - cy) - r;         // mm: left of a clockwise path
   const double v = speed * 10.0;                                       // mm/s
-  const double w = -v / r + kHeadingGain * wrap(tangent - at.th) -
+  const double w = -v / r + kHeadingGain * wrap_angle(tangent - at.th) -
                    std::clamp(kLateralGain * outside, -kMaxLateralTerm, kMaxLateralTerm);
   const double half = s_.wheel_base_mm / 20.0;
   return out(static_cast<std::int32_t>(std::lround(speed - w * half)), static_cast<std::int32_t>(std::lround(speed + w * half)));

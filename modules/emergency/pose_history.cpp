@@ -5,15 +5,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/angles.hpp"
+
 namespace robuter::safety {
 
 namespace {
-// An angle in (−π, π].
-double wrap(double a) {
-  while (a > std::numbers::pi) a -= 2.0 * std::numbers::pi;
-  while (a <= -std::numbers::pi) a += 2.0 * std::numbers::pi;
-  return a;
-}
+using robot::wrap_angle;  // (−π, π]: robot/angles.hpp (this file's loop ran for ever on a huge angle)
 }  // namespace
 
 // Exact arc for a constant twist (a straight line when the turn rate is negligible).
@@ -27,7 +24,7 @@ Pose2 advance(const Pose2& pose, double v, double w, double t) {
     out.p = pose.p + r * Eigen::Vector2d(std::sin(pose.theta + dth) - std::sin(pose.theta),
                                          -std::cos(pose.theta + dth) + std::cos(pose.theta));
   }
-  out.theta = wrap(pose.theta + dth);
+  out.theta = wrap_angle(pose.theta + dth);
   return out;
 }
 
@@ -38,7 +35,7 @@ bool PoseHistory::add(std::uint64_t tick, const Pose2& pose, double max_step, do
       clear();
     } else {
       const double dt = static_cast<double>(tick - last.tick) + 1.0;
-      if ((pose.p - last.pose.p).norm() > max_step * dt || std::abs(wrap(pose.theta - last.pose.theta)) > max_turn * dt) {
+      if ((pose.p - last.pose.p).norm() > max_step * dt || std::abs(wrap_angle(pose.theta - last.pose.theta)) > max_turn * dt) {
         clear();
         samples_[head_] = {tick, pose};
         head_ = (head_ + 1) % kSamples;
@@ -65,10 +62,10 @@ Twist2 PoseHistory::velocity() const {
   const Sample& b = nth(count_ - 1);
   const double dt = static_cast<double>(b.tick - a.tick);
   const Eigen::Vector2d d = b.pose.p - a.pose.p;
-  const double mid = a.pose.theta + 0.5 * wrap(b.pose.theta - a.pose.theta);
+  const double mid = a.pose.theta + 0.5 * wrap_angle(b.pose.theta - a.pose.theta);
   // Signed along the mean heading: a robot backing up has a negative speed.
   const double along = d.x() * std::cos(mid) + d.y() * std::sin(mid);
-  return {along / dt, wrap(b.pose.theta - a.pose.theta) / dt};
+  return {along / dt, wrap_angle(b.pose.theta - a.pose.theta) / dt};
 }
 
 Pose2 PoseHistory::at(std::uint64_t tick) const {
@@ -86,7 +83,7 @@ Pose2 PoseHistory::at(std::uint64_t tick) const {
     const double f = static_cast<double>(tick - a.tick) / static_cast<double>(b.tick - a.tick);
     Pose2 out;
     out.p = a.pose.p + f * (b.pose.p - a.pose.p);
-    out.theta = wrap(a.pose.theta + f * wrap(b.pose.theta - a.pose.theta));
+    out.theta = wrap_angle(a.pose.theta + f * wrap_angle(b.pose.theta - a.pose.theta));
     return out;
   }
   return nth(0).pose;

@@ -6,14 +6,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/angles.hpp"
+
 namespace robuter::motion {
 
 namespace {
-// An angle in radians brought into (−π, π].
-double wrap_rad(double a) {
-  a = std::remainder(a, 2.0 * std::numbers::pi);
-  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
-}
+using robot::wrap_angle;  // (−π, π]: robot/angles.hpp
 // A speed in cm/s rounded, at least `lo` in magnitude when not zero, at most `hi`.
 std::int32_t shape(double v, std::int32_t lo, std::int32_t hi) {
   const double m = std::clamp(std::abs(v), static_cast<double>(lo), static_cast<double>(hi));
@@ -40,7 +38,7 @@ WheelSpeeds GoToController::step(const PostureUnits& now) {
   const double dx = static_cast<double>(target_.x) - now.x, dy = static_cast<double>(target_.y) - now.y;
   const double dist = std::hypot(dx, dy);  // 0.1 mm
   const double heading = centideg_to_radians(now.theta);
-  const double bearing_err = wrap_rad(std::atan2(dy, dx) - heading);
+  const double bearing_err = wrap_angle(std::atan2(dy, dx) - heading);
   const double angle_tol = centideg_to_radians(s_.angle_tolerance);
   const double reorient = centideg_to_radians(s_.reorient_angle);
   if (phase_ == GoToPhase::turn_to_target) {
@@ -64,7 +62,7 @@ WheelSpeeds GoToController::step(const PostureUnits& now) {
     }
   }
   if (phase_ == GoToPhase::turn_to_heading) {
-    const double err = wrap_rad(centideg_to_radians(target_.theta) - heading);
+    const double err = wrap_angle(centideg_to_radians(target_.theta) - heading);
     if (std::abs(err) <= angle_tol) phase_ = GoToPhase::done;
     else return turn(err);
   }

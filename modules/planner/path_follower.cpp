@@ -5,14 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "robot/angles.hpp"
+
 namespace robuter::planner {
 
 namespace {
-// An angle in radians brought into (−π, π].
-double wrap(double a) {
-  a = std::remainder(a, 2.0 * plan::kPi);
-  return a <= -plan::kPi ? a + 2.0 * plan::kPi : a;
-}
+using robot::wrap_angle;  // (−π, π]: robot/angles.hpp
 // A speed in cm/s rounded, at least `lo` in magnitude when not zero, at most `hi`.
 std::int32_t shape(double v, std::int32_t lo, std::int32_t hi) {
   const double m = std::clamp(std::abs(v), static_cast<double>(lo), static_cast<double>(hi));
@@ -62,7 +60,7 @@ Wheels PathFollower::step(const plan::Pose2& now) {
     }
     // Face the end (or away from it when backing); a large error stops to turn again.
     const double facing = std::atan2(ey, ex) + (leg.forward ? 0.0 : plan::kPi);
-    const double err = wrap(facing - now.heading);
+    const double err = wrap_angle(facing - now.heading);
     if (std::abs(err) > s_.reorient_angle && along > 0.05) return turn(err);
     const double v = sign * std::clamp(s_.drive_gain * along * 100.0, static_cast<double>(s_.min_cm_s),
                                        static_cast<double>(s_.max_drive_cm_s));  // cm/s

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "modules/emergency/evidence_grid.hpp"
@@ -350,6 +351,17 @@ TEST(EvidenceGrid, TheBodyIsFreeAndTheWindowForgetsWhatItLeaves) {
   EXPECT_EQ(g.state({1.0, 0.0}, 12, kAge), CellState::unknown);
   g.reset();
   EXPECT_EQ(g.state({1.0, 0.0}, 12, kAge), CellState::unknown);
+}
+
+// One fold of a heading for every module (robot/angles.hpp): exact, and bounded work for any
+// input — the history's own loop, which subtracted 2π until the angle was in range, never ended
+// on a heading of 1e18 rad (2π is below its rounding step there).
+TEST(PoseHistory, AHugeHeadingIsFoldedInBoundedWork) {
+  const Pose2 out = advance(Pose2{Eigen::Vector2d::Zero(), 1e18}, 0.0, 0.0, 1.0);
+  EXPECT_GT(out.theta, -std::numbers::pi);
+  EXPECT_LE(out.theta, std::numbers::pi);
+  EXPECT_DOUBLE_EQ(advance(Pose2{Eigen::Vector2d::Zero(), 3.5 * std::numbers::pi}, 0.0, 0.0, 1.0).theta,
+                   -0.5 * std::numbers::pi);
 }
 
 TEST(PoseHistory, InterpolatesExtrapolatesAndDetectsASetOdometry) {

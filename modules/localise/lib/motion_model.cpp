@@ -7,11 +7,6 @@
 
 namespace robuter::loc {
 
-double wrap_angle(double a) {
-  a = std::remainder(a, 2.0 * std::numbers::pi);
-  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
-}
-
 OdometryStep odometry_step(const Pose& before, const Pose& after) {
   const double dx = after.x() - before.x(), dy = after.y() - before.y();
   OdometryStep s;

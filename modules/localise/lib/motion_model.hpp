@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "robot/angles.hpp"
+
 namespace robuter::loc {
 
 // A planar pose (x, y in m; theta in rad, counter-clockwise).
@@ -37,7 +39,7 @@ Pose sample_motion(const Pose& pose, const OdometryStep& step, const MotionNoise
 // `pose` moved by `step` exactly (sample_motion() moves it by a step with the noise added).
 Pose move_pose(const Pose& pose, const OdometryStep& step);
 
-// An angle in (-pi, pi].
-double wrap_angle(double a);
+// An angle in (-pi, pi] (robot/angles.hpp: one rule for the firmware and the simulator).
+using robot::wrap_angle;
 
 }  // namespace robuter::loc
