@@ -11,6 +11,9 @@
 namespace robuter {
 
 namespace {
+// How long an ASN waits for a ready drive and the emergency module's first grant, ticks (2 s:
+// CiA 402 drives are ready within a few hundred ms of start-up, docs/CAN.md).
+constexpr std::uint64_t kServoWaitTicks = 200;
 motion::GoToSettings with_robot(motion::GoToSettings s, const RobotConfig& robot) {
   s.wheel_base_mm = robot.wheel_base_mm;
   const auto cap = static_cast<std::int32_t>(std::min<std::uint32_t>(robot.max_speed_cm_s, 1000));
@@ -27,6 +30,7 @@ ExecutorModule::ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotCon
       go_to_(with_robot(go_to, robot)),
       command_(bb.motion_command.reader()),
       servo_(bb.servo_request.reader()),
+      emergency_(bb.emergency.reader()),
       odometry_set_(bb.odometry_set.reader()),
       go_to_request_(bb.go_to.reader()),
       claim_(bb, MotionSource::go_to),
@@ -121,11 +125,28 @@ void ExecutorModule::run(Kernel& k) {
   const bool drive_ok = health == hal::DriveHealth::ok;
   if (!drive_ok && drive_.servo()) drive_.set_servo(false);  // local reaction; emergency latches
 
+  // Why an ASN waits: on CAN the drives take a few hundred ms to reach "ready" after start-up
+  // (meanwhile the emergency module inhibits: a condition at rest), and an operator's ASN in that
+  // time was acknowledged and then lost (the deploy rehearsal's check, docs/INSTALL.md). It waits
+  // kServoWaitTicks at most for a ready drive and a grant; a trip, a latch or ASF drops it, so
+  // nothing switches on by itself after an emergency.
   if (servo_.updated()) {
     const ServoRequest s = servo_.copy();
-    const MotionCommand& c = command_.peek();
-    if (s.on && !c.stop && command_.generation() > 0 && drive_ok) drive_.set_servo(true);
+    servo_pending_ = s.on;
+    servo_asked_tick_ = tick;
+    servo_asked_trips_ = emergency_.peek().trips;
     if (!s.on) drive_.set_servo(false);  // (any AS also ends a go-to: the arbiter's table)
+  }
+  if (servo_pending_) {
+    const MotionCommand& c = command_.peek();
+    const EmergencyState& e = emergency_.peek();
+    if (command_.generation() > 0 && !c.stop && drive_ok) {
+      drive_.set_servo(true);
+      servo_pending_ = false;
+    } else if (e.latched || e.trips != servo_asked_trips_ || tick - servo_asked_tick_ > kServoWaitTicks) {
+      servo_pending_ = false;
+      log::info("executor: servo on dropped ({})", tick - servo_asked_tick_ > kServoWaitTicks ? "drive not ready" : "an emergency");
+    }
   }
   apply_command(drive_ok);
 

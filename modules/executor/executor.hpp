@@ -39,6 +39,7 @@ class ExecutorModule final : public Process {
   motion::GoToController go_to_;
   Reader<MotionCommand> command_;        // what the emergency module grants
   Reader<ServoRequest> servo_;           // ASN / ASF
+  Reader<EmergencyState> emergency_;     // trips and latches (a pending ASN ends with one)
   Reader<OdometrySet> odometry_set_;     // AC
   Reader<GoToRequest> go_to_request_;    // AW
   MotionClaim claim_;                    // AW's runs handed by the arbiter, and their end
@@ -47,6 +48,9 @@ class ExecutorModule final : public Process {
   std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
   std::uint32_t odometry_seq_ = 0;       // OdometrySet.seq last applied (Posture.odometry_seq)
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
+  std::uint64_t servo_asked_tick_ = 0;     // tick of an ASN still waiting for a ready drive
+  std::uint32_t servo_asked_trips_ = 0;    // the emergency module's trips when it was asked
+  bool servo_pending_ = false;             // an ASN waits for the drive (CiA 402 start-up) and the first grant
 };
 
 }  // namespace robuter

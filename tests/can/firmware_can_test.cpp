@@ -74,6 +74,33 @@ struct CanRobot {
   std::unique_ptr<SimFirmware> fw;
 };
 
+// The deploy rehearsal's check (tools/vm/guest/guest-checks.py): ASN alone, no motion asked,
+// enables both drives over CiA 402 and BO says servo 1.
+TEST(CanFirmware, ServoOnAloneEnablesTheDrives) {
+  CanRobot r;
+  ASSERT_TRUE(r.fw->ok()) << r.fw->error();
+  // As in the VM: the operator's ASN as soon as robuterd answers, before the drives are ready
+  // (it was acknowledged and lost: the drives stayed disabled until a motion was asked).
+  ASSERT_NE(r.posture().drive_health, hal::DriveHealth::ok);
+  ASSERT_EQ(r.fw->ask("ASN"), "ack");
+  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().servo; }, 300)) << "BO servo never 1";
+  EXPECT_TRUE(r.fw->run_until([&] { return r.left->state() == State::operation_enabled; }, 100));
+}
+
+// An ASN waiting for the drives ends with an emergency: after the stop byte and XR the servo
+// stays off (nothing switches on by itself).
+TEST(CanFirmware, AWaitingServoOnEndsWithAnEmergency) {
+  CanRobot r;
+  ASSERT_TRUE(r.fw->ok()) << r.fw->error();
+  ASSERT_EQ(r.fw->ask("ASN"), "ack");
+  r.fw->send_raw("\x18");
+  ASSERT_TRUE(r.fw->run_until([&] { return r.emergency().latched; }, 50));
+  ASSERT_TRUE(r.fw->run_until([&] { return r.posture().drive_health == hal::DriveHealth::ok; }, 300));
+  r.fw->run_ticks(20);
+  EXPECT_EQ(r.fw->ask("XR"), "ack");
+  EXPECT_FALSE(r.fw->run_until([&] { return r.posture().servo; }, 300)) << "the servo switched on by itself";
+}
+
 TEST(CanFirmware, BootsEnablesAndDrivesOnTheBus) {
   CanRobot r;
   r.boot_and_move();
