@@ -8,6 +8,9 @@
 #include <fstream>
 #include <limits>
 #include <set>
+#include <span>
+#include <type_traits>
+#include <variant>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -69,22 +72,39 @@ class Binder {
     if (!v) return fail(*n, key, fmt::format("expected true or false, got {}", type_name(*n)));
     out = v->get();
   }
-  // A string key, optionally one of `choices`.
-  void string(const std::string& key, std::string& out, std::initializer_list<const char*> choices = {}) {
+  // A string key, one of `choices` ('|'-separated) when they are given.
+  void string(const std::string& key, std::string& out, std::string_view choices = {}) {
     const toml::node* n = lookup(key);
     if (!n || error_) return;
     const auto* v = n->as_string();
     if (!v) return fail(*n, key, fmt::format("expected a string, got {}", type_name(*n)));
-    if (choices.size()) {
+    if (!choices.empty()) {
       bool ok = false;
       std::string list;
-      for (const char* c : choices) {
+      for (std::string_view rest = choices; !rest.empty();) {
+        const std::size_t bar = rest.find('|');
+        const std::string_view c = rest.substr(0, bar);
         ok = ok || v->get() == c;
-        list += list.empty() ? c : fmt::format(", {}", c);
+        list += list.empty() ? std::string(c) : fmt::format(", {}", c);
+        rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
       }
       if (!ok) return fail(*n, key, fmt::format("'{}' is not one of: {}", v->get(), list));
     }
     out = v->get();
+  }
+  // An array of integers, each within [lo, hi] (GPIO line offsets).
+  void integers(const std::string& key, std::vector<std::uint32_t>& out, long long lo, long long hi) {
+    const toml::node* n = lookup(key);
+    if (!n || error_) return;
+    const auto* a = n->as_array();
+    if (!a) return fail(*n, key, "expected an array of line offsets (integers)");
+    out.clear();
+    for (const auto& e : *a) {
+      const auto* v = e.as_integer();
+      if (!v || v->get() < lo || v->get() > hi)
+        return fail(*n, key, fmt::format("expected line offsets, integers {}..{}", lo, hi));
+      out.push_back(static_cast<std::uint32_t>(v->get()));
+    }
   }
   void strings(const std::string& key, std::vector<std::string>& out) {
     const toml::node* n = lookup(key);
@@ -167,55 +187,40 @@ class Binder {
   std::optional<ConfigError> error_;
 };
 
-// Line settings of a serial port (docs/HARDWARE.md); `prefix` is its section. The rates are
-// the ones hal/linux/serial_settings.cpp can set (kept equal by a unit test).
-void bind_serial_line(Binder& b, const std::string& prefix, std::uint32_t& baud, std::string& parity,
-                      std::uint32_t& stop_bits, std::string& flow, std::uint32_t& retry_ms) {
-  b.integer(prefix + ".baud", baud, 1200, 921'600);
+// The line rate of a serial port is one the device can be set to (hal/linux/serial_settings.cpp;
+// kept equal by a unit test); `prefix` is its section.
+void check_serial_rate(Binder& b, const std::string& prefix, std::uint32_t baud) {
   bool rate_ok = false;
   for (const std::uint32_t r : kSerialRates) rate_ok = rate_ok || r == baud;
   if (!rate_ok)
     b.fail_key(prefix + ".baud", fmt::format("{} is not a serial rate (1200, 2400, 4800, 9600, 19200, 38400, "
                                              "57600, 115200, 230400, 460800, 921600)", baud));
-  b.string(prefix + ".parity", parity, {"none", "even", "odd"});
-  b.integer(prefix + ".stop_bits", stop_bits, 1, 2);
-  b.string(prefix + ".flow_control", flow, {"none", "hardware", "software"});
-  b.integer(prefix + ".retry_ms", retry_ms, 10, 60'000);
 }
 
-// [links.serial]: the serial command link.
-void bind_links(Binder& b, LinksConfig& l) {
-  b.boolean("links.stop_when_clients_leave", l.stop_when_clients_leave);
-  b.table("links.serial");
-  b.string("links.serial.device", l.serial.device);
-  bind_serial_line(b, "links.serial", l.serial.baud, l.serial.parity, l.serial.stop_bits, l.serial.flow_control,
-                   l.serial.retry_ms);
+// Binds one section's keys by its module's table (kernel/param.hpp).
+template <typename S, std::size_t N>
+void bind_params(Binder& b, std::string_view section, std::span<const param::Param<S>, N> table, S& out) {
+  b.table(std::string(section));
+  for (const param::Param<S>& p : table) {
+    const std::string key = fmt::format("{}.{}", section, p.key);
+    std::visit(
+        [&](auto field) {
+          using F = std::remove_cvref_t<decltype(out.*field)>;
+          if constexpr (std::is_same_v<F, bool>) b.boolean(key, out.*field);
+          else if constexpr (std::is_integral_v<F>) b.integer(key, out.*field, p.lo, p.hi);
+          else if constexpr (std::is_same_v<F, std::string>) b.string(key, out.*field, p.choices);
+          else if constexpr (std::is_same_v<F, std::vector<std::string>>) b.strings(key, out.*field);
+          else b.integers(key, out.*field, p.lo, p.hi);
+        },
+        p.field);
+  }
 }
 
 // [hardware.gpio]: bumpers and digital inputs on a GPIO chip. Offsets must be distinct (one
 // request holds each line once) and at most 32 in all (GPIO_V2_LINES_MAX is 64; the bumper mask
 // is 32 bits).
-void bind_gpio(Binder& b, const toml::table& root, GpioConfig& g) {
-  b.table("hardware.gpio");
-  b.string("hardware.gpio.chip", g.chip);
-  if (const toml::node* n = root.at_path("hardware.gpio.chip").node()) g.line = static_cast<int>(n->source().begin.line);
-  b.boolean("hardware.gpio.active_low", g.active_low);
-  b.integer("hardware.gpio.debounce_us", g.debounce_us, 0, 1'000'000);
-  for (auto [key, out] : {std::pair{"hardware.gpio.bumper_lines", &g.bumper_lines},
-                          std::pair{"hardware.gpio.input_lines", &g.input_lines}}) {
-    const toml::node* n = b.claim(key);
-    if (!n || b.error()) continue;
-    const auto* a = n->as_array();
-    if (!a) return b.fail_key(key, "expected an array of line offsets (integers)");
-    out->clear();
-    for (const auto& e : *a) {
-      const auto* v = e.as_integer();
-      if (!v || v->get() < 0 || v->get() > 1023)
-        return b.fail_key(key, "expected line offsets, integers 0..1023");
-      out->push_back(static_cast<std::uint32_t>(v->get()));
-    }
-  }
-  if (b.error()) return;
+void check_gpio(Binder& b, GpioConfig& g) {
+  g.line = b.line_of("hardware.gpio.chip");
   std::vector<std::uint32_t> all = g.bumper_lines;
   all.insert(all.end(), g.input_lines.begin(), g.input_lines.end());
   if (all.size() > 32) return b.fail_key("hardware.gpio.input_lines", "more than 32 lines in all");
@@ -231,83 +236,8 @@ void bind_gpio(Binder& b, const toml::table& root, GpioConfig& g) {
                       "lines given but no hardware.gpio.chip");
 }
 
-// The [ptu], [gate] and [doors] sections (docs/DOORS.md): seed constants as defaults.
-void bind_doors(Binder& b, PanTiltConfig& p, GateConfig& g, DoorsConfig& d) {
-  b.string("ptu.port", p.port);
-  bind_serial_line(b, "ptu", p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms);
-  b.integer("ptu.min_position", p.min_position, -100'000, 100'000);
-  b.integer("ptu.max_position", p.max_position, -100'000, 100'000);
-  b.integer("ptu.speed", p.speed, 1, 100'000);
-  b.integer("ptu.acceleration", p.acceleration, 1, 1'000'000);
-  b.integer("ptu.fire_tolerance_centideg", p.fire_tolerance_centideg, 1, 250);
-  b.integer("ptu.poll_period_ticks", p.poll_period_ticks, 1, 1000);
-  b.integer("ptu.reply_timeout_ticks", p.reply_timeout_ticks, 1, 10'000);
-  b.integer("ptu.max_failures", p.max_failures, 1, 100);
-  b.integer("ptu.cap_mm", p.cap_mm, 100, 20'000);
-  b.integer("ptu.offset_mm", p.offset_mm, 0, 1000);
-  b.integer("ptu.scale_permille", p.scale_permille, 500, 1500);
-  b.integer("ptu.filter_high_mm", p.filter_high_mm, 0, 20'000);
-  b.integer("ptu.filter_drop_mm", p.filter_drop_mm, 0, 20'000);
-  b.integer("ptu.pivot_x_mm", p.pivot_x_mm, -5000, 5000);
-  b.integer("ptu.box_width_mm", p.box_width_mm, 0, 1000);
-  b.integer("ptu.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
-  if (!b.error() && p.min_position >= p.max_position)
-    b.fail_key("ptu.max_position", fmt::format("{} is not above ptu.min_position {}", p.max_position, p.min_position));
-
-  b.integer("gate.margin_mm", g.margin_mm, 1, 10'000);
-  b.integer("gate.max_gap_sectors", g.max_gap_sectors, 1, 36);
-  b.integer("gate.min_mm", g.min_mm, 0, 10'000);
-  b.integer("gate.max_mm", g.max_mm, 100, 20'000);
-  b.integer("gate.speed_cm_s", g.speed_cm_s, 1, 100);
-  b.integer("gate.turn_cm_s", g.turn_cm_s, 1, 100);
-  b.integer("gate.timeout_ticks", g.timeout_ticks, 1, 1'000'000);
-  b.integer("gate.stage_mm", g.stage_mm, 50, 5000);
-  b.integer("gate.lateral_tolerance_mm", g.lateral_tolerance_mm, 1, 1000);
-  b.integer("gate.heading_tolerance_centideg", g.heading_tolerance_centideg, 10, 3000);
-  b.integer("gate.max_manoeuvres", g.max_manoeuvres, 1, 100);
-  b.integer("gate.stall_ticks", g.stall_ticks, 50, 1'000'000);
-  b.integer("gate.back_off_mm", g.back_off_mm, 0, 2000);
-  b.boolean("gate.hand_over", g.hand_over);
-
-  b.integer("doors.safety_mm", d.safety_mm, 0, 1000);
-  b.integer("doors.max_dist_mm", d.max_dist_mm, 100, 20'000);
-  b.integer("doors.time_before_move_ticks", d.time_before_move_ticks, 1, 1'000'000);
-  b.integer("doors.forward_cm_s", d.forward_cm_s, 1, 100);
-  b.integer("doors.back_cm_s", d.back_cm_s, 1, 100);
-  b.integer("doors.entered_mm", d.entered_mm, 100, 20'000);
-  b.integer("doors.beside_mm", d.beside_mm, 10, 20'000);
-  b.integer("doors.exit_mm", d.exit_mm, 0, 10'000);
-  b.integer("doors.max_age_ticks", d.max_age_ticks, 10, 1'000'000);
-  b.integer("doors.same_echo_mm", d.same_echo_mm, 0, 1000);
-  b.integer("doors.echo_spread_percent", d.echo_spread_percent, 0, 100);
-  b.integer("doors.timeout_ticks", d.timeout_ticks, 0, 100'000'000);
-  b.integer("doors.emergency_mask", d.emergency_mask, 0, 7);
-}
-
 // The [planner] section, and the map's size against what the planner can hold in memory.
-void bind_planner(Binder& b, PlannerModuleConfig& p) {
-  constexpr long long kFar = 1'000'000;  // mm: 1 km, beyond any room
-  b.integer("planner.map_origin_x_mm", p.map_origin_x_mm, -kFar, kFar);
-  b.integer("planner.map_origin_y_mm", p.map_origin_y_mm, -kFar, kFar);
-  b.integer("planner.map_width_mm", p.map_width_mm, 500, kFar);
-  b.integer("planner.map_height_mm", p.map_height_mm, 500, kFar);
-  b.integer("planner.cell_mm", p.cell_mm, 10, 500);
-  b.string("planner.footprint", p.footprint, {"rectangle", "disc"});
-  b.integer("planner.disc_radius_mm", p.disc_radius_mm, 50, 5000);
-  b.integer("planner.margin_mm", p.margin_mm, 0, 1000);
-  b.integer("planner.turn_clearance_mm", p.turn_clearance_mm, 0, 1000);
-  b.integer("planner.heading_slices", p.heading_slices, 4, 64);
-  b.integer("planner.hit_threshold", p.hit_threshold, 1, 254);
-  b.integer("planner.initial_count", p.initial_count, 0, 253);
-  b.string("planner.map_file", p.map_file);
-  b.integer("planner.scan_passes", p.scan_passes, 1, 20);
-  b.integer("planner.beam_range_mm", p.beam_range_mm, 200, 10'000);
-  b.integer("planner.beam_half_angle_centideg", p.beam_half_angle_centideg, 0, 4500);
-  b.integer("planner.follow_range_mm", p.follow_range_mm, 100, 10'000);
-  b.integer("planner.goal_tolerance_mm", p.goal_tolerance_mm, 10, 5000);
-  b.integer("planner.drive_speed_cm_s", p.drive_speed_cm_s, 1, 100);
-  b.integer("planner.turn_speed_cm_s", p.turn_speed_cm_s, 1, 100);
-  if (b.error()) return;
+void check_planner(Binder& b, PlannerModuleConfig& p) {
   if (p.initial_count >= p.hit_threshold)
     return b.fail_key("planner.initial_count", fmt::format("{} must be less than planner.hit_threshold {} (a first miss "
                                                            "would make a cell an obstacle)", p.initial_count, p.hit_threshold));
@@ -329,46 +259,8 @@ void bind_planner(Binder& b, PlannerModuleConfig& p) {
                                                    cells, p.footprint, limit));
 }
 
-// The [demo] section (docs/DOORS.md): the seed's dem.h constants as defaults.
-void bind_demo(Binder& b, DemoConfig& d) {
-  b.boolean("demo.enabled", d.enabled);
-  b.integer("demo.distx_mm", d.distx_mm, 100, 10'000);
-  b.integer("demo.disty_mm", d.disty_mm, 100, 10'000);
-  b.integer("demo.raio_mm", d.raio_mm, 400, 10'000);
-  b.integer("demo.straight_mm", d.straight_mm, 0, 100'000);
-  b.integer("demo.lane_mm", d.lane_mm, 0, 100'000);
-  b.integer("demo.speed_cm_s", d.speed_cm_s, 1, 100);
-  b.integer("demo.slow_cm_s", d.slow_cm_s, 1, 100);
-  b.integer("demo.align_cm_s", d.align_cm_s, 1, 100);
-  b.integer("demo.sensor_a", d.sensor_a, 1, robot::kRingSensors);
-  b.integer("demo.sensor_b", d.sensor_b, 1, robot::kRingSensors);
-  b.integer("demo.front_sensor", d.front_sensor, 1, robot::kRingSensors);
-  b.integer("demo.align_tolerance_mm", d.align_tolerance_mm, 1, 1000);
-  b.integer("demo.calibration_readings", d.calibration_readings, 1, 9);  // demo::kMaxCalibrationReadings (asserted there)
-  b.integer("demo.laps", d.laps, 0, 1'000'000);
-  b.integer("demo.calibration_timeout_ticks", d.calibration_timeout_ticks, 0, 10'000'000);
-}
-
 // The [hardware] and [can] sections (docs/CAN.md).
-void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
-  b.string("hardware.drive", h.drive, {"none", "can"});
-  b.string("hardware.sonar", h.sonar, {"none", "can"});
-  b.string("can.interface", c.interface);
-  b.integer("can.left_node", c.left_node, 1, 127);
-  b.integer("can.right_node", c.right_node, 1, 127);
-  b.integer("can.sonar_node_base", c.sonar_node_base, 1, 120);
-  b.integer("can.counts_per_rev", c.counts_per_rev, 1, 100'000'000);
-  b.integer("can.wheel_diameter_mm", c.wheel_diameter_mm, 10, 5000);
-  b.boolean("can.left_invert", c.left_invert);
-  b.boolean("can.right_invert", c.right_invert);
-  b.integer("can.heartbeat_ms", c.heartbeat_ms, 10, 10'000);
-  b.integer("can.heartbeat_timeout_ms", c.heartbeat_timeout_ms, 20, 60'000);
-  b.integer("can.sdo_timeout_ms", c.sdo_timeout_ms, 10, 10'000);
-  b.integer("can.fault_reset_ms", c.fault_reset_ms, 10, 60'000);
-  b.integer("can.host_node", c.host_node, 1, 127);
-  b.integer("can.host_heartbeat_ms", c.host_heartbeat_ms, 10, 10'000);
-  b.integer("can.drive_watchdog_ms", c.drive_watchdog_ms, 0, 60'000);
-  if (b.error()) return;
+void check_can(Binder& b, CanConfig& c) {
   constexpr std::string_view kUnix = "unix:";  // a bus between processes (docs/CAN.md, robuter-can-nodes)
   if (c.interface.rfind(kUnix, 0) == 0) {
     if (c.interface.size() <= kUnix.size() || c.interface[kUnix.size()] != '/' || c.interface.size() - kUnix.size() > 107)
@@ -397,12 +289,7 @@ void bind_can(Binder& b, HardwareConfig& h, CanConfig& c) {
 }
 
 // Why: [places] file, relative to the configuration's folder like planner.map_file.
-void bind_places(Binder& b, PlacesConfig& p) {
-  b.string("places.file", p.file);
-  b.string("places.grids_dir", p.grids_dir);
-  b.boolean("places.cross_doors", p.cross_doors);
-  b.boolean("places.load_grids", p.load_grids);
-  if (b.error()) return;
+void check_places(Binder& b, PlacesConfig& p) {
   if (p.load_grids && p.grids_dir.empty()) return b.fail_key("places.load_grids", "needs places.grids_dir (the folder the grids are read from)");
   if (p.cross_doors && p.file.empty()) return b.fail_key("places.cross_doors", "needs places.file (the routes whose doors are crossed)");
   const std::filesystem::path folder = std::filesystem::path(b.file()).parent_path();
@@ -418,23 +305,7 @@ void bind_places(Binder& b, PlacesConfig& p) {
 }
 
 // Why: [localise] needs a map to localise on; its state file is resolved like places.file.
-void bind_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& planner, const PlacesConfig& places) {
-  constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
-  b.boolean("localise.enabled", l.enabled);
-  // A step's motion and its resampling run whole in one activation: their work grows with
-  // max_particles, so it is bounded at the 2,000 whose activations were measured (LOCALISATION.md).
-  b.integer("localise.min_particles", l.min_particles, 10, 2'000);
-  b.integer("localise.max_particles", l.max_particles, 10, 2'000);
-  // The bounds on an activation's work, capped where it was measured under 2 ms (LOCALISATION.md,
-  // "The module"): more would only let a setting break the bound.
-  b.integer("localise.particles_per_run", l.particles_per_run, 10, 300);
-  b.integer("localise.traces_per_run", l.traces_per_run, 10, 80);
-  b.integer("localise.initial_sigma_mm", l.initial_sigma_mm, 0, 100'000);
-  b.integer("localise.initial_sigma_deg", l.initial_sigma_deg, 0, 180);
-  b.boolean("localise.report_corrected", l.report_corrected);
-  b.string("localise.state_file", l.state_file);
-  b.integer("localise.seed", l.seed, 0, kU32);
-  if (b.error()) return;
+void check_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& planner, const PlacesConfig& places) {
   if (l.min_particles > l.max_particles)
     return b.fail_key("localise.min_particles",
                       fmt::format("{} must not exceed localise.max_particles {}", l.min_particles, l.max_particles));
@@ -445,70 +316,35 @@ void bind_localise(Binder& b, LocaliseConfig& l, const PlannerModuleConfig& plan
   if (f.is_relative()) l.state_file = (std::filesystem::path(b.file()).parent_path() / f).lexically_normal().string();
 }
 
-// Binds every section of the schema.
+// Binds every section by its module's table, then checks the rules between keys.
 void bind(Binder& b, const std::shared_ptr<const toml::table>& document, Config& c) {
   const toml::table& root = *document;
-  constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
-  for (const char* t : {"kernel", "robot", "sonar", "emergency", "permissions", "planner", "ptu", "gate", "doors",
-                        "demo", "process", "modules", "links", "hardware", "can", "places", "localise"})
-    b.table(t);
+  for (const char* t : {"process", "modules"}) b.table(t);
 
   b.foreign("sim");  // the simulated robot's own parameters: hal/sitl checks them
   if (const toml::node* n = b.claim("sim"); n && n->is_table())
     c.sim = std::make_shared<const SimSection>(SimSection{document, n->as_table()});
 
-  b.integer("kernel.tick_us", c.kernel.tick_us, 100, 1'000'000);
-  b.boolean("kernel.realtime", c.kernel.realtime);
-  b.integer("kernel.rt_priority", c.kernel.rt_priority, 1, 99);
-  b.boolean("kernel.lock_memory", c.kernel.lock_memory);
-  b.string("kernel.log_level", c.kernel.log_level, {"debug", "info", "warn", "error", "off"});
-
-  b.integer("robot.length_mm", c.robot.length_mm, 100, 10'000);
-  b.integer("robot.width_mm", c.robot.width_mm, 100, 10'000);
-  b.integer("robot.axle_to_front_mm", c.robot.axle_to_front_mm, 1, 10'000);
-  b.integer("robot.wheel_base_mm", c.robot.wheel_base_mm, 100, 10'000);
-  b.integer("robot.max_speed_cm_s", c.robot.max_speed_cm_s, 1, 500);
-  b.integer("robot.max_accel_cm_s2", c.robot.max_accel_cm_s2, 1, 10'000);
-  b.integer("robot.max_decel_cm_s2", c.robot.max_decel_cm_s2, 1, 10'000);
+  for_each_param_section(c, [&](std::string_view section, auto table, auto& part) { bind_params(b, section, table, part); });
+  if (b.error()) return;
 
   if (c.robot.axle_to_front_mm >= c.robot.length_mm)
     return b.fail_key("robot.axle_to_front_mm", fmt::format("{} must be shorter than robot.length_mm {}",
                                                             c.robot.axle_to_front_mm, c.robot.length_mm));
-
-  b.integer("sonar.node_delay_ticks", c.sonar.node_delay_ticks, 0, 1000);
-  b.integer("sonar.timeout_ms", c.sonar.timeout_ms, 1, 1000);
-  b.integer("sonar.sound_speed_m_s", c.sonar.sound_speed_m_s, 200, 400);
-  b.string("sonar.schedule", c.sonar.schedule, {"watch", "seed"});
-  b.integer("sonar.moving_timeout_ms", c.sonar.moving_timeout_ms, 0, 1000);
-
-  b.integer("emergency.mask", c.emergency.mask, 0, 7);
-  b.integer("emergency.comm_limit_ticks", c.emergency.comm_limit_ticks, 1, kU32);
-  b.integer("emergency.min_safety_mm", c.emergency.min_safety_mm, 0, 10'000);
-  b.integer("emergency.safety_mm_per_cm_s", c.emergency.safety_mm_per_cm_s, 0, 1000);
-  b.integer("emergency.motion_timeout_ms", c.emergency.motion_timeout_ms, 0, 3'600'000);
-  b.boolean("emergency.auto_toggle", c.emergency.auto_toggle);
-  b.boolean("emergency.latch", c.emergency.latch);
-  b.string("emergency.rule", c.emergency.rule, {"envelope", "seed"});
-  b.integer("emergency.margin_mm", c.emergency.margin_mm, 0, 500);
-  b.integer("emergency.creep_cm_s", c.emergency.creep_cm_s, 0, 50);
-  b.integer("emergency.free_age_ms", c.emergency.free_age_ms, 10, 600'000);
-  b.integer("emergency.single_echo_ms", c.emergency.single_echo_ms, 0, 600'000);
-  b.boolean("emergency.narrow_arcs", c.emergency.narrow_arcs);
-  b.integer("emergency.protective_clear_ms", c.emergency.protective_clear_ms, 0, 600'000);
-  b.integer("emergency.reaction_ms", c.emergency.reaction_ms, 0, 10'000);
-
-  b.boolean("permissions.pass_through", c.permissions.pass_through);
-  b.strings("permissions.pass_through_allow", c.permissions.pass_through_allow);
-  b.boolean("permissions.shutdown", c.permissions.shutdown);
-
-  bind_planner(b, c.planner);
-  bind_places(b, c.places);
-  bind_localise(b, c.localise, c.planner, c.places);
-  bind_doors(b, c.ptu, c.gate, c.doors);
-  bind_links(b, c.links);
-  bind_gpio(b, root, c.gpio);
-  bind_demo(b, c.demo);
-  bind_can(b, c.hardware, c.can);
+  check_serial_rate(b, "links.serial", c.links.serial.baud);
+  check_serial_rate(b, "ptu", c.ptu.baud);
+  if (!b.error() && c.ptu.min_position >= c.ptu.max_position)
+    b.fail_key("ptu.max_position", fmt::format("{} is not above ptu.min_position {}", c.ptu.max_position, c.ptu.min_position));
+  if (b.error()) return;
+  check_planner(b, c.planner);
+  if (b.error()) return;
+  check_places(b, c.places);
+  if (b.error()) return;
+  check_localise(b, c.localise, c.planner, c.places);
+  if (b.error()) return;
+  check_gpio(b, c.gpio);
+  if (b.error()) return;
+  check_can(b, c.can);
 
   if (root.at_path("modules.enabled").node()) {
     std::vector<std::string> names;

@@ -410,6 +410,54 @@ struct Blackboard {
   // localisation (the operator's pose on the map from the link; the estimate from the module)
   Topic<LocaliseRequest, SerialModule> localise_request;
   Topic<Localisation, LocaliseModule> localisation;
+
+  // Calls f(name, topic) for every topic above, in order (the start-up claim check, the tests
+  // that keep docs/ARCHITECTURE.md's topic table in step).
+  template <typename F>
+  void for_each_topic(F&& f) const {
+    each_topic(*this, f);
+  }
+  template <typename F>
+  void for_each_topic(F&& f) {
+    each_topic(*this, f);
+  }
+
+ private:
+  template <typename Board, typename F>
+  static void each_topic(Board& bb, F& f) {
+    f("heartbeat", bb.heartbeat);
+    f("link_motion", bb.link_motion);
+    f("servo_request", bb.servo_request);
+    f("odometry_set", bb.odometry_set);
+    f("go_to", bb.go_to);
+    f("us_settings", bb.us_settings);
+    f("link_status", bb.link_status);
+    f("modes", bb.modes);
+    f("operator_events", bb.operator_events);
+    f("ranges", bb.ranges);
+    f("us_timing", bb.us_timing);
+    f("emergency", bb.emergency);
+    f("motion_command", bb.motion_command);
+    f("sonar_selection", bb.sonar_selection);
+    f("authority", bb.authority);
+    f("posture", bb.posture);
+    f("go_to_motion", bb.go_to_motion);
+    f("planner_goal", bb.planner_goal);
+    f("planner_motion", bb.planner_motion);
+    f("planner_status", bb.planner_status);
+    f("planner_map", bb.planner_map);
+    f("pan_tilt_scan", bb.pan_tilt_scan);
+    f("pan_tilt_status", bb.pan_tilt_status);
+    f("gate_motion", bb.gate_motion);
+    f("gate_status", bb.gate_status);
+    f("doors_motion", bb.doors_motion);
+    f("doors_status", bb.doors_status);
+    f("doors_detections", bb.doors_detections);
+    f("demo_motion", bb.demo_motion);
+    f("demo_status", bb.demo_status);
+    f("localise_request", bb.localise_request);
+    f("localisation", bb.localisation);
+  }
 };
 
 }  // namespace robuter

@@ -6,11 +6,10 @@
 #include <array>
 #include <cstdint>
 
+#include "modules/demo/demo_params.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter::demo {
-
-inline constexpr int kMaxCalibrationReadings = 9;  // the most readings a calibration median takes
 
 // The course and the calibration, mm and cm/s (seed dem.h: DISTX 1.2 m, DISTY 1 m, RAIO 1 m).
 struct CourseSettings {

@@ -8,31 +8,30 @@
 namespace robuter {
 
 namespace {
-demo::CourseSettings course_settings(const Config& c) {
+demo::CourseSettings course_settings(const DemoConfig& c, const robot::RobotModel& robot) {
   demo::CourseSettings s;
-  s.distx_mm = c.demo.distx_mm;
-  s.disty_mm = c.demo.disty_mm;
-  s.raio_mm = c.demo.raio_mm;
-  s.straight_mm = c.demo.straight_mm;
-  s.lane_mm = c.demo.lane_mm;
-  s.speed_cm_s = static_cast<std::int32_t>(c.demo.speed_cm_s);
-  s.slow_cm_s = static_cast<std::int32_t>(c.demo.slow_cm_s);
-  s.align_cm_s = static_cast<std::int32_t>(c.demo.align_cm_s);
-  s.sensor_a = static_cast<int>(c.demo.sensor_a);
-  s.sensor_b = static_cast<int>(c.demo.sensor_b);
-  s.front_sensor = static_cast<int>(c.demo.front_sensor);
-  s.align_tolerance_mm = c.demo.align_tolerance_mm;
-  static_assert(demo::kMaxCalibrationReadings == 9, "kernel/config.cpp bounds demo.calibration_readings by 9");
-  s.calibration_readings = static_cast<int>(c.demo.calibration_readings);
-  s.laps = c.demo.laps;
-  s.wheel_base_mm = c.robot.wheel_base_mm;
-  s.calibration_timeout_ticks = c.demo.calibration_timeout_ticks;
+  s.distx_mm = c.distx_mm;
+  s.disty_mm = c.disty_mm;
+  s.raio_mm = c.raio_mm;
+  s.straight_mm = c.straight_mm;
+  s.lane_mm = c.lane_mm;
+  s.speed_cm_s = static_cast<std::int32_t>(c.speed_cm_s);
+  s.slow_cm_s = static_cast<std::int32_t>(c.slow_cm_s);
+  s.align_cm_s = static_cast<std::int32_t>(c.align_cm_s);
+  s.sensor_a = static_cast<int>(c.sensor_a);
+  s.sensor_b = static_cast<int>(c.sensor_b);
+  s.front_sensor = static_cast<int>(c.front_sensor);
+  s.align_tolerance_mm = c.align_tolerance_mm;
+  s.calibration_readings = static_cast<int>(c.calibration_readings);
+  s.laps = c.laps;
+  s.wheel_base_mm = robot::mm_u(robot.wheels.base);
+  s.calibration_timeout_ticks = c.calibration_timeout_ticks;
   return s;
 }
 }  // namespace
 
-DemoModule::DemoModule(Blackboard& bb, const Config& cfg)
-    : course_(course_settings(cfg)),
+DemoModule::DemoModule(Blackboard& bb, const DemoConfig& cfg, const robot::RobotModel& robot)
+    : course_(course_settings(cfg, robot)),
       claim_(bb, MotionSource::demo),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),

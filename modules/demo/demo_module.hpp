@@ -17,7 +17,8 @@ namespace robuter {
 // XH, Af, AT, the stop byte …) or an emergency trip ends the run, and only XT1 starts a new one.
 class DemoModule final : public Process {
  public:
-  DemoModule(Blackboard& bb, const Config& cfg);
+  // Its own section ([demo]) and the robot model (the wheel base), nothing else.
+  DemoModule(Blackboard& bb, const DemoConfig& cfg, const robot::RobotModel& robot);
   // The emergency module, triggered on every request so it is judged in the same tick.
   void set_emergency(Process* p) { emergency_ = p; }
 

@@ -13,9 +13,9 @@ namespace robuter {
 
 namespace {
 // The configuration's units turned into the gate's (ticks of `tick_ns`).
-safety::GateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig& robot, const EmergencyTuning& t,
+emergency::MotionGateSettings gate_settings(const EmergencyConfig& cfg, const RobotConfig& robot, const EmergencyTuning& t,
                                    Nanos tick_ns) {
-  safety::GateSettings s;
+  emergency::MotionGateSettings s;
   s.enabled = static_cast<std::uint8_t>(cfg.mask & kDetectAll);
   s.comm_limit_ticks = cfg.comm_limit_ticks;
   s.min_safety_mm = cfg.min_safety_mm;
@@ -87,7 +87,7 @@ bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionReques
 // The motion timeout is in ms: convert with the kernel's real tick; requests and link events
 // from before the start do not count.
 bool EmergencyModule::init(Kernel& k) {
-  gate_ = safety::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
+  gate_ = emergency::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
   gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
   envelope_.set_tick(static_cast<double>(k.tick_ns()) / 1e9);
   for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen_seq = sources_[i].reader.peek().seq;
@@ -150,7 +150,7 @@ std::uint8_t EmergencyModule::detections() const {
 
 // Only the owner's request counts; the others' are seen and dropped (a mode the operator ended
 // may still be sending).
-void EmergencyModule::take_requests(safety::GateInputs& in) {
+void EmergencyModule::take_requests(emergency::GateInputs& in) {
   for (std::size_t i = 0; i < source_count_; ++i) {
     Source& s = sources_[i];
     const MotionRequest& r = s.reader.peek();
@@ -161,7 +161,7 @@ void EmergencyModule::take_requests(safety::GateInputs& in) {
     in.left = r.left;
     in.right = r.right;
     in.source = s.source;
-    in.automatic = safety::automatic(s.source);
+    in.automatic = emergency::automatic(s.source);
   }
 }
 
@@ -171,7 +171,7 @@ void EmergencyModule::run(Kernel& k) {
   const LinkStatus& link = link_.peek();
   const UltrasonicSettings& us = settings_.peek();
   const Posture& posture = posture_.peek();
-  safety::GateInputs in;
+  emergency::GateInputs in;
   in.tick = k.tick();
   const MotionAuthority before = arbiter_.authority();
   take_actions();
@@ -203,14 +203,14 @@ void EmergencyModule::run(Kernel& k) {
     envelope_.observe(in.tick, posture, *in.ranges, in.at_rest);
     in.envelope = &envelope_;
   }
-  if (settings_.generation() > 0) {
+  if (settings_.advertised()) {
     in.user_table = us.user_table;
     in.auto_toggle = us.auto_toggle;
   } else {
     in.auto_toggle = cfg_.auto_toggle;
   }
 
-  const safety::GateDecision d = gate_.step(in);
+  const emergency::GateDecision d = gate_.step(in);
   if (d.tripped) arbiter_.emergency_stop();
   else if (d.protective_started) arbiter_.protective_stop();
   state_out_.publish(d.state);
@@ -230,7 +230,7 @@ void EmergencyModule::run(Kernel& k) {
   // safety distance (a reading never looks clear for lack of range): docs/SAFETY.md §5.
   const std::uint32_t priority = (gate_.enabled() & kDetectUltrasonic) ? d.state.watch & d.selection : 0;
   const auto top = static_cast<std::int32_t>(robot_.max_speed_cm_s);
-  const std::uint32_t reach = std::max(d.state.safety_mm, safety::safety_distance_mm(top, top, cfg_.min_safety_mm, cfg_.safety_mm_per_cm_s));
+  const std::uint32_t reach = std::max(d.state.safety_mm, emergency::safety_distance_mm(top, top, cfg_.min_safety_mm, cfg_.safety_mm_per_cm_s));
   const SonarSelection sel{d.selection, priority, priority ? reach + 200 : 0};
   const SonarSelection& had = selection_out_.current();
   if (had.active != sel.active || had.priority != sel.priority || had.listen_mm != sel.listen_mm) selection_out_.publish(sel);
@@ -250,7 +250,7 @@ bool EmergencyModule::at_rest(const Posture& p) {
 }
 
 // Transitions only: a trip, a latch cleared or refused, a hold beginning or expiring.
-void EmergencyModule::log_transitions(const safety::GateDecision& d) {
+void EmergencyModule::log_transitions(const emergency::GateDecision& d) {
   const EmergencyState& s = d.state;
   if (d.tripped)
     log::warn("emergency: {} (sensor {}, safety {} mm){}", word(s.cause), s.sensor, s.safety_mm,

@@ -48,9 +48,9 @@ class EmergencyModule final : public Process {
   void set_door_loans(bool on) { door_loans_ = on; }
   // The a-priori map's structure, which explains echoes ([emergency] narrow_arcs, docs/SAFETY.md
   // §13 "Narrowing"); nullptr: none. It must outlive the module.
-  void set_known_structure(safety::KnownStructure* known) { envelope_.set_known_structure(known); }
+  void set_known_structure(emergency::KnownStructure* known) { envelope_.set_known_structure(known); }
   // The envelope's grid and pose (tests, figures).
-  const safety::RingEnvelope& envelope() const { return envelope_; }
+  const emergency::RingEnvelope& envelope() const { return envelope_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -70,20 +70,20 @@ class EmergencyModule final : public Process {
   // the robot and is in the door.
   std::uint8_t detections() const;
   // The owner's new request, if any (other sources' requests are seen and dropped).
-  void take_requests(safety::GateInputs& in);
+  void take_requests(emergency::GateInputs& in);
   // Whether the robot has come to rest: the executor's last two postures of different ticks
   // agree (a stopped drive's set-points are zero long before the robot stops braking).
   bool at_rest(const Posture& p);
   // Logs what changed between two verdicts (transitions only, never every tick).
-  void log_transitions(const safety::GateDecision& d);
+  void log_transitions(const emergency::GateDecision& d);
 
   hal::Bumpers& bumpers_;
   EmergencyConfig cfg_;
   RobotConfig robot_;
   EmergencyTuning tuning_;
-  safety::MotionGate gate_;
-  safety::MotionArbiter arbiter_;
-  safety::RingEnvelope envelope_;     // the swept envelope and its evidence grid ([emergency] rule = "envelope")
+  emergency::MotionGate gate_;
+  emergency::MotionArbiter arbiter_;
+  emergency::RingEnvelope envelope_;     // the swept envelope and its evidence grid ([emergency] rule = "envelope")
   std::array<Source, kMaxSources> sources_{};
   std::size_t source_count_ = 0;
   Reader<LinkStatus> link_;

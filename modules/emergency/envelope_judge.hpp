@@ -6,7 +6,7 @@
 
 #include "modules/emergency/swept_envelope.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // The gate's view of the envelope (the emergency module's RingEnvelope; fakes in the tests).
 class EnvelopeJudge {
@@ -18,4 +18,4 @@ class EnvelopeJudge {
   virtual EnvelopeVerdict judge(std::int32_t left, std::int32_t right, bool bumpers) = 0;
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

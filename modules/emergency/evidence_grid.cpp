@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <numbers>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 namespace {
 // The smallest power of two not below n (the window's side, so slots are a mask away).
@@ -389,4 +389,4 @@ CellState EvidenceGrid::state(const Eigen::Vector2d& p, std::uint64_t tick, std:
   return tick - cell.free_tick <= max_age || cell.free_tick > tick ? CellState::free : CellState::stale;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // What the grid knows about one point at a given tick.
 enum class CellState : std::uint8_t {
@@ -202,4 +202,4 @@ class EvidenceGrid {
   std::uint64_t unexplained_echoes_ = 0;  // echoes whose every arc point was ruled out (marked whole), count
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -5,7 +5,7 @@
 #include <array>
 #include <cstddef>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 namespace {
 using A = OperatorAction;
@@ -94,4 +94,4 @@ void MotionArbiter::give_back() {
 
 void MotionArbiter::start_at_boot(MotionSource s) { hand_to(s); }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -7,7 +7,7 @@
 
 #include "modules/topics.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // One row of the arbitration table (docs/SAFETY.md §1 states the same table).
 struct ArbitrationRule {
@@ -64,4 +64,4 @@ class MotionArbiter {
   MotionAuthority a_{};  // the decision (detections and tick are the module's)
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -7,7 +7,7 @@
 
 #include "modules/emergency/obstacle_check.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // A wheel speed scaled by the envelope's fraction, truncated towards zero (never above the share).
 std::int32_t scaled(std::int32_t speed, double fraction) {
@@ -197,4 +197,4 @@ GateDecision MotionGate::step(const GateInputs& in) {
   return d;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -8,7 +8,7 @@
 #include "modules/emergency/watchdog_sets.hpp"
 #include "modules/topics.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // Whether a command that would move the robot (or power its servo, start a mode) is taken now:
 // while an emergency is latched the gate drops every request, so the link answers such a
@@ -16,7 +16,7 @@ namespace robuter::safety {
 constexpr bool admits_motion(const EmergencyState& s) { return !s.latched; }
 
 // Everything the gate needs to know, in ticks and mm.
-struct GateSettings {
+struct MotionGateSettings {
   std::uint8_t enabled = kDetectAll;         // detections on: kDetect* bits (modules/topics.hpp, the vocabulary's)
   std::uint32_t comm_limit_ticks = 18'000;   // link silence that trips, ticks
   std::uint32_t min_safety_mm = 220;         // smallest safety distance, mm
@@ -75,19 +75,19 @@ std::int32_t scaled(std::int32_t speed, double fraction);
 // move, decides grant / hold / stop every activation. No heap, bounded work.
 class MotionGate {
  public:
-  explicit MotionGate(const GateSettings& s) : s_(s) {}
+  explicit MotionGate(const MotionGateSettings& s) : s_(s) {}
   // Decides for one activation.
   GateDecision step(const GateInputs& in);
   // Switches detections on or off (mask bits kDetect*), effective at the next step.
   void set_enabled(std::uint8_t mask) { s_.enabled = static_cast<std::uint8_t>(mask & kDetectAll); }
   std::uint8_t enabled() const { return s_.enabled; }
-  const GateSettings& settings() const { return s_; }
+  const MotionGateSettings& settings() const { return s_; }
 
  private:
   // Drops the remembered request: the robot stays stopped until a new one arrives.
   void forget();
 
-  GateSettings s_;
+  MotionGateSettings s_;
   bool has_request_ = false;                   // a request to move is remembered
   std::int32_t left_ = 0;                      // its left wheel speed, cm/s
   std::int32_t right_ = 0;                     // its right wheel speed, cm/s
@@ -107,4 +107,4 @@ class MotionGate {
   std::uint32_t protective_stops_ = 0;         // protective stops so far
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // Stopping distance grows with speed, so a slow robot may come closer (seed get_us_limit).
 std::uint32_t safety_distance_mm(std::int32_t left, std::int32_t right, std::uint32_t min_mm,
@@ -35,4 +35,4 @@ WatchVerdict check_watch(const WatchSensors& watch, const UltrasonicRanges& rang
   return missing;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

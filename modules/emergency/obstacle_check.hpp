@@ -7,7 +7,7 @@
 #include "modules/emergency/watchdog_sets.hpp"
 #include "modules/topics.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // The safety distance for wheel speeds (left, right) in cm/s, mm: the faster wheel's speed
 // times `mm_per_cm_s`, never less than `min_mm` (seed: 10 mm per cm/s, at least 220 mm).
@@ -31,4 +31,4 @@ struct WatchVerdict {
 WatchVerdict check_watch(const WatchSensors& watch, const UltrasonicRanges& ranges, std::uint32_t safety_mm,
                          std::uint64_t tick, std::uint32_t stale_ticks);
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -7,7 +7,7 @@
 
 #include "robot/angles.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 namespace {
 using robot::wrap_angle;  // (−π, π]: robot/angles.hpp (this file's loop ran for ever on a huge angle)
@@ -89,4 +89,4 @@ Pose2 PoseHistory::at(std::uint64_t tick) const {
   return nth(0).pose;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

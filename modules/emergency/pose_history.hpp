@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // A pose in the odometry frame.
 struct Pose2 {
@@ -67,4 +67,4 @@ class PoseHistory {
   std::size_t count_ = 0;  // samples held
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

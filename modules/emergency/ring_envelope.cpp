@@ -11,7 +11,7 @@
 #include "robot/model_geometry.hpp"
 #include "robot/robot_model.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 namespace {
 constexpr double kMaxStepPerTick = 0.03;  // farther than any wheel speed moves the robot in a tick: AC, m
@@ -186,4 +186,4 @@ EnvelopeVerdict RingEnvelope::judge(std::int32_t left, std::int32_t right, bool 
   return v;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -13,7 +13,7 @@
 #include "modules/emergency/swept_envelope.hpp"
 #include "modules/topics.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // The grid and envelope settings of a configuration (robot model, [robot], [emergency]) at a tick
 // of `tick_s` seconds.
@@ -63,4 +63,4 @@ class RingEnvelope final : public EnvelopeJudge {
   std::uint32_t resets_ = 0;             // odometry frame changes seen (count)
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -8,7 +8,7 @@
 #include "robot/model_geometry.hpp"
 #include "robot/robot_model.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 void StartBlind::observe(std::uint64_t tick, const Pose2& now, bool at_rest, std::uint32_t scans,
                          const std::uint64_t* read_tick, int sensors) {
@@ -60,4 +60,4 @@ bool StartBlind::covers(const Eigen::Vector2d& p) const {
   return true;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

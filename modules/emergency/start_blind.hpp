@@ -7,7 +7,7 @@
 
 #include "modules/emergency/pose_history.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // The body and the ring the blind set is built from.
 struct StartBlindSettings {
@@ -56,4 +56,4 @@ class StartBlind {
   std::uint32_t fired_ = 0;       // bit s-1: sensor s read during the rest
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

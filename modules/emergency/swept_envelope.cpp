@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 SweptEnvelope::SweptEnvelope(const EnvelopeSettings& s) : s_(s) {
   s_.step = std::max(s_.step, 0.005);
@@ -151,4 +151,4 @@ bool SweptEnvelope::braking_meets_obstacle(const EvidenceGrid& g, const Pose2& n
   return what == Meets::obstacle;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -9,7 +9,7 @@
 #include "modules/emergency/pose_history.hpp"
 #include "modules/emergency/start_blind.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // The robot and the stopping model the envelope is built from.
 struct EnvelopeSettings {
@@ -101,4 +101,4 @@ class SweptEnvelope {
   double reach_ = 1.0;                 // farthest outline point from the axle midpoint, m
 };
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 // Going round the ring backwards, as the seed's sub24.
 int sub24(int a, int b) {
@@ -72,4 +72,4 @@ std::uint32_t select_sensors(std::uint32_t user_table, bool auto_toggle, std::ui
   return (user_table | watch) & kAllSensors;
 }
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

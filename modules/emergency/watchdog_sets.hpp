@@ -7,7 +7,7 @@
 
 #include "robot/ring_wiring.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 
 inline constexpr int kRingSize = robot::kRingSensors;  // sensors on the ring, numbered 1..24
 inline constexpr int kWatchSize = 5;   // watch-dog sensors per direction of motion
@@ -47,4 +47,4 @@ std::uint32_t watch_mask(int main);
 // detection is off the ring simply serves the user table.
 std::uint32_t select_sensors(std::uint32_t user_table, bool auto_toggle, std::uint32_t watch, bool us_enabled);
 
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -14,7 +14,7 @@ namespace {
 // How long an ASN waits for a ready drive and the emergency module's first grant, ticks (2 s:
 // CiA 402 drives are ready within a few hundred ms of start-up, docs/CAN.md).
 constexpr std::uint64_t kServoWaitTicks = 200;
-motion::GoToSettings with_robot(motion::GoToSettings s, const RobotConfig& robot) {
+executor::GoToSettings with_robot(executor::GoToSettings s, const RobotConfig& robot) {
   s.wheel_base_mm = robot.wheel_base_mm;
   const auto cap = static_cast<std::int32_t>(std::min<std::uint32_t>(robot.max_speed_cm_s, 1000));
   s.max_drive_cm_s = std::min(s.max_drive_cm_s, cap);
@@ -24,7 +24,7 @@ motion::GoToSettings with_robot(motion::GoToSettings s, const RobotConfig& robot
 }  // namespace
 
 ExecutorModule::ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotConfig& robot,
-                               const motion::GoToSettings& go_to)
+                               const executor::GoToSettings& go_to)
     : drive_(drive),
       robot_(robot),
       go_to_(with_robot(go_to, robot)),
@@ -45,7 +45,7 @@ bool ExecutorModule::init(Kernel& k) {
   odometry_set_.copy();
   go_to_request_.copy();
   applied_seq_ = command_.peek().seq;
-  const motion::PostureUnits p = motion::to_posture(drive_.odometry());
+  const executor::PostureUnits p = executor::to_posture(drive_.odometry());
   posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), drive_.health(), applied_seq_});
   return true;
 }
@@ -65,7 +65,7 @@ void ExecutorModule::close(Kernel&) {
 // granted (the default command is a stop).
 void ExecutorModule::apply_command(bool drive_ok) {
   const MotionCommand& c = command_.peek();
-  if (c.stop || command_.generation() == 0) {
+  if (c.stop || !command_.advertised()) {
     if (drive_.servo()) drive_.set_servo(false);
     applied_seq_ = c.seq;
     return;
@@ -98,10 +98,10 @@ void ExecutorModule::end_go_to(std::uint64_t tick, bool publish_stop) {
 
 // The arbiter decides: a new run for the go-to (AW) starts it; the operator or an emergency
 // taking the robot ends it. Then one control step per tick whatever the number of activations.
-void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits& now) {
+void ExecutorModule::serve_go_to(std::uint64_t tick, const executor::PostureUnits& now) {
   if (claim_.granted()) {
     const GoToRequest g = go_to_request_.copy();
-    go_to_.start(motion::PostureUnits{g.x, g.y, g.theta});
+    go_to_.start(executor::PostureUnits{g.x, g.y, g.theta});
     log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
   } else if (go_to_.active()) {
     const ModeReason why = claim_.ended();
@@ -113,7 +113,7 @@ void ExecutorModule::serve_go_to(std::uint64_t tick, const motion::PostureUnits&
   if (go_to_request_.updated() && !go_to_request_.copy().active) end_go_to(tick, true);  // a cancel
   if (!go_to_.active() || tick == last_go_to_tick_) return;
   last_go_to_tick_ = tick;
-  const motion::WheelSpeeds w = go_to_.step(now);
+  const executor::WheelSpeeds w = go_to_.step(now);
   request(tick, w.left, w.right);
   if (!go_to_.active()) log::info("executor: go-to reached {} {} {}", now.x, now.y, now.theta);
 }
@@ -140,7 +140,7 @@ void ExecutorModule::run(Kernel& k) {
   if (servo_pending_) {
     const MotionCommand& c = command_.peek();
     const EmergencyState& e = emergency_.peek();
-    if (command_.generation() > 0 && !c.stop && drive_ok) {
+    if (command_.advertised() && !c.stop && drive_ok) {
       drive_.set_servo(true);
       servo_pending_ = false;
     } else if (e.latched || e.trips != servo_asked_trips_ || tick - servo_asked_tick_ > kServoWaitTicks) {
@@ -152,11 +152,11 @@ void ExecutorModule::run(Kernel& k) {
 
   if (odometry_set_.updated()) {
     const OdometrySet o = odometry_set_.copy();
-    drive_.set_odometry(motion::to_odometry(motion::PostureUnits{o.x, o.y, o.theta}));
+    drive_.set_odometry(executor::to_odometry(executor::PostureUnits{o.x, o.y, o.theta}));
     odometry_seq_ = o.seq;
     end_go_to(tick, true);  // the target was in the old frame
   }
-  const motion::PostureUnits now = motion::to_posture(drive_.odometry());
+  const executor::PostureUnits now = executor::to_posture(drive_.odometry());
   serve_go_to(tick, now);
 
   Posture p;

@@ -16,8 +16,8 @@ namespace robuter {
 class ExecutorModule final : public Process {
  public:
   // Owns `drive` for the life of the module.
-  ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotConfig& robot, const motion::GoToSettings& go_to = {});
-  const motion::GoToController& go_to() const { return go_to_; }
+  ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotConfig& robot, const executor::GoToSettings& go_to = {});
+  const executor::GoToController& go_to() const { return go_to_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -27,7 +27,7 @@ class ExecutorModule final : public Process {
   // Applies the emergency module's command: stop → zero and servo off; a new grant → speeds.
   void apply_command(bool drive_ok);
   // Decides whether a go-to runs on: new AW, cancellations, one control step per tick.
-  void serve_go_to(std::uint64_t tick, const motion::PostureUnits& now);
+  void serve_go_to(std::uint64_t tick, const executor::PostureUnits& now);
   // Ends the go-to; `publish_stop` asks the gate for zero speeds (dropped once the arbiter gave
   // the robot to someone else).
   void end_go_to(std::uint64_t tick, bool publish_stop);
@@ -36,7 +36,7 @@ class ExecutorModule final : public Process {
 
   hal::Drive& drive_;
   RobotConfig robot_;
-  motion::GoToController go_to_;
+  executor::GoToController go_to_;
   Reader<MotionCommand> command_;        // what the emergency module grants
   Reader<ServoRequest> servo_;           // ASN / ASF
   Reader<EmergencyState> emergency_;     // trips and latches (a pending ASN ends with one)

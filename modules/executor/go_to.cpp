@@ -8,7 +8,7 @@
 
 #include "robot/angles.hpp"
 
-namespace robuter::motion {
+namespace robuter::executor {
 
 namespace {
 using robot::wrap_angle;  // (−π, π]: robot/angles.hpp
@@ -69,4 +69,4 @@ WheelSpeeds GoToController::step(const PostureUnits& now) {
   return {0, 0};
 }
 
-}  // namespace robuter::motion
+}  // namespace robuter::executor

@@ -6,7 +6,7 @@
 
 #include "modules/executor/posture_units.hpp"
 
-namespace robuter::motion {
+namespace robuter::executor {
 
 // Tolerances and speed limits of the go-to controller.
 struct GoToSettings {
@@ -52,4 +52,4 @@ class GoToController {
   PostureUnits target_{};
 };
 
-}  // namespace robuter::motion
+}  // namespace robuter::executor

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-namespace robuter::motion {
+namespace robuter::executor {
 
 // The protocol's theta range is (−180°, 180°]: −180° is reported as +180°.
 std::int32_t wrap_centideg(std::int64_t a) {
@@ -42,4 +42,4 @@ hal::Odometry to_odometry(const PostureUnits& p) {
   return {tenth_mm_to_metres(p.x), tenth_mm_to_metres(p.y), centideg_to_radians(wrap_centideg(p.theta))};
 }
 
-}  // namespace robuter::motion
+}  // namespace robuter::executor

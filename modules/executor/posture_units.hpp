@@ -6,7 +6,7 @@
 
 #include "hal/api/drive.hpp"
 
-namespace robuter::motion {
+namespace robuter::executor {
 
 inline constexpr std::int32_t kHalfTurn = 18'000;  // 180° in 0.01°
 inline constexpr std::int32_t kFullTurn = 36'000;  // 360° in 0.01°
@@ -34,4 +34,4 @@ PostureUnits to_posture(const hal::Odometry& o);
 // A posture in the protocol's units as the drive's odometry.
 hal::Odometry to_odometry(const PostureUnits& p);
 
-}  // namespace robuter::motion
+}  // namespace robuter::executor

@@ -24,6 +24,7 @@
 #include "kernel/log.hpp"
 #include "kernel/signals.hpp"
 #include "modules/firmware/process_table.hpp"
+#include "modules/firmware/topic_claims.hpp"
 #include "modules/emergency/emergency.hpp"
 #include "modules/executor/executor.hpp"
 #include "modules/heartbeat/heartbeat.hpp"
@@ -274,7 +275,7 @@ std::optional<std::string> Firmware::setup() {
     if (prior_map) localise_map_ = std::make_unique<const plan::OccupancyMap>(*prior_map);
     const plan::OccupancyMap* map = localise_map_ ? localise_map_.get() : walls_.get();
     if (map == nullptr) return "configuration error: localise.enabled: needs a map (planner.map_file or places.file)";
-    localise = std::make_unique<LocaliseModule>(bb_, cfg_);
+    localise = std::make_unique<LocaliseModule>(bb_, cfg_.localise, robot_model(cfg_));
     localise->set_map(*map);
     if (auto err = keep_map_pose(*localise)) return *err;
   }
@@ -304,7 +305,7 @@ std::optional<std::string> Firmware::setup() {
   emergency->add_motion_source(MotionSource::gate, bb_.gate_motion.reader());
   emergency->add_motion_source(MotionSource::doors, bb_.doors_motion.reader());
   gate->set_emergency(emergency.get());
-  auto demo = std::make_unique<DemoModule>(bb_, cfg_);
+  auto demo = std::make_unique<DemoModule>(bb_, cfg_.demo, robot_model(cfg_));
   emergency->add_motion_source(MotionSource::demo, bb_.demo_motion.reader());
   demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());
@@ -371,6 +372,9 @@ std::optional<std::string> Firmware::setup() {
                                   {"demo", demo.get()},            {"localise", localise.get()}};
   std::vector<ProcessRow> table;
   if (auto err = build_table(cfg_, modules, table)) return err;
+  // One writer per topic, claimed once by its module (the localisation's only when it is composed).
+  const std::string_view unowned[] = {"localisation"};
+  if (auto err = topic_claims_error(bb_, localise ? std::span<const std::string_view>{} : unowned)) return err;
   if (stepper) processes_.push_back(std::move(stepper));
   processes_.push_back(std::move(heartbeat));
   processes_.push_back(std::move(serial));

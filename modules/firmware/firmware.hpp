@@ -22,9 +22,9 @@ class FrameTransport;
 class CanBackend;
 }  // namespace robuter::hal::can
 
-namespace robuter::safety {
+namespace robuter::emergency {
 class KnownStructure;
-}  // namespace robuter::safety
+}  // namespace robuter::emergency
 
 namespace robuter {
 namespace hal {
@@ -124,7 +124,7 @@ class Firmware {
   std::unique_ptr<const plan::OccupancyMap> localise_map_;  // the a-priori map as loaded, for the localisation
   std::unique_ptr<const plan::OccupancyMap> memory_;  // saved place grids read back ([places] load_grids): the planner's only
   std::vector<plan::Point2> openings_;  // the place graph's door openings, kept free in the planner's map
-  std::unique_ptr<safety::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded
+  std::unique_ptr<emergency::KnownStructure> known_;  // the a-priori map as the safety core's known structure, when loaded
   // The robot's hardware without --sim: [hardware] backends (docs/CAN.md).
   std::optional<std::string> setup_hardware();
 

@@ -22,7 +22,7 @@ namespace robuter {
 // point's distance from the robot, at most kMaxSlack. A map placed by an estimate a few
 // centimetres and a degree off explains no echo at the quarter cell the exact frame allows (a
 // jamb's corner 2.48 m away at a cone's edge lay 12 cm from the arc: docs/SAFETY.md §13).
-class PriorMapStructure final : public safety::KnownStructure {
+class PriorMapStructure final : public emergency::KnownStructure {
  public:
   PriorMapStructure(plan::OccupancyMap map, Reader<Localisation> localisation, Reader<Posture> posture);
   void update() override;

@@ -10,8 +10,8 @@ namespace robuter::gate {
 namespace {
 constexpr double kRad = std::numbers::pi / 180.0;
 
-motion::GoToSettings manoeuvre_settings(const GateSettings& s) {
-  motion::GoToSettings g;
+executor::GoToSettings manoeuvre_settings(const GateSettings& s) {
+  executor::GoToSettings g;
   g.position_tolerance = 100;  // 1 cm, 0.1 mm
   g.angle_tolerance = 50;      // 0.5°, 0.01°
   g.max_drive_cm_s = s.speed_cm_s;
@@ -22,12 +22,12 @@ motion::GoToSettings manoeuvre_settings(const GateSettings& s) {
 }
 
 // A pose and a robot-frame offset (mm, degrees) composed into odometry units (0.1 mm, 0.01°).
-motion::PostureUnits compose(const SectorPose& p, double x_mm, double y_mm, double dtheta_deg) {
+executor::PostureUnits compose(const SectorPose& p, double x_mm, double y_mm, double dtheta_deg) {
   const double th = p.theta * 0.01 * kRad;
-  motion::PostureUnits t;
+  executor::PostureUnits t;
   t.x = static_cast<std::int32_t>(std::lround(p.x + 10.0 * (x_mm * std::cos(th) - y_mm * std::sin(th))));
   t.y = static_cast<std::int32_t>(std::lround(p.y + 10.0 * (x_mm * std::sin(th) + y_mm * std::cos(th))));
-  t.theta = motion::wrap_centideg(static_cast<std::int64_t>(std::lround(p.theta + dtheta_deg * 100.0)));
+  t.theta = executor::wrap_centideg(static_cast<std::int64_t>(std::lround(p.theta + dtheta_deg * 100.0)));
   return t;
 }
 
@@ -117,7 +117,7 @@ GateOutput GateLogic::step(const GateInputs& in) {
     return out(-s_.speed_cm_s, -s_.speed_cm_s);
   }
   // Manoeuvring: one controller step from the current odometry.
-  const motion::WheelSpeeds w = go_.step(motion::PostureUnits{in.pose.x, in.pose.y, in.pose.theta});
+  const executor::WheelSpeeds w = go_.step(executor::PostureUnits{in.pose.x, in.pose.y, in.pose.theta});
   if (!go_.active()) {
     enter(Phase::settle, in);
     state_ = ModeState::searching;
@@ -144,7 +144,7 @@ void GateLogic::enter(Phase p, const GateInputs& in) {
 
 bool GateLogic::stalled(const GateInputs& in) {
   const double dx = in.pose.x - moved_pose_.x, dy = in.pose.y - moved_pose_.y;
-  const std::int64_t dth = motion::wrap_centideg(static_cast<std::int64_t>(in.pose.theta) - moved_pose_.theta);
+  const std::int64_t dth = executor::wrap_centideg(static_cast<std::int64_t>(in.pose.theta) - moved_pose_.theta);
   if (std::hypot(dx, dy) >= 50.0 || std::abs(dth) >= 50) {  // 5 mm, 0.5°
     moved_pose_ = in.pose;
     moved_tick_ = in.tick;
@@ -175,10 +175,10 @@ void GateLogic::evaluate(const GateInputs& in) {
   }
   // Acted on only when two scans in a row agree (in the odometry frame): one scan's spurious or
   // lost echoes can move an edge by half a metre (issue #19), two scans rarely the same way.
-  const motion::PostureUnits now = compose(in.pose, estimate_.center_x, estimate_.center_y, estimate_.normal_deg);
+  const executor::PostureUnits now = compose(in.pose, estimate_.center_x, estimate_.center_y, estimate_.normal_deg);
   const bool before = sighted_;
   const double apart_mm = 0.1 * std::hypot(now.x - sighting_.x, now.y - sighting_.y);
-  const double turn_deg = 0.01 * motion::wrap_centideg(static_cast<std::int64_t>(now.theta) - sighting_.theta);
+  const double turn_deg = 0.01 * executor::wrap_centideg(static_cast<std::int64_t>(now.theta) - sighting_.theta);
   sighted_ = true;
   sighting_ = now;
   if (!before || apart_mm > s_.agree_mm || std::abs(turn_deg) > s_.agree_deg) {

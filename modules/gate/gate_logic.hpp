@@ -85,7 +85,7 @@ class GateLogic {
   GateOutput out(std::int32_t l, std::int32_t r) const;
 
   GateSettings s_;
-  motion::GoToController go_;          // the manoeuvre to the staging pose
+  executor::GoToController go_;          // the manoeuvre to the staging pose
   Phase phase_ = Phase::idle;
   ModeState state_ = ModeState::off;   // what is reported
   ModeReason reason_ = ModeReason::none;
@@ -99,7 +99,7 @@ class GateLogic {
   // The passage as the previous scan saw it, in the odometry frame (centre and the direction
   // through it): what the next scan must agree with. None at a start.
   bool sighted_ = false;
-  motion::PostureUnits sighting_{};
+  executor::PostureUnits sighting_{};
   std::uint32_t disagreements_ = 0;    // scans that disagreed with the one before, this run, count
   std::uint32_t unsettled_ = 0;        // scans in a row without two agreeing, count
   std::uint64_t moved_tick_ = 0;       // when it last moved, ticks

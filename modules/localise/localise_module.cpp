@@ -34,9 +34,9 @@ std::int32_t mm(double m) { return static_cast<std::int32_t>(std::lround(std::cl
 
 }  // namespace
 
-LocaliseModule::LocaliseModule(Blackboard& bb, const Config& cfg)
-    : cfg_(cfg.localise),
-      ring_(robot_model(cfg).ring),
+LocaliseModule::LocaliseModule(Blackboard& bb, const LocaliseConfig& cfg, const robot::RobotModel& robot)
+    : cfg_(cfg),
+      ring_(robot.ring),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
       request_(bb.localise_request.reader()),
@@ -70,12 +70,12 @@ void LocaliseModule::start_at(const loc::Pose& pose, const loc::Pose& odo, std::
   filter_->rebase(odo);
   started_ = true;
   searching_ = false;
-  report_.map_x = motion::metres_to_tenth_mm(pose.x());
-  report_.map_y = motion::metres_to_tenth_mm(pose.y());
-  report_.map_theta = motion::radians_to_centideg(pose.z());
-  report_.odo_x = motion::metres_to_tenth_mm(odo.x());
-  report_.odo_y = motion::metres_to_tenth_mm(odo.y());
-  report_.odo_theta = motion::radians_to_centideg(odo.z());
+  report_.map_x = executor::metres_to_tenth_mm(pose.x());
+  report_.map_y = executor::metres_to_tenth_mm(pose.y());
+  report_.map_theta = executor::radians_to_centideg(pose.z());
+  report_.odo_x = executor::metres_to_tenth_mm(odo.x());
+  report_.odo_y = executor::metres_to_tenth_mm(odo.y());
+  report_.odo_theta = executor::radians_to_centideg(odo.z());
   report_.odometry_seq = last_posture_.odometry_seq;
   publish(tick, false);
 }
@@ -95,7 +95,7 @@ void LocaliseModule::take_inputs(std::uint64_t tick) {
     log::info("localise: the odometry was set (AC {} {} {}): the map pose is set there too", p.x, p.y, p.theta);
   }
   // AC is told by odometry_seq, not by the size of the jump: no jump limit here.
-  history_.add(p.tick, safety::Pose2{{odo.x(), odo.y()}, odo.z()}, kNoJumpLimit, kNoJumpLimit);
+  history_.add(p.tick, emergency::Pose2{{odo.x(), odo.y()}, odo.z()}, kNoJumpLimit, kNoJumpLimit);
   if (!started_) {
     if (saved_start_) {  // where an earlier run left the robot
       start_at(localise::to_pose(saved_start_->x, saved_start_->y, saved_start_->theta), odo, tick);
@@ -150,7 +150,7 @@ void LocaliseModule::run(Kernel& k) {
 void LocaliseModule::keep_pose(std::uint64_t tick, bool now) {
   if (state_file_ == nullptr || !started_ || !have_posture_) return;
   if (!now && (report_.state != LocaliseState::tracking || tick < saved_tick_ + kKeepEveryTicks)) return;
-  const motion::PostureUnits m = localise::map_posture(last_posture_, report_);
+  const executor::PostureUnits m = localise::map_posture(last_posture_, report_);
   const localise::SavedPose p{m.x, m.y, m.theta};
   if (!now && std::abs(p.x - saved_.x) < kKeepMoved && std::abs(p.y - saved_.y) < kKeepMoved &&
       std::abs(p.theta - saved_.theta) < kKeepTurned)
@@ -170,16 +170,16 @@ void LocaliseModule::publish(std::uint64_t tick, bool stepped) {
   const Eigen::Vector2d values = eig.eigenvalues().cwiseMax(0.0);  // ascending
   const Eigen::Vector2d major = eig.eigenvectors().col(1);
   const double sigma_theta = std::sqrt(std::max(0.0, e.covariance(2, 2)));
-  report_.x = motion::metres_to_tenth_mm(e.pose.x());
-  report_.y = motion::metres_to_tenth_mm(e.pose.y());
-  report_.theta = motion::radians_to_centideg(e.pose.z());
+  report_.x = executor::metres_to_tenth_mm(e.pose.x());
+  report_.y = executor::metres_to_tenth_mm(e.pose.y());
+  report_.theta = executor::radians_to_centideg(e.pose.z());
   report_.major_mm = mm(std::sqrt(values(1)));
   report_.minor_mm = mm(std::sqrt(values(0)));
   double axis = std::atan2(major.y(), major.x());  // a direction, not an arrow: into (-90°, 90°]
   if (axis <= -std::numbers::pi / 2) axis += std::numbers::pi;
   if (axis > std::numbers::pi / 2) axis -= std::numbers::pi;
-  report_.axis = motion::radians_to_centideg(axis);
-  report_.sigma_theta = motion::radians_to_centideg(sigma_theta);
+  report_.axis = executor::radians_to_centideg(axis);
+  report_.sigma_theta = executor::radians_to_centideg(sigma_theta);
   report_.cluster_pct = static_cast<std::uint8_t>(std::lround(std::clamp(e.cluster_weight, 0.0, 1.0) * 100.0));
   report_.particles = static_cast<std::uint16_t>(std::clamp(e.particles, 0, 65535));
   report_.scouts_fired = static_cast<std::uint32_t>(filter_->scouts_fired());
@@ -192,9 +192,9 @@ void LocaliseModule::publish(std::uint64_t tick, bool stepped) {
       report_.map_x = report_.x;
       report_.map_y = report_.y;
       report_.map_theta = report_.theta;
-      report_.odo_x = motion::metres_to_tenth_mm(step_odometry_.x());
-      report_.odo_y = motion::metres_to_tenth_mm(step_odometry_.y());
-      report_.odo_theta = motion::radians_to_centideg(step_odometry_.z());
+      report_.odo_x = executor::metres_to_tenth_mm(step_odometry_.x());
+      report_.odo_y = executor::metres_to_tenth_mm(step_odometry_.y());
+      report_.odo_theta = executor::radians_to_centideg(step_odometry_.z());
       report_.odometry_seq = step_odometry_seq_;
     }
   } else {

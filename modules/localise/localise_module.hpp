@@ -26,7 +26,8 @@ namespace robuter {
 // Everything is allocated at init(); nothing after.
 class LocaliseModule final : public Process {
  public:
-  LocaliseModule(Blackboard& bb, const Config& cfg);
+  // Its own section ([localise]) and the robot model (the ring's geometry), nothing else.
+  LocaliseModule(Blackboard& bb, const LocaliseConfig& cfg, const robot::RobotModel& robot);
   // The map's walls (an a-priori map, or the place graph's), in the map frame; start-up only.
   void set_map(const plan::OccupancyMap& walls) { walls_ = &walls; }
   bool init(Kernel& k) override;
@@ -58,7 +59,7 @@ class LocaliseModule final : public Process {
   Writer<Localisation> out_;
   loc::DistanceField field_;                      // built at init from walls_
   std::unique_ptr<loc::ParticleFilter> filter_;   // built at init
-  safety::PoseHistory history_;                  // the executor's recent postures (odometry)
+  emergency::PoseHistory history_;                  // the executor's recent postures (odometry)
   localise::RingReadings readings_;
   std::array<loc::SonarReading, loc::ParticleFilter::kMaxReadings> batch_{};
   Localisation report_{};             // what is published

@@ -5,18 +5,18 @@
 namespace robuter::localise {
 namespace {
 
-Eigen::Isometry2d isometry(const motion::PostureUnits& p) {
+Eigen::Isometry2d isometry(const executor::PostureUnits& p) {
   Eigen::Isometry2d t = Eigen::Isometry2d::Identity();
-  t.translate(Eigen::Vector2d(motion::tenth_mm_to_metres(p.x), motion::tenth_mm_to_metres(p.y)));
-  t.rotate(motion::centideg_to_radians(p.theta));
+  t.translate(Eigen::Vector2d(executor::tenth_mm_to_metres(p.x), executor::tenth_mm_to_metres(p.y)));
+  t.rotate(executor::centideg_to_radians(p.theta));
   return t;
 }
 
-motion::PostureUnits posture(const Eigen::Isometry2d& t) {
+executor::PostureUnits posture(const Eigen::Isometry2d& t) {
   const Eigen::Vector2d x = t.translation();
   const Eigen::Matrix2d r = t.linear();
-  return {motion::metres_to_tenth_mm(x.x()), motion::metres_to_tenth_mm(x.y()),
-          motion::radians_to_centideg(std::atan2(r(1, 0), r(0, 0)))};
+  return {executor::metres_to_tenth_mm(x.x()), executor::metres_to_tenth_mm(x.y()),
+          executor::radians_to_centideg(std::atan2(r(1, 0), r(0, 0)))};
 }
 
 // map ← odometry: the map pose of the reference times the inverse of its odometry posture.
@@ -34,12 +34,12 @@ Eigen::Isometry2d map_from_odometry(const Localisation& l, std::uint32_t odometr
   return corrects(l, odometry_seq) ? correction(l) : Eigen::Isometry2d::Identity();
 }
 
-motion::PostureUnits map_posture(const motion::PostureUnits& p, const Localisation& l, std::uint32_t odometry_seq) {
+executor::PostureUnits map_posture(const executor::PostureUnits& p, const Localisation& l, std::uint32_t odometry_seq) {
   if (!corrects(l, odometry_seq)) return p;
   return posture(correction(l) * isometry(p));
 }
 
-motion::PostureUnits odometry_posture(const motion::PostureUnits& m, const Localisation& l, std::uint32_t odometry_seq) {
+executor::PostureUnits odometry_posture(const executor::PostureUnits& m, const Localisation& l, std::uint32_t odometry_seq) {
   if (!corrects(l, odometry_seq)) return m;
   return posture(correction(l).inverse() * isometry(m));
 }

@@ -17,16 +17,16 @@ namespace robuter::localise {
 // AC sets the map pose where it sets the odometry, which the module's next run confirms.
 bool corrects(const Localisation& l, std::uint32_t odometry_seq);
 // The map pose of odometry posture `p` (of the odometry `odometry_seq`).
-motion::PostureUnits map_posture(const motion::PostureUnits& p, const Localisation& l, std::uint32_t odometry_seq);
+executor::PostureUnits map_posture(const executor::PostureUnits& p, const Localisation& l, std::uint32_t odometry_seq);
 // The odometry posture of map pose `m` (AW: the executor drives in the odometry frame).
-motion::PostureUnits odometry_posture(const motion::PostureUnits& m, const Localisation& l, std::uint32_t odometry_seq);
+executor::PostureUnits odometry_posture(const executor::PostureUnits& m, const Localisation& l, std::uint32_t odometry_seq);
 // The correction as a rigid transform: a point of the odometry frame `odometry_seq` to the map
 // frame (identity while the map frame is the odometry frame). The safety core's known structure
 // (modules/firmware/prior_structure.hpp) places the map with it.
 Eigen::Isometry2d map_from_odometry(const Localisation& l, std::uint32_t odometry_seq);
 // The map pose of the posture the executor published.
-inline motion::PostureUnits map_posture(const Posture& p, const Localisation& l) {
-  return map_posture(motion::PostureUnits{p.x, p.y, p.theta}, l, p.odometry_seq);
+inline executor::PostureUnits map_posture(const Posture& p, const Localisation& l) {
+  return map_posture(executor::PostureUnits{p.x, p.y, p.theta}, l, p.odometry_seq);
 }
 
 }  // namespace robuter::localise

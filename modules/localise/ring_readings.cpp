@@ -9,7 +9,7 @@
 namespace robuter::localise {
 
 loc::Pose to_pose(std::int32_t x, std::int32_t y, std::int32_t theta) {
-  return loc::Pose(motion::tenth_mm_to_metres(x), motion::tenth_mm_to_metres(y), motion::centideg_to_radians(theta));
+  return loc::Pose(executor::tenth_mm_to_metres(x), executor::tenth_mm_to_metres(y), executor::centideg_to_radians(theta));
 }
 
 RingReadings::RingReadings(const robot::Ring& ring) {
@@ -19,7 +19,7 @@ RingReadings::RingReadings(const robot::Ring& ring) {
   }
 }
 
-std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const safety::PoseHistory& history, const loc::Pose& now,
+std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const emergency::PoseHistory& history, const loc::Pose& now,
                                   std::span<loc::SonarReading> out) {
   std::size_t n = 0;
   const Eigen::Rotation2Dd to_now(-now.z());
@@ -29,7 +29,7 @@ std::size_t RingReadings::collect(const UltrasonicRanges& ranges, const safety::
     const bool echo = (ranges.no_echo & (1u << k)) == 0;
     if (ranges.mm[k] == 0 || history.empty() || t + kMaxAgeTicks < history.last_tick()) continue;
     // The pose it was read from, in the robot frame of `now`.
-    const safety::Pose2 at = history.at(t);
+    const emergency::Pose2 at = history.at(t);
     const loc::Pose then(at.p.x(), at.p.y(), at.theta);
     const double turn = loc::wrap_angle(then.z() - now.z());
     const Eigen::Vector2d offset = to_now * Eigen::Vector2d(then.x() - now.x(), then.y() - now.y());

@@ -27,7 +27,7 @@ class RingReadings {
   static constexpr std::uint64_t kMaxAgeTicks = 150;  // within the history's 16 postures (1.6 s)
   explicit RingReadings(const robot::Ring& ring);
   // Into `out` (at most out.size()); returns how many.
-  std::size_t collect(const UltrasonicRanges& ranges, const safety::PoseHistory& history, const loc::Pose& now,
+  std::size_t collect(const UltrasonicRanges& ranges, const emergency::PoseHistory& history, const loc::Pose& now,
                       std::span<loc::SonarReading> out);
   // A step took the ranges collected: the next one uses only ranges read after them.
   void mark_used(const UltrasonicRanges& ranges);

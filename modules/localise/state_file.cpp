@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "kernel/input_file.hpp"
+#include "protocol/codec/limits.hpp"
 
 namespace robuter::localise {
 
@@ -46,7 +47,7 @@ std::optional<SavedPose> read_state_file(const std::string& path, std::string& w
       return std::nullopt;
     }
     constexpr long long lo = INT32_MIN, hi = INT32_MAX;
-    if (x < lo || x > hi || y < lo || y > hi || t <= -18000 || t > 18000) {
+    if (x < lo || x > hi || y < lo || y > hi || t < lo || t > hi || !protocol::heading_in_range(static_cast<std::int32_t>(t))) {
       why = fmt::format("{}:{}: a value is out of range (theta in (-18000, 18000])", path, n);
       return std::nullopt;
     }

@@ -89,7 +89,7 @@ void PlannerModule::close(Kernel& k) {
 
 // The robot's pose on its map: the goals, the places' walls and the a-priori map are there.
 plan::Pose2 PlannerModule::pose_now() {
-  const motion::PostureUnits p = localise::map_posture(posture_.peek(), localisation_.peek());
+  const executor::PostureUnits p = localise::map_posture(posture_.peek(), localisation_.peek());
   const double theta = p.theta * kCentideg;
   if (!have_heading_) {
     heading_ = theta;
@@ -151,7 +151,7 @@ void PlannerModule::skip_readings() {
 // may have moved a little since the XG was taken, which the margin absorbs.
 void PlannerModule::place_window(std::uint64_t tick) {
   const planner::MapWindow now = planner::window_at(cfg_.planner, map_x0_mm_, map_y0_mm_);
-  const motion::PostureUnits at = localise::map_posture(posture_.peek(), localisation_.peek());
+  const executor::PostureUnits at = localise::map_posture(posture_.peek(), localisation_.peek());
   const PlannerGoal::Via t = target();
   if (planner::on_window(now, t.x, t.y)) return;
   const auto shift = planner::window_shift(cfg_, now, at.x, at.y, t.x, t.y);

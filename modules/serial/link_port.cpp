@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Each protocol request mapped onto the topic that carries it; reads from the owners' topics.
+// The link's requests, each mapped onto the topic that carries it to its owner module, with
+// the refusals that protect the robot (a latched emergency, a pose out of range); docs/PROTOCOL.md.
 #include "modules/serial/link_port.hpp"
 
 #include <algorithm>
@@ -11,12 +12,13 @@
 #include "modules/emergency/motion_gate.hpp"
 #include "modules/localise/map_frame.hpp"
 #include "modules/planner/map_bounds.hpp"
+#include "protocol/codec/limits.hpp"
 
 namespace robuter {
 
 using protocol::PortResult;
 
-LinkPort::LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg)
+LinkPort::LinkPort(Blackboard& bb, LinkWriters& w, const Config& cfg)
     : w_(w),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
@@ -44,64 +46,6 @@ void LinkPort::attach(Kernel& k) {
   }
 }
 
-// Generations only grow; the owners publish on every run (state, posture), so "changed since
-// the start of the wait" is "ran since". The executor must also have applied the emergency
-// module's latest command (which it triggers the executor for): with the default priorities it
-// runs right after the emergency module, but a refused trigger or another table may delay it.
-// The executor is run for the wait only when the request is its own (AS, AC): an extra posture
-// sample changes nothing else, but the emergency module's at-rest test compares postures of
-// different ticks, so it is not asked for without need.
-bool LinkPort::waiting() {
-  if (!waiting_) return false;
-  if (emergency_ran() && executor_done() && localise_done()) {
-    waiting_ = false;
-    return false;
-  }
-  trigger_owners();
-  return true;
-}
-
-bool LinkPort::emergency_ran() const { return !emergency_runs_ || emergency_.generation() != wait_emergency_gen_; }
-
-bool LinkPort::executor_done() const {
-  if (!executor_runs_) return true;
-  if (wait_executor_ && posture_.generation() == wait_posture_gen_) return false;
-  return posture_.peek().command_seq == command_.peek().seq;
-}
-
-bool LinkPort::localise_done() const {
-  if (!localise_runs_) return true;
-  const Localisation& l = localisation_.peek();
-  return l.odometry_seq == w_.odometry.current().seq && l.request_seq == w_.localise.current().seq;
-}
-
-// The owners must run after the latest request: a new one restarts the wait from now.
-void LinkPort::await_owners(bool executor) {
-  if (!waiting_) wait_executor_ = false;
-  waiting_ = true;
-  wait_executor_ = wait_executor_ || executor;
-  wait_emergency_gen_ = emergency_.generation();
-  wait_posture_gen_ = posture_.generation();
-  trigger_owners();
-}
-
-void LinkPort::trigger_owners() const {
-  if (!kernel_) return;
-  if (!emergency_ran()) kernel_->trigger(emergency_process_);
-  if (executor_runs_ && !executor_done()) kernel_->trigger(executor_process_);
-  if (localise_runs_ && !localise_done()) kernel_->trigger(localise_process_);
-}
-
-bool LinkPort::revive_link() {
-  const std::uint64_t t = tick(), last = w_.status.current().last_message_tick;
-  if (!(t > last && t - last > cfg_.emergency.comm_limit_ticks)) return false;
-  message_received();
-  await_owners(false);
-  return true;
-}
-
-void LinkPort::wake_emergency() { await_owners(false); }
-
 void LinkPort::act(OperatorAction a) {
   const std::uint64_t t = tick();
   w_.events.modify([&](OperatorEvents& e) {
@@ -113,57 +57,7 @@ void LinkPort::act(OperatorAction a) {
 
 std::uint64_t LinkPort::tick() const { return kernel_ ? kernel_->tick() : 0; }
 
-bool LinkPort::latched() const { return !safety::admits_motion(emergency_.peek()); }
-
-protocol::Ticks LinkPort::clock() const noexcept { return static_cast<protocol::Ticks>(tick()); }
-
-// BO, BV and the stream: the odometry, as the seed reports it, unless [localise] report_corrected.
-protocol::Posture LinkPort::posture() const noexcept {
-  const Posture& p = posture_.peek();
-  if (cfg_.localise.report_corrected) {
-    const motion::PostureUnits m = map_pose();
-    return {m.x, m.y, m.theta};
-  }
-  return {p.x, p.y, p.theta};
-}
-
-motion::PostureUnits LinkPort::map_pose() const { return localise::map_posture(posture_.peek(), localisation_.peek()); }
-
-bool LinkPort::servo_on() const noexcept { return posture_.peek().servo; }
-
-protocol::WheelSpeeds LinkPort::wheel_speeds() const noexcept {
-  return {posture_.peek().left, posture_.peek().right};
-}
-
-void LinkPort::ranges(protocol::Ranges& out) const noexcept {
-  const auto& mm = ranges_.peek().mm;
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = mm[i];
-}
-
-std::int32_t LinkPort::us_timeout() const noexcept { return static_cast<std::int32_t>(w_.us.current().timeout_ms); }
-
-// The pan-tilt module's 72 sectors (zeros before the first sweep); unavailable when the module
-// is not running (a module publishes its status at start-up).
-PortResult LinkPort::pan_tilt(protocol::SectorKind kind, protocol::Sectors& out) const noexcept {
-  if (pan_tilt_status_.generation() == 0) return PortResult::unavailable;
-  const PanTiltScan& s = pan_tilt_scan_.peek();
-  const auto& src = kind == protocol::SectorKind::raw        ? s.raw
-                    : kind == protocol::SectorKind::filtered ? s.filtered
-                                                             : s.differences;
-  static_assert(kPanTiltSectors == protocol::kSectorCount, "BP/BF/BD sector count");
-  std::copy(src.begin(), src.end(), out.begin());
-  return PortResult::ok;
-}
-
-std::int32_t LinkPort::node_delay() const noexcept {
-  return static_cast<std::int32_t>(w_.us.current().node_delay_ticks);
-}
-std::int32_t LinkPort::mean_node_time() const noexcept {
-  return static_cast<std::int32_t>(timing_.peek().mean_node_ticks);
-}
-std::int32_t LinkPort::mean_scan_time() const noexcept {
-  return static_cast<std::int32_t>(timing_.peek().mean_scan_ticks);
-}
+bool LinkPort::latched() const { return !emergency::admits_motion(emergency_.peek()); }
 
 // AM: a request to the emergency module's gate, never to the motors.
 PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexcept {
@@ -202,7 +96,7 @@ PortResult LinkPort::pass_through(std::string_view line) noexcept {
 }
 
 PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
-  if (p.theta <= -18000 || p.theta > 18000) return PortResult::out_of_range;
+  if (!protocol::heading_in_range(p.theta)) return PortResult::out_of_range;
   w_.odometry.modify([&](OdometrySet& o) {
     o.x = p.x;
     o.y = p.y;
@@ -216,9 +110,9 @@ PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
 // AW: the target is a map pose; the executor drives in the odometry frame, so it is given the
 // odometry posture the map pose has now (the same while no localisation runs).
 PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
-  if (t.theta <= -18000 || t.theta > 18000) return PortResult::out_of_range;
+  if (!protocol::heading_in_range(t.theta)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
-  const motion::PostureUnits o = localise::odometry_posture({t.x, t.y, t.theta}, localisation_.peek(), posture_.peek().odometry_seq);
+  const executor::PostureUnits o = localise::odometry_posture({t.x, t.y, t.theta}, localisation_.peek(), posture_.peek().odometry_seq);
   w_.go_to.modify([&](GoToRequest& g) {
     g.x = o.x;
     g.y = o.y;
@@ -236,14 +130,8 @@ PortResult LinkPort::request_shutdown() noexcept {
   return PortResult::ok;
 }
 
-// Why refuse Ap, AG, Ad without a unit instead of acking and failing later: the operator
-// learns at once that nothing will scan (XD would only say so afterwards). Off is always ack.
-bool LinkPort::has_pan_tilt_unit() const {
-  return pan_tilt_status_.generation() > 0 && pan_tilt_scan_.peek().fitted;
-}
-
 PortResult LinkPort::set_pan_tilt(bool on) noexcept {
-  if (pan_tilt_status_.generation() == 0) return PortResult::unavailable;
+  if (!pan_tilt_status_.advertised()) return PortResult::unavailable;
   if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   w_.modes.modify([&](ModeRequest& m) {
     m.pan_tilt = on;
@@ -254,7 +142,7 @@ PortResult LinkPort::set_pan_tilt(bool on) noexcept {
 }
 
 PortResult LinkPort::set_gate_finder(bool on) noexcept {
-  if (gate_status_.generation() == 0) return PortResult::unavailable;
+  if (!gate_status_.advertised()) return PortResult::unavailable;
   if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
@@ -267,7 +155,7 @@ PortResult LinkPort::set_gate_finder(bool on) noexcept {
 }
 
 PortResult LinkPort::set_door_crossing(bool on) noexcept {
-  if (doors_status_.generation() == 0) return PortResult::unavailable;
+  if (!doors_status_.advertised()) return PortResult::unavailable;
   if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
   if (on && latched()) return PortResult::refused_emergency;
   w_.modes.modify([&](ModeRequest& m) {
@@ -281,7 +169,7 @@ PortResult LinkPort::set_door_crossing(bool on) noexcept {
 
 // XT1 / XT0: the demonstration course, started and stopped like the other modes.
 PortResult LinkPort::set_demo(bool on) noexcept {
-  if (demo_status_.generation() == 0) return PortResult::unavailable;
+  if (!demo_status_.advertised()) return PortResult::unavailable;
   if (on && latched()) return PortResult::refused_emergency;
   act(on ? OperatorAction::start_demo : OperatorAction::stop_demo);
   return PortResult::ok;
@@ -319,19 +207,6 @@ void LinkPort::immediate_stop() noexcept {
   act(OperatorAction::stop_byte);
 }
 
-protocol::EmergencyStatus LinkPort::emergency() const noexcept {
-  const EmergencyState& e = emergency_.peek();
-  protocol::EmergencyStatus s;
-  s.held = e.held;
-  s.latched = e.latched;
-  s.enabled = e.enabled;
-  s.cause = e.cause;
-  s.granted_pct = e.granted_pct;
-  s.envelope = e.envelope;
-  s.protective = e.protective;
-  return s;
-}
-
 // XR: clears a latched emergency whose cause is gone (the emergency module does it this tick);
 // refused while the cause is still there.
 PortResult LinkPort::reenable() noexcept {
@@ -343,44 +218,17 @@ PortResult LinkPort::reenable() noexcept {
   return PortResult::ok;
 }
 
-protocol::KernelFigures LinkPort::kernel_figures() const noexcept {
-  protocol::KernelFigures f;
-  if (!kernel_) return f;
-  const std::size_t n = std::min(kernel_->process_count(), figures_.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    const ProcessStats& s = kernel_->stats(i);
-    figures_[i] = {kernel_->row(i).name, s.activations, s.overruns, s.slips, s.mean_ns() / 1000, s.max_ns / 1000};
-  }
-  f.ticks = kernel_->tick();
-  f.max_late_us = static_cast<std::int64_t>(kernel_->lateness().max_us());
-  f.p99_late_us = static_cast<std::int64_t>(kernel_->lateness().quantile_us(0.99));
-  f.processes = std::span<const protocol::ProcessFigures>(figures_.data(), n);
-  return f;
-}
-
-std::string_view LinkPort::firmware_version() const noexcept { return ROBUTER_VERSION; }
-
-std::uint32_t LinkPort::features() const noexcept {
-  std::uint32_t f = protocol::kFeatureGoTo;
-  if (cfg_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
-  if (planner_running()) f |= protocol::kFeaturePlanner;
-  if (pan_tilt_status_.generation() > 0) f |= protocol::kFeaturePanTilt;
-  if (gate_status_.generation() > 0) f |= protocol::kFeatureGate;
-  if (doors_status_.generation() > 0) f |= protocol::kFeatureDoors;
-  return f;
-}
-
 // XG: checked here so that a refused goal changes nothing: the planner must run, the goal must
 // lie on its map or the map must be able to move to hold the robot and the goal
 // (planner::goal_acceptable, the planner's own rule), and no emergency may be latched (as AW).
 PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexcept {
   if (!planner_running()) return PortResult::unavailable;
-  if (with_theta && (g.theta <= -18000 || g.theta > 18000)) return PortResult::out_of_range;
+  if (with_theta && !protocol::heading_in_range(g.theta)) return PortResult::out_of_range;
   const planner::MapWindow now =
-      planner_status_.generation() > 0
+      planner_status_.advertised()
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
           : planner::configured_window(cfg_.planner);
-  const motion::PostureUnits at = map_pose();
+  const executor::PostureUnits at = map_pose();
   if (!planner::goal_acceptable(cfg_, now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   w_.goal.modify([&](PlannerGoal& p) {
@@ -408,50 +256,6 @@ PortResult LinkPort::cancel_goal() noexcept {
   return PortResult::ok;
 }
 
-PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept {
-  if (!planner_running()) return PortResult::unavailable;
-  const PlannerStatus& s = planner_status_.peek();
-  out.state = s.state;
-  out.goal_x = s.goal_x;
-  out.goal_y = s.goal_y;
-  out.path_mm = s.path_mm;
-  out.prefix_mm = s.prefix_mm;
-  out.replans = s.plans > 0 ? s.plans - 1 : 0;
-  out.scans = s.scans;
-  out.plan_us = s.plan_us;
-  out.max_us = s.run_us_max;
-  return PortResult::ok;
-}
-
-// Why: one place's report, numbers 1-based in the file's order; positions to 0.1 mm.
-static void fill_place(const places::PlaceGraph& g, std::size_t i, protocol::PlaceReport& out) {
-  const places::Place& p = g.places()[i];
-  out.count = static_cast<std::int32_t>(g.places().size());
-  out.number = static_cast<std::int32_t>(i + 1);
-  out.name = p.name;
-  out.centre_x = static_cast<std::int32_t>(std::lround(p.centre.x() * 1e4));
-  out.centre_y = static_cast<std::int32_t>(std::lround(p.centre.y() * 1e4));
-  const auto& doors = g.doors_of(i);
-  out.neighbours = static_cast<std::int32_t>(doors.size());
-  for (std::size_t k = 0; k < doors.size() && k < protocol::PlaceReport::kMaxNeighbours; ++k) {
-    const places::Door& d = g.doors()[doors[k]];
-    out.neighbour[k] = static_cast<std::int32_t>((d.a == i ? d.b : d.a) + 1);
-  }
-}
-
-PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
-  if (places_ == nullptr) return PortResult::unavailable;
-  const motion::PostureUnits p = map_pose();
-  const auto at = places_->place_at(places::Vec2(p.x * 1e-4, p.y * 1e-4));
-  if (!at) {
-    out = protocol::PlaceReport{};
-    out.count = static_cast<std::int32_t>(places_->places().size());
-    return PortResult::ok;
-  }
-  fill_place(*places_, *at, out);
-  return PortResult::ok;
-}
-
 // XQ: the route from the robot's place (its odometry position) to place `number`, as the
 // planner's goal with the route's via points (exploring: RouteTable::explore_points); checked
 // here so that a refusal changes nothing: the place exists, the robot is in a place, a route
@@ -460,7 +264,7 @@ PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
 PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
   if (places_ == nullptr || routes_ == nullptr || !planner_running()) return PortResult::unavailable;
   if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
-  const motion::PostureUnits at = map_pose();
+  const executor::PostureUnits at = map_pose();
   const auto here = places_->place_at(places::Vec2(at.x * 1e-4, at.y * 1e-4));
   const std::size_t to = static_cast<std::size_t>(number - 1);
   if (!here || !routes_->found(*here, to)) return PortResult::out_of_range;
@@ -471,7 +275,7 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
               : routes_->points(*here, to);
   if (pts.empty()) return PortResult::out_of_range;  // exploring: more points than a goal holds
   const planner::MapWindow now =
-      planner_status_.generation() > 0
+      planner_status_.advertised()
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
           : planner::configured_window(cfg_.planner);
   std::int64_t fx = at.x, fy = at.y;
@@ -497,28 +301,10 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
   return PortResult::ok;
 }
 
-// XW: unavailable while no localisation runs (its topic never published).
-PortResult LinkPort::localisation(protocol::LocaliseReport& out) const noexcept {
-  if (localisation_.generation() == 0) return PortResult::unavailable;
-  const Localisation& l = localisation_.peek();
-  out.state = l.state;
-  out.x = l.x;
-  out.y = l.y;
-  out.theta = l.theta;
-  out.major_mm = l.major_mm;
-  out.minor_mm = l.minor_mm;
-  out.axis = l.axis;
-  out.sigma_theta = l.sigma_theta;
-  out.cluster_pct = l.cluster_pct;
-  out.particles = l.particles;
-  out.steps = l.steps;
-  return PortResult::ok;
-}
-
 // XA: the localisation takes the pose (or starts a global search) at its next activation.
 PortResult LinkPort::set_map_pose(const protocol::Posture& pose, bool global) noexcept {
-  if (localisation_.generation() == 0) return PortResult::unavailable;
-  if (!global && (pose.theta <= -18000 || pose.theta > 18000)) return PortResult::out_of_range;
+  if (!localisation_.advertised()) return PortResult::unavailable;
+  if (!global && !protocol::heading_in_range(pose.theta)) return PortResult::out_of_range;
   w_.localise.modify([&](LocaliseRequest& r) {
     r.global = global;
     r.x = pose.x;
@@ -527,57 +313,6 @@ PortResult LinkPort::set_map_pose(const protocol::Posture& pose, bool global) no
     ++r.seq;
   });
   await_owners(false);  // XW after the ack reads the new pose
-  return PortResult::ok;
-}
-
-PortResult LinkPort::place_info(std::int32_t number, protocol::PlaceReport& out) const noexcept {
-  if (places_ == nullptr) return PortResult::unavailable;
-  if (number < 1 || static_cast<std::size_t>(number) > places_->places().size()) return PortResult::out_of_range;
-  fill_place(*places_, static_cast<std::size_t>(number - 1), out);
-  return PortResult::ok;
-}
-
-// The window lives in the planner's topic: valid while the line is handled (one thread).
-static_assert(PlannerMapWindow::kSide == protocol::kMapWindowSide, "XM window size");
-
-PortResult LinkPort::planner_map(protocol::MapWindow& out) const noexcept {
-  if (!planner_running() || planner_map_.peek().cell_mm == 0) return PortResult::unavailable;
-  const PlannerMapWindow& w = planner_map_.peek();
-  out.side = PlannerMapWindow::kSide;
-  out.cell_mm = w.cell_mm;
-  out.center_x = w.center_x;
-  out.center_y = w.center_y;
-  out.cells = std::string_view(w.cells.data(), w.cells.size());
-  return PortResult::ok;
-}
-
-namespace {
-// A mode module's report for XD: absent until the module publishes (it does at start-up).
-protocol::ModeReport mode_report(const Reader<ModeStatus>& r) {
-  if (r.generation() == 0) return {.absent = true};
-  return {.state = r.peek().state, .reason = r.peek().reason};
-}
-}  // namespace
-
-// XD: a module that is not running reads "absent"; unavailable only when none of them runs.
-PortResult LinkPort::modes(protocol::ModesReport& out) const noexcept {
-  if (pan_tilt_status_.generation() == 0 && gate_status_.generation() == 0 && doors_status_.generation() == 0 &&
-      demo_status_.generation() == 0)
-    return PortResult::unavailable;
-  out.pan_tilt = mode_report(pan_tilt_status_);
-  out.gate = mode_report(gate_status_);
-  out.doors = mode_report(doors_status_);
-  out.sweeps = pan_tilt_scan_.peek().sweeps;
-  out.width_mm = gate_status_.peek().width_mm;
-  out.crossing_ticks = doors_status_.peek().duration_ticks;
-  out.demo.absent = demo_status_.generation() == 0;
-  if (!out.demo.absent) {
-    const DemoStatus& d = demo_status_.peek();
-    out.demo.state = d.state;
-    out.demo.reason = d.reason;
-    out.demo_phase = d.phase;
-    out.demo_laps = d.laps;
-  }
   return PortResult::ok;
 }
 

@@ -33,7 +33,7 @@ struct LinkWriters {
 
 class LinkPort final : public protocol::RobotPort {
  public:
-  LinkPort(Blackboard& bb, const LinkWriters& w, const Config& cfg);
+  LinkPort(Blackboard& bb, LinkWriters& w, const Config& cfg);
   // The kernel, for the clock, XK and the owners' runs (set at init, after the table).
   void attach(Kernel& k);
   // The emergency module, triggered on a stop byte or a motion request so it acts this tick.
@@ -114,17 +114,17 @@ class LinkPort final : public protocol::RobotPort {
 
  private:
   // True while an emergency is latched: requests to move are refused.
-  // The emergency module's admission rule (safety::admits_motion) says no: refuse with `error`.
+  // The emergency module's admission rule (emergency::admits_motion) says no: refuse with `error`.
   bool latched() const;
   // The pan-tilt module runs and has a unit to talk to (Ap, AG, Ad need it).
   bool has_pan_tilt_unit() const;
   std::uint64_t tick() const;
   // The robot's pose on its map (the odometry's while no localisation runs): XG, XN, XQ.
-  motion::PostureUnits map_pose() const;
+  executor::PostureUnits map_pose() const;
   // True once the planner module has published (its process row runs).
-  bool planner_running() const { return planner_status_.generation() > 0; }
+  bool planner_running() const { return planner_status_.advertised(); }
 
-  LinkWriters w_;                          // topics the serial module owns
+  LinkWriters& w_;                         // topics the serial module owns (its writers, lent by reference)
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<UltrasonicTiming> timing_;

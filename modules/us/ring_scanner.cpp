@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace robuter::sonar {
+namespace robuter::us {
 
 // Per-node masks, as the seed's active-sensor table (AST) held them.
 NodeMasks node_masks(std::uint32_t active) {
@@ -248,4 +248,4 @@ bool RingScanner::step(std::uint64_t tick, hal::SonarRing& ring, const ScanReque
   return changed;
 }
 
-}  // namespace robuter::sonar
+}  // namespace robuter::us

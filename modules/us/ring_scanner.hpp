@@ -9,7 +9,7 @@
 #include "modules/topics.hpp"
 #include "modules/us/scan_stats.hpp"
 
-namespace robuter::sonar {
+namespace robuter::us {
 
 // Sensors to fire per node: bit i = index i of that node.
 using NodeMasks = std::array<std::uint8_t, hal::kSonarNodes>;
@@ -130,4 +130,4 @@ class RingScanner {
   std::uint64_t lost_ = 0;              // lost node firings
 };
 
-}  // namespace robuter::sonar
+}  // namespace robuter::us

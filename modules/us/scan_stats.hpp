@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace robuter::sonar {
+namespace robuter::us {
 
 // Sums and counts since start; the means are what USN and USS report.
 struct ScanStats {
@@ -29,4 +29,4 @@ struct ScanStats {
   std::uint32_t mean_scan() const { return scans ? static_cast<std::uint32_t>(scan_ticks / scans) : 0; }
 };
 
-}  // namespace robuter::sonar
+}  // namespace robuter::us

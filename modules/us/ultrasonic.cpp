@@ -27,12 +27,12 @@ bool UltrasonicModule::init(Kernel&) {
 // The operator's settings once published, the configuration before; time-outs rounded up to
 // whole ticks because a node cannot be read before its echoes are in. A priority firing listens
 // as far as the emergency module needs (2 · listen_mm / c, in whole ms).
-sonar::ScanRequest UltrasonicModule::request(Nanos tick_ns) const {
-  sonar::ScanRequest r;
+us::ScanRequest UltrasonicModule::request(Nanos tick_ns) const {
+  us::ScanRequest r;
   const SonarSelection& sel = selection_.peek();
   r.active = sel.active;
   r.sound_speed_m_s = cfg_.sound_speed_m_s;
-  if (settings_.generation() > 0) {
+  if (settings_.advertised()) {
     r.node_delay_ticks = settings_.peek().node_delay_ticks;
     r.timeout_ms = settings_.peek().timeout_ms;
   } else {

@@ -20,14 +20,14 @@ class UltrasonicModule final : public Process {
   UltrasonicModule(Blackboard& bb, hal::SonarRing& ring, const SonarConfig& cfg);
   // The emergency module, triggered on every new reading so it judges it in the same tick.
   void set_emergency(Process* p) { emergency_ = p; }
-  const sonar::RingScanner& scanner() const { return scanner_; }
+  const us::RingScanner& scanner() const { return scanner_; }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
 
  private:
   // What to fire: the emergency's selection, the operator's delay and time-out.
-  sonar::ScanRequest request(Nanos tick_ns) const;
+  us::ScanRequest request(Nanos tick_ns) const;
 
   hal::SonarRing& ring_;
   SonarConfig cfg_;
@@ -35,7 +35,7 @@ class UltrasonicModule final : public Process {
   Reader<SonarSelection> selection_;      // the table that fires (emergency)
   Writer<UltrasonicRanges> ranges_out_;
   Writer<UltrasonicTiming> timing_out_;
-  sonar::RingScanner scanner_;
+  us::RingScanner scanner_;
   Process* emergency_ = nullptr;          // triggered on new ranges
   std::uint64_t lost_logged_ = 0;         // lost reads already logged
   bool watch_ = true;                     // [sonar] schedule = "watch" (else "seed")

@@ -23,4 +23,8 @@ inline constexpr int kProtocolVersion = 1;           // reported by XV; 1 = seed
 inline constexpr std::uint32_t kMinStreamPeriod = 10;     // ticks (100 ms) between XS lines, at least
 inline constexpr std::uint32_t kMaxStreamPeriod = 60000;  // ticks (10 min) between XS lines, at most
 
+// A heading on the link, 0.01 degree, is in (-18000, 18000]: the one rule AC, AW, XG and XA's
+// poses are admitted by (and a saved map pose is read by).
+constexpr bool heading_in_range(std::int32_t theta) { return theta > -18000 && theta <= 18000; }
+
 }  // namespace robuter::protocol

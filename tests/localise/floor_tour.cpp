@@ -38,7 +38,7 @@ struct Errors {
 
 // The map pose (the firmware's) and the odometry against the truth.
 Errors map_error(SimFirmware& fw) {
-  const motion::PostureUnits m = localise::map_posture(fw.bb().posture.reader().peek(), fw.bb().localisation.reader().peek());
+  const executor::PostureUnits m = localise::map_posture(fw.bb().posture.reader().peek(), fw.bb().localisation.reader().peek());
   const auto& t = fw.sim().robot().pose();
   return {std::hypot(m.x * 1e-4 - t.x, m.y * 1e-4 - t.y), std::abs(wrap(m.theta * 1e-2 * M_PI / 180.0 - t.theta))};
 }

@@ -306,7 +306,8 @@ TEST(LocaliseStateFile, RefusesWhatIsNotAStateFileAndReadsWhatItWrites) {
   EXPECT_EQ(back->theta, 18000);
   for (const char* text : {"", "robuter-localise 2\npose 1 2 3\n", "robuter-localise 1\n", "robuter-localise 1\npose 1 2\n",
                            "robuter-localise 1\npose 1 2 3 4\n", "robuter-localise 1\npose 1 2 -18000\n",
-                           "robuter-localise 1\npose 1 99999999999 3\n", "robuter-localise 1\nplace 1 2 3\n"}) {
+                           "robuter-localise 1\npose 1 99999999999 3\n", "robuter-localise 1\npose 1 2 4294967396\n",
+                           "robuter-localise 1\nplace 1 2 3\n"}) {
     std::FILE* f = std::fopen(path.c_str(), "w");
     ASSERT_NE(f, nullptr);
     std::fputs(text, f);

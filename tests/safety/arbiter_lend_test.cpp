@@ -7,7 +7,7 @@
 namespace robuter {
 namespace {
 
-using safety::MotionArbiter;
+using emergency::MotionArbiter;
 constexpr std::size_t kPlanner = static_cast<std::size_t>(MotionSource::planner);
 constexpr std::size_t kDoors = static_cast<std::size_t>(MotionSource::doors);
 

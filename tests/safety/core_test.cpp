@@ -56,7 +56,7 @@ TEST(Core, HoldOnMissingDataThenResume) {
   ASSERT_TRUE(r.step_until([&] { return r.drive.moving(); }, 100)) << "resumes once the watch-dog sensors read";
   EXPECT_FALSE(r.state().held);
   EXPECT_EQ(r.drive.left(), 20);
-  for (int s : safety::watch_sensors(1)) EXPECT_GT(r.ranges().mm[s - 1], 0) << s;
+  for (int s : emergency::watch_sensors(1)) EXPECT_GT(r.ranges().mm[s - 1], 0) << s;
   EXPECT_EQ(r.drive.violations(), 0u) << r.drive.first_violation();
 }
 
@@ -78,11 +78,11 @@ TEST(Core, AutoToggleFiresOnlyTheWatchDogSensors) {
     else if (f.node == 5) EXPECT_EQ(f.mask, 0b1100);
     else ADD_FAILURE() << "node " << f.node << " fired";
   }
-  EXPECT_EQ(r.bb.sonar_selection.reader().peek().active, safety::watch_mask(1));
+  EXPECT_EQ(r.bb.sonar_selection.reader().peek().active, emergency::watch_mask(1));
   r.link.uu(false);
-  r.link.ut(safety::sensor_bit(13));
+  r.link.ut(emergency::sensor_bit(13));
   r.step(20);
-  EXPECT_EQ(r.bb.sonar_selection.reader().peek().active, safety::watch_mask(1) | safety::sensor_bit(13));
+  EXPECT_EQ(r.bb.sonar_selection.reader().peek().active, emergency::watch_mask(1) | emergency::sensor_bit(13));
 }
 
 TEST(Core, BumperStopsAndLatches) {

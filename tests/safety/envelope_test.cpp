@@ -16,7 +16,7 @@
 #include "modules/emergency/swept_envelope.hpp"
 #include "tests/support/sample.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 namespace {
 
 using Eigen::Vector2d;
@@ -513,7 +513,7 @@ struct FakeJudge final : EnvelopeJudge {
 };
 
 struct EnvelopeGate {
-  MotionGate gate{GateSettings{}};
+  MotionGate gate{MotionGateSettings{}};
   FakeJudge judge;
   std::uint64_t tick = 1000;
   GateDecision step(GateInputs in = {}) {
@@ -595,4 +595,4 @@ TEST(EnvelopeGate, MissingDataHoldsLikeTheSeed) {
 }
 
 }  // namespace
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

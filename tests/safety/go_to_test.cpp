@@ -8,7 +8,7 @@
 #include "modules/executor/go_to.hpp"
 #include "modules/executor/posture_units.hpp"
 
-namespace robuter::motion {
+namespace robuter::executor {
 namespace {
 
 // Runs the controller every 100 ms on an ideal robot (wheel speeds reached at once) until done.
@@ -118,4 +118,4 @@ TEST(PostureUnits, MetresAndTenthsOfMillimetres) {
 }
 
 }  // namespace
-}  // namespace robuter::motion
+}  // namespace robuter::executor

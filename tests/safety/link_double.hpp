@@ -1,28 +1,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Test stand-in for the serial module: the owner of the link's topics, driven by the test.
-// (The real robuter::SerialModule lives in modules/serial and is never linked into these tests.)
+// Test stand-in for the serial module: holds the link's topics' writers (claimed through the
+// tests' accessor, tests/support/test_writer.hpp) and publishes what the link would.
 #pragma once
 
 #include <cstdint>
 
 #include "kernel/kernel.hpp"
 #include "modules/topics.hpp"
+#include "tests/support/test_writer.hpp"
 
 namespace robuter {
 
 // Publishes what the link would publish for each protocol command; optionally triggers the
 // emergency module like a link that wants a same-tick reaction.
-class SerialModule {
+class LinkDouble {
  public:
-  SerialModule(Blackboard& bb, Kernel& k)
+  LinkDouble(Blackboard& bb, Kernel& k)
       : k_(k),
-        motion_(bb.link_motion.writer()),
-        servo_(bb.servo_request.writer()),
-        odometry_(bb.odometry_set.writer()),
-        go_to_(bb.go_to.writer()),
-        us_(bb.us_settings.writer()),
-        status_(bb.link_status.writer()),
-        events_(bb.operator_events.writer()) {}
+        motion_(test_writer(bb.link_motion)),
+        servo_(test_writer(bb.servo_request)),
+        odometry_(test_writer(bb.odometry_set)),
+        go_to_(test_writer(bb.go_to)),
+        us_(test_writer(bb.us_settings)),
+        status_(test_writer(bb.link_status)),
+        events_(test_writer(bb.operator_events)) {}
 
   // An operator's action for the motion arbiter, as the link port records it.
   void act(OperatorAction a) {

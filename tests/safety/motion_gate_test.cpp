@@ -5,12 +5,12 @@
 
 #include "modules/emergency/motion_gate.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 namespace {
 
 // A gate driven tick by tick with a world of ranges.
 struct GateRig {
-  explicit GateRig(GateSettings s = {}) : gate(s) {
+  explicit GateRig(MotionGateSettings s = {}) : gate(s) {
     ranges.mm.fill(2000);
   }
   // One step at the next tick with `in` (tick, ranges and link time stamp filled in).
@@ -153,7 +153,7 @@ TEST(Gate, BumperDetectionOffMakesItClearable) {
 }
 
 TEST(Gate, OldSpeedNeverResumesAfterATripWithoutLatch) {
-  GateSettings s;
+  MotionGateSettings s;
   s.latch = false;
   GateRig g(s);
   g.request(30, 30);
@@ -171,7 +171,7 @@ TEST(Gate, OldSpeedNeverResumesAfterATripWithoutLatch) {
 }
 
 TEST(Gate, WithoutLatchARequestAwayFromTheObstacleIsGranted) {
-  GateSettings s;
+  MotionGateSettings s;
   s.latch = false;
   GateRig g(s);
   g.ranges.mm[1 - 1] = 100;
@@ -180,7 +180,7 @@ TEST(Gate, WithoutLatchARequestAwayFromTheObstacleIsGranted) {
 }
 
 TEST(Gate, CommunicationLossAfterTheLimit) {
-  GateSettings s;
+  MotionGateSettings s;
   s.comm_limit_ticks = 50;
   GateRig g(s);
   g.request(10, 10);
@@ -198,7 +198,7 @@ TEST(Gate, CommunicationLossAfterTheLimit) {
 }
 
 TEST(Gate, CommunicationLossAtRestInhibitsWithoutLatching) {
-  GateSettings s;
+  MotionGateSettings s;
   s.comm_limit_ticks = 50;
   GateRig g(s);
   for (int i = 0; i < 60; ++i) g.step();
@@ -211,7 +211,7 @@ TEST(Gate, CommunicationLossAtRestInhibitsWithoutLatching) {
 }
 
 TEST(Gate, CommunicationDetectionOff) {
-  GateSettings s;
+  MotionGateSettings s;
   s.comm_limit_ticks = 10;
   s.enabled = kDetectBumper | kDetectUltrasonic;
   GateRig g(s);
@@ -269,7 +269,7 @@ TEST(Gate, DriveFaultTrips) {
 }
 
 TEST(Gate, UltrasonicDetectionOffIgnoresObstaclesAndMissingData) {
-  GateSettings s;
+  MotionGateSettings s;
   s.enabled = kDetectBumper | kDetectComm;
   GateRig g(s);
   g.ranges.mm.fill(0);
@@ -278,7 +278,7 @@ TEST(Gate, UltrasonicDetectionOffIgnoresObstaclesAndMissingData) {
 }
 
 TEST(Gate, MotionTimeoutStopsAMotionWithoutFreshRequests) {
-  GateSettings s;
+  MotionGateSettings s;
   s.motion_timeout_ticks = 30;
   GateRig g(s);
   g.request(10, 10);
@@ -291,7 +291,7 @@ TEST(Gate, MotionTimeoutStopsAMotionWithoutFreshRequests) {
 }
 
 TEST(Gate, MotionTimeoutDoesNotApplyAtRest) {
-  GateSettings s;
+  MotionGateSettings s;
   s.motion_timeout_ticks = 30;
   GateRig g(s);
   g.request(0, 0);
@@ -299,7 +299,7 @@ TEST(Gate, MotionTimeoutDoesNotApplyAtRest) {
 }
 
 TEST(Gate, AHoldTooLongForgetsTheRequest) {
-  GateSettings s;
+  MotionGateSettings s;
   s.hold_limit_ticks = 20;
   GateRig g(s);
   g.ranges.mm[1 - 1] = 0;
@@ -348,4 +348,4 @@ TEST(Gate, ReportsTheMaskAndTheTick) {
 }
 
 }  // namespace
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

@@ -4,7 +4,7 @@
 
 #include "modules/emergency/obstacle_check.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 namespace {
 
 TEST(SafetyDistance, TenMillimetresPerCentimetrePerSecondAtLeast220) {
@@ -78,4 +78,4 @@ TEST(WatchVerdict, AStaleReadingCountsAsMissing) {
 }
 
 }  // namespace
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

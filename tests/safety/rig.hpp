@@ -86,7 +86,7 @@ struct Rig {
   UltrasonicModule us;
   EmergencyModule emergency;
   ExecutorModule executor;
-  SerialModule link;
+  LinkDouble link;
   std::array<ProcessRow, 3> rows{};
   bool ok = false;
 };

@@ -6,7 +6,7 @@
 #include "modules/us/ring_scanner.hpp"
 #include "tests/safety/fakes.hpp"
 
-namespace robuter::sonar {
+namespace robuter::us {
 namespace {
 
 constexpr Nanos kTick = 10 * kNanosPerMilli;
@@ -292,4 +292,4 @@ TEST(NodeMasks, SplitsTheTableByNode) {
 }
 
 }  // namespace
-}  // namespace robuter::sonar
+}  // namespace robuter::us

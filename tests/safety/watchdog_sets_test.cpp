@@ -9,7 +9,7 @@
 
 #include "modules/emergency/watchdog_sets.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 namespace {
 
 // seed 002 emerg.c get_main_sensor(), transcribed with its literal tests ((left>0)&&(right>0)).
@@ -177,4 +177,4 @@ TEST(AutoToggle, SelectionFollowsTheSeedsTwoModes) {
 }
 
 }  // namespace
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

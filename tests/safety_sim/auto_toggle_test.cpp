@@ -48,7 +48,7 @@ TEST(AutoToggle, OnlyTheWatchSetFiresWhileMovingNoneWhenStoppedAndUtIsOredWhenOf
   ASSERT_TRUE(fw.ok()) << fw.error();
   SafetyMonitor mon;
   mon.attach(fw);
-  const std::uint32_t all = safety::kAllSensors;
+  const std::uint32_t all = emergency::kAllSensors;
   EXPECT_EQ(fired_sensors(fw), all) << "auto-toggle off, stopped: the default table (all 24)";
 
   // Auto-toggle on, stopped: nothing fires, every range reads 0.
@@ -64,8 +64,8 @@ TEST(AutoToggle, OnlyTheWatchSetFiresWhileMovingNoneWhenStoppedAndUtIsOredWhenOf
   ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 20; }, 150)) << "granted once the set has read";
   f = fired_sensors(fw);
   std::printf("Uu1, AM 20 20:        selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
-  EXPECT_EQ(selection(fw), safety::watch_mask(1));
-  EXPECT_EQ(f, safety::watch_mask(1)) << "fired " << list(f);
+  EXPECT_EQ(selection(fw), emergency::watch_mask(1));
+  EXPECT_EQ(f, emergency::watch_mask(1)) << "fired " << list(f);
 
   // Rotating: the special set of sensor 7.
   fw.sim().robot().place(sim::Pose{3.0, 3.0, 0.0});
@@ -73,24 +73,24 @@ TEST(AutoToggle, OnlyTheWatchSetFiresWhileMovingNoneWhenStoppedAndUtIsOredWhenOf
   ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 10; }, 150));
   f = fired_sensors(fw);
   std::printf("Uu1, AM 10 -10:       selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
-  EXPECT_EQ(selection(fw), safety::watch_mask(7));
-  EXPECT_EQ(f, safety::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(selection(fw), emergency::watch_mask(7));
+  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << list(f);
 
   // UT while auto-toggle is on: stored, answered ack, not applied.
-  const std::uint32_t rear = safety::sensor_bit(13) | safety::sensor_bit(12);
+  const std::uint32_t rear = emergency::sensor_bit(13) | emergency::sensor_bit(12);
   ASSERT_EQ(fw.ask(ut(rear)), "ack");
   EXPECT_EQ(fw.bb().us_settings.reader().peek().user_table, rear) << "the table is stored";
   f = fired_sensors(fw);
   std::printf("Uu1, UT {12,13}:      selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
-  EXPECT_EQ(selection(fw), safety::watch_mask(7)) << "not applied while auto-toggle is on";
-  EXPECT_EQ(f, safety::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(selection(fw), emergency::watch_mask(7)) << "not applied while auto-toggle is on";
+  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << list(f);
 
   // Auto-toggle off: the stored table OR the watch set.
   ASSERT_EQ(fw.ask("Uu0"), "ack");
   f = fired_sensors(fw);
   std::printf("Uu0, AM 10 -10:       selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
-  EXPECT_EQ(selection(fw), rear | safety::watch_mask(7));
-  EXPECT_EQ(f, rear | safety::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(selection(fw), rear | emergency::watch_mask(7));
+  EXPECT_EQ(f, rear | emergency::watch_mask(7)) << "fired " << list(f);
 
   // Stopped with auto-toggle off: the user table alone.
   ASSERT_EQ(fw.ask("AM 0 0"), "ack");

@@ -41,11 +41,11 @@ struct StopModel {
 // put evidence up to ~20 % nearer than the wall), m; 2 m when none.
 double evidence_ahead(const EmergencyModule& em, const Config& cfg) {
   const auto& env = em.envelope();
-  const safety::Pose2& p = env.pose();
+  const emergency::Pose2& p = env.pose();
   const double front = cfg.robot.axle_to_front_mm / 1000.0, half = cfg.robot.width_mm / 2000.0 + cfg.emergency.margin_mm / 1000.0;
   for (double x = 0.0; x < 2.0; x += 0.0125)
     for (double y = -half; y <= half + 1e-9; y += 0.0125)
-      if (env.grid().state(safety::to_world(p, {front + x, y}), 0, ~0ull) == safety::CellState::obstacle) return x;
+      if (env.grid().state(emergency::to_world(p, {front + x, y}), 0, ~0ull) == emergency::CellState::obstacle) return x;
   return 2.0;
 }
 
@@ -104,7 +104,7 @@ Approach approach(int speed, int ud, bool uu, bool check_cap, hal::SimOptions si
     out.min_cap_ratio = std::min(out.min_cap_ratio, c.left / expected);
     ++out.cap_samples;
     if (std::getenv("ROBUTER_ENVELOPE_TRACE") && c.left / expected < 0.9) {
-      const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(speed, speed, true);
+      const auto v = const_cast<emergency::RingEnvelope&>(em->envelope()).judge(speed, speed, true);
       std::printf("  tick %llu x %.3f granted %d expected %.1f | k %.2f missing %d at (%.3f, %.3f)\n",
                   static_cast<unsigned long long>(fw.kernel().tick()), robot.pose().x - x0, c.left, expected, v.fraction,
                   v.missing, v.where.x(), v.where.y());
@@ -252,7 +252,7 @@ TEST(EnvelopeCorridor, ThirtyCmPerSecondDownA1_2mCorridorKeepsItsSpeed) {
         if (std::getenv("ROBUTER_ENVELOPE_TRACE") && fw.kernel().tick() % 20 == 0) {
           const EmergencyState& s = fw.bb().emergency.reader().peek();
           auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*fw.kernel().find("emergency")).process);
-          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(30, 30, true);
+          const auto v = const_cast<emergency::RingEnvelope&>(em->envelope()).judge(30, 30, true);
           std::printf("tick %llu x %.3f v %.1f granted %u%% held %d prot %d stops %u | k %.2f at (%.3f, %.3f)\n",
                       static_cast<unsigned long long>(fw.kernel().tick()), robot.pose().x,
                       50.0 * (robot.wheel_speeds().left + robot.wheel_speeds().right), s.granted_pct, s.held,

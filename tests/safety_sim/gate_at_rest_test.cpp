@@ -4,12 +4,12 @@
 
 #include "modules/emergency/motion_gate.hpp"
 
-namespace robuter::safety {
+namespace robuter::emergency {
 namespace {
 
 // A gate with fresh, clear ranges on every sensor and a clock that advances one tick per step.
 struct Gate {
-  MotionGate gate{GateSettings{}};
+  MotionGate gate{MotionGateSettings{}};
   UltrasonicRanges ranges{};
   std::uint64_t tick = 1000;
 
@@ -59,7 +59,7 @@ TEST(GateAtRest, AnObstacleTripIsNotClearableWhileTheRobotStillBrakes) {
 }
 
 TEST(GateAtRest, WithoutLatchARequestWhileBrakingIsATripNotAGrant) {
-  GateSettings s;
+  MotionGateSettings s;
   s.latch = false;
   Gate g;
   g.gate = MotionGate(s);
@@ -109,4 +109,4 @@ TEST(GateAtRest, AStopByteWhileMovingCountsOneTripWhileBraking) {
 }
 
 }  // namespace
-}  // namespace robuter::safety
+}  // namespace robuter::emergency

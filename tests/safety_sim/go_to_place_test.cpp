@@ -145,7 +145,7 @@ PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& 
     if (trace && i % (std::getenv("ROBUTER_XQ_TRACE")[0] == '2' ? 10 : 100) == 0) {  // ROBUTER_XQ_TRACE=1: truth, odometry, the localisation's estimate
       const auto& t = fw.sim().robot().pose();
       const auto& o = fw.sim().robot().odometry();
-      const motion::PostureUnits m =
+      const executor::PostureUnits m =
           localise::map_posture(fw.bb().posture.reader().peek(), fw.bb().localisation.reader().peek());
       std::printf("t %.1f truth %.3f %.3f %.1f odometry %.3f %.3f %.1f map %.3f %.3f %.1f %s\n", fw.seconds(), t.x, t.y,
                   t.theta * 57.29578, o.x, o.y, o.theta * 57.29578, m.x * 1e-4, m.y * 1e-4, m.theta * 1e-2,
@@ -167,7 +167,7 @@ PlaceRun go_with(std::size_t from, std::size_t to, int max_ticks, const Config& 
               for (double side = -0.6; side <= 0.6; side += 0.025) {
                 const Eigen::Vector2d q(op.x + ahead * std::cos(op.theta) - side * std::sin(op.theta),
                                         op.y + ahead * std::sin(op.theta) + side * std::cos(op.theta));
-                if (grid.state(q, fw.kernel().tick(), 1000000) == safety::CellState::obstacle)
+                if (grid.state(q, fw.kernel().tick(), 1000000) == emergency::CellState::obstacle)
                   std::printf("  evidence at (%.3f, %.3f): ahead %.3f side %.3f\n", q.x(), q.y(), ahead, side);
               }
           }

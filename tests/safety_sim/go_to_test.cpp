@@ -17,7 +17,7 @@ namespace robuter::test::safety_sim {
 namespace {
 
 constexpr int kTargets = 20;
-const motion::GoToSettings kTolerance{};  // the documented tolerances (docs/SAFETY.md §6): 2 cm, 2°
+const executor::GoToSettings kTolerance{};  // the documented tolerances (docs/SAFETY.md §6): 2 cm, 2°
 
 // An angle difference in 0.01° brought into (−18000, 18000].
 int angle_diff(int a, int b) {
@@ -60,7 +60,7 @@ std::vector<Arrival> run_targets(bool odometry_noise) {
     EXPECT_EQ(fw.ask("AW " + std::to_string(tx) + " " + std::to_string(ty) + " " + std::to_string(tt)), "ack");
     EXPECT_TRUE(fw.run_until([&] { return exec->go_to().active(); }, 20)) << "the go-to never started";
     EXPECT_TRUE(fw.run_until([&] { return !exec->go_to().active(); }, 8000)) << "never arrived";
-    EXPECT_EQ(exec->go_to().phase(), motion::GoToPhase::done) << "ended without arriving";
+    EXPECT_EQ(exec->go_to().phase(), executor::GoToPhase::done) << "ended without arriving";
     const auto& robot = fw.sim().robot();
     fw.run_until([&] { return robot.wheel_speeds().left == 0.0 && robot.wheel_speeds().right == 0.0; }, 200);
     fw.run_ticks(10);

@@ -37,7 +37,7 @@ struct Seen {
 
 // The evidence cells within `reach` of `origin` (a superset of those one cone may clear: which it
 // did is what the grid says after it, not a second copy of its geometry).
-void evidence_near(const safety::EvidenceGrid& g, std::uint64_t tick, const Eigen::Vector2d& origin, double reach,
+void evidence_near(const emergency::EvidenceGrid& g, std::uint64_t tick, const Eigen::Vector2d& origin, double reach,
                    std::vector<Seen>& out) {
   out.clear();
   const double cell = g.settings().cell;
@@ -46,19 +46,19 @@ void evidence_near(const safety::EvidenceGrid& g, std::uint64_t tick, const Eige
   for (int gy = y0; gy <= y1; ++gy)
     for (int gx = x0; gx <= x1; ++gx) {
       const Eigen::Vector2d p((gx + 0.5) * cell, (gy + 0.5) * cell);
-      if (g.state(p, tick, 1) == safety::CellState::obstacle) out.push_back({p, g.evidence_tick(p)});
+      if (g.state(p, tick, 1) == emergency::CellState::obstacle) out.push_back({p, g.evidence_tick(p)});
     }
 }
 
 // Evidence cells off every surface within kNear of `robot`.
-long phantom_near(const safety::EvidenceGrid& g, const sim::World& world, std::uint64_t tick, const Eigen::Vector2d& robot) {
+long phantom_near(const emergency::EvidenceGrid& g, const sim::World& world, std::uint64_t tick, const Eigen::Vector2d& robot) {
   constexpr double kNear = 1.5;  // m
   const double cell = g.settings().cell;
   long n = 0;
   for (int gy = static_cast<int>(std::floor((robot.y() - kNear) / cell)); gy <= std::floor((robot.y() + kNear) / cell); ++gy)
     for (int gx = static_cast<int>(std::floor((robot.x() - kNear) / cell)); gx <= std::floor((robot.x() + kNear) / cell); ++gx) {
       const Eigen::Vector2d p((gx + 0.5) * cell, (gy + 0.5) * cell);
-      if ((p - robot).norm() > kNear || g.state(p, tick, 1) != safety::CellState::obstacle) continue;
+      if ((p - robot).norm() > kNear || g.state(p, tick, 1) != emergency::CellState::obstacle) continue;
       if (world.clearance(p) > kOnSurface) ++n;
     }
   return n;
@@ -67,7 +67,7 @@ long phantom_near(const safety::EvidenceGrid& g, const sim::World& world, std::u
 }  // namespace
 
 MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset preset, double seconds,
-                                 std::uint64_t seed, const safety::GridSettings& settings, std::uint64_t fresh) {
+                                 std::uint64_t seed, const emergency::GridSettings& settings, std::uint64_t fresh) {
   MultipathCensus out;
   auto loaded = sim::load_world(world_file);
   if (!loaded.ok()) return out;
@@ -80,7 +80,7 @@ MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset
   sim::SonarModel ring(world, p), ideal(world, ideal_p);
   const sim::RingLayout layout = sim::default_ring_layout();
   sim::Rng rng(seed);
-  safety::EvidenceGrid grid(settings);
+  emergency::EvidenceGrid grid(settings);
   const sim::Box body = sim::RobotGeometry{}.body();  // the robot model's body, robot frame
   std::array<double, sim::kRingSensors> ranges{};
   std::vector<Seen> before;
@@ -111,7 +111,7 @@ MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset
         }
         grid.certify_cone(tick, origin, direction, range, !echo, echo);
         for (const auto& c : before) {
-          if (grid.state(c.at, tick, 1) == safety::CellState::obstacle) continue;
+          if (grid.state(c.at, tick, 1) == emergency::CellState::obstacle) continue;
           if (world.clearance(c.at) <= kOnSurface) {
             ++out.surface_cleared;
             if (tick <= c.tick + fresh) ++out.fresh_cleared;

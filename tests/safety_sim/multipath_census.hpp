@@ -33,6 +33,6 @@ struct MultipathCensus {
 // those it did clear are counted, on a surface of the world or off every surface, fresh (marked
 // within `fresh` ticks) or not.
 MultipathCensus multipath_census(const std::string& world_file, sim::SonarPreset preset, double seconds,
-                                 std::uint64_t seed, const safety::GridSettings& settings, std::uint64_t fresh);
+                                 std::uint64_t seed, const emergency::GridSettings& settings, std::uint64_t fresh);
 
 }  // namespace robuter::test

@@ -19,8 +19,8 @@ constexpr std::uint64_t kFresh = 300;  // 3 s of 10 ms ticks: free_age_ms, singl
 // The firmware's grid (the robot model's cone and blanking, "Unconfirmed" and the line of sight's
 // protection at 3 s of 10 ms ticks),
 // without known structure: every arc is marked whole.
-safety::GridSettings firmware_grid() {
-  safety::GridSettings g = safety::grid_settings(EmergencyConfig{});
+emergency::GridSettings firmware_grid() {
+  emergency::GridSettings g = emergency::grid_settings(EmergencyConfig{});
   g.single_age = kFresh;
   g.sight_age = kFresh;
   return g;
@@ -40,7 +40,7 @@ TEST(Multipath, BouncedEchoesClearATenthOfTheFreshEvidenceOfRealSurfacesTheyDidB
   for (const char* name : {"default.toml", "building_floor.toml"}) {
     if (test::kSanitized && env == nullptr && std::string(name) != "default.toml") continue;  // the lab only
     const std::string world = std::string(ROBUTER_SHIPPED_WORLDS) + "/" + name;
-    safety::GridSettings any_line = firmware_grid();
+    emergency::GridSettings any_line = firmware_grid();
     any_line.sight_age = 1;  // every reading's evidence is a batch old: any farther echo clears it
     const MultipathCensus before = multipath_census(world, sim::SonarPreset::realistic, seconds, 1, any_line, kFresh);
     const MultipathCensus now = multipath_census(world, sim::SonarPreset::realistic, seconds, 1, firmware_grid(), kFresh);

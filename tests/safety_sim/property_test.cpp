@@ -220,7 +220,7 @@ struct ArbiterMonitor {
     }
     const MotionCommand& c = fw.bb().motion_command.reader().peek();
     if (paused || c.stop || (c.left == 0 && c.right == 0) || tick <= since + 1) return;
-    const bool automatic = safety::automatic(c.source);
+    const bool automatic = emergency::automatic(c.source);
     if (automatic) ++automatic_ticks;
     if (automatic && !automatic_may) {
       ++automatic_after_operator;
@@ -311,7 +311,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
       std::string env;
       if (const auto row = fw.kernel().find("emergency")) {
         if (auto* em = dynamic_cast<EmergencyModule*>(fw.kernel().row(*row).process); em && (w.left || w.right)) {
-          const auto v = const_cast<safety::RingEnvelope&>(em->envelope()).judge(w.left, w.right, true);
+          const auto v = const_cast<emergency::RingEnvelope&>(em->envelope()).judge(w.left, w.right, true);
           env = fmt::format(" | env k {:.2f} miss {} obst {} at ({:.0f}, {:.0f})", v.fraction, v.missing, v.obstacle,
                             v.where.x() * 1000.0, v.where.y() * 1000.0);
         }
@@ -464,7 +464,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
     ++tot.contact_sequences;
     tot.contact_seeds += fmt::format("    seed {}: last motion AM {} {} (main sensor {}), {}, body point ({:.0f}, {:.0f}) mm\n",
                                      seed, mon.contact_motion.left, mon.contact_motion.right,
-                                     safety::main_sensor(mon.contact_motion.left, mon.contact_motion.right, 600),
+                                     emergency::main_sensor(mon.contact_motion.left, mon.contact_motion.right, 600),
                                      mon.contact_while_stopping ? "while stopping" : "while moving",
                                      mon.contact_point.x() * 1000.0, mon.contact_point.y() * 1000.0);
   }

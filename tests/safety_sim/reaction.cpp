@@ -68,7 +68,7 @@ ReactionTrial random_trial(std::uint64_t seed, bool teleport) {
   t.box_size = rng.uniform(0.4, 1.0);
   t.box_angle = rng.uniform(-15.0, 15.0);
   t.lateral = rng.uniform(-0.25, 0.25);
-  const double safety = safety::safety_distance_mm(t.left, t.right, 220, 10) / 1000.0;
+  const double safety = emergency::safety_distance_mm(t.left, t.right, 220, 10) / 1000.0;
   t.distance = teleport ? rng.uniform(0.2, std::max(0.2, safety - 0.03)) : rng.uniform(safety + 0.2, 3.0);
   return t;
 }
@@ -126,7 +126,7 @@ ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
     const Wheels now = commanded(fw);
     if (robot.bumper()) out.contact = true;
     if (armed && !last.zero() && out.read_tick == 0) {
-      const std::uint32_t safety_mm = safety::safety_distance_mm(last.left, last.right, 220, 10);
+      const std::uint32_t safety_mm = emergency::safety_distance_mm(last.left, last.right, 220, 10);
       const auto& r = fw.bb().ranges.reader().peek();
       if (out.appear_tick == 0 &&
           body_clearance_near(fw.sim().world(), geom, robot.pose(), 1.5, scratch) * 1000.0 <= safety_mm)
@@ -141,7 +141,7 @@ ReactionResult run_trial(const ReactionTrial& t, const Config& cfg) {
           if (b > 0.0 && std::abs(b * 1000.0 - r.mm[i]) <= 60.0) out.seen_tick = tick;
         }
       }
-      const auto watch = safety::watch_sensors(safety::main_sensor(last.left, last.right, 600));
+      const auto watch = emergency::watch_sensors(emergency::main_sensor(last.left, last.right, 600));
       for (int s : watch) {
         if (out.visible_tick != 0) break;
         const double m = ideal.measure(robot.pose(), fw.sim().layout()[static_cast<std::size_t>(s - 1)]);

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The CAN backends' parameters ([hardware] drive and sonar, [can]).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/param.hpp"
+
+namespace robuter {
+
+// Which hardware backends robuterd uses without --sim (docs/CAN.md).
+struct HardwareConfig {
+  std::string drive = "none";                // "none" or "can": the drives on CAN (CiA 402)
+  std::string sonar = "none";                // "none" or "can": the ultrasonic nodes on CAN
+};
+
+// [hardware]: each key, its unit, range and doc (the default is the field's initialiser).
+inline constexpr param::Param<HardwareConfig> kHardwareParams[] = {
+    {"drive", &HardwareConfig::drive, "", 0, 0, "none|can",
+     "\"none\" or \"can\": the drives on CAN (CiA 402)"},
+    {"sonar", &HardwareConfig::sonar, "", 0, 0, "none|can",
+     "\"none\" or \"can\": the ultrasonic nodes on CAN"},
+};
+
+// The CAN bus, its CiA 402 drives and ultrasonic nodes (docs/CAN.md).
+struct CanConfig {
+  std::string interface = "can0";            // SocketCAN interface name
+  std::uint32_t left_node = 1;               // CANopen node id of the left wheel's drive, 1..127
+  std::uint32_t right_node = 2;              // node id of the right wheel's drive
+  std::uint32_t sonar_node_base = 16;        // node id of ring node 0; node n is base + n (7: pan-tilt channel)
+  std::uint32_t counts_per_rev = 16384;      // encoder increments per wheel revolution (gearbox included)
+  std::uint32_t wheel_diameter_mm = 200;     // drive wheel diameter, mm
+  bool left_invert = false;                  // positive velocity turns the left wheel backwards
+  bool right_invert = true;                  // … the right wheel (mounted mirrored)
+  std::uint32_t heartbeat_ms = 100;          // heartbeat producer time written to the drives, ms
+  std::uint32_t heartbeat_timeout_ms = 350;  // a node silent this long is lost, ms
+  std::uint32_t sdo_timeout_ms = 100;        // an unanswered SDO write is repeated after this, ms
+  std::uint32_t fault_reset_ms = 1000;       // a drive in fault gets a fault reset this often, ms
+  std::uint32_t host_node = 127;             // node id of robuterd's own heartbeat (0x700 + id), 1..127
+  std::uint32_t host_heartbeat_ms = 50;      // robuterd's heartbeat period (sent only while every row runs on time), ms
+  std::uint32_t drive_watchdog_ms = 300;     // consumer heartbeat time written to the drives (0x1016:01), ms; 0 = off
+};
+
+// [can]: each key, its unit, range and doc (the default is the field's initialiser).
+inline constexpr param::Param<CanConfig> kCanParams[] = {
+    {"interface", &CanConfig::interface, "", 0, 0, "",
+     "SocketCAN interface name"},
+    {"left_node", &CanConfig::left_node, "", 1, 127, "",
+     "CANopen node id of the left wheel's drive, 1..127"},
+    {"right_node", &CanConfig::right_node, "", 1, 127, "",
+     "node id of the right wheel's drive"},
+    {"sonar_node_base", &CanConfig::sonar_node_base, "", 1, 120, "",
+     "node id of ring node 0; node n is base + n (7: pan-tilt channel)"},
+    {"counts_per_rev", &CanConfig::counts_per_rev, "increments", 1, 100'000'000, "",
+     "encoder increments per wheel revolution (gearbox included)"},
+    {"wheel_diameter_mm", &CanConfig::wheel_diameter_mm, "mm", 10, 5000, "",
+     "drive wheel diameter, mm"},
+    {"left_invert", &CanConfig::left_invert, "bool", 0, 0, "",
+     "positive velocity turns the left wheel backwards"},
+    {"right_invert", &CanConfig::right_invert, "bool", 0, 0, "",
+     "… the right wheel (mounted mirrored)"},
+    {"heartbeat_ms", &CanConfig::heartbeat_ms, "ms", 10, 10'000, "",
+     "heartbeat producer time written to the drives, ms"},
+    {"heartbeat_timeout_ms", &CanConfig::heartbeat_timeout_ms, "ms", 20, 60'000, "",
+     "a node silent this long is lost, ms"},
+    {"sdo_timeout_ms", &CanConfig::sdo_timeout_ms, "ms", 10, 10'000, "",
+     "an unanswered SDO write is repeated after this, ms"},
+    {"fault_reset_ms", &CanConfig::fault_reset_ms, "ms", 10, 60'000, "",
+     "a drive in fault gets a fault reset this often, ms"},
+    {"host_node", &CanConfig::host_node, "", 1, 127, "",
+     "node id of robuterd's own heartbeat (0x700 + id), 1..127"},
+    {"host_heartbeat_ms", &CanConfig::host_heartbeat_ms, "ms", 10, 10'000, "",
+     "robuterd's heartbeat period (sent only while every row runs on time), ms"},
+    {"drive_watchdog_ms", &CanConfig::drive_watchdog_ms, "ms", 0, 60'000, "",
+     "consumer heartbeat time written to the drives (0x1016:01), ms; 0 = off"},
+};
+
+}  // namespace robuter

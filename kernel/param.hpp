@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A module's parameter table (ArduPilot's AP_Param var_info): each module declares the keys of its
+// configuration section — field, unit, range, one-line doc; the default is the field's initialiser —
+// and the kernel's configuration reader only binds and checks them (kernel/config.cpp).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace robuter::param {
+
+// The largest value of a 32-bit unsigned key.
+inline constexpr long long kU32 = std::numeric_limits<std::uint32_t>::max();
+
+// The field a key sets, by its type: an integer (bounded by lo..hi), a boolean, a string (one of
+// `choices` when given), a list of strings, a list of integers (each within lo..hi).
+template <typename S>
+using Field = std::variant<std::uint32_t S::*, std::int32_t S::*, std::uint64_t S::*, bool S::*, std::string S::*,
+                           std::vector<std::string> S::*, std::vector<std::uint32_t> S::*>;
+
+// One key of a section.
+template <typename S>
+struct Param {
+  std::string_view key;      // key within its section, e.g. "timeout_ms" of [sonar]
+  Field<S> field;            // the struct field it sets (its initialiser is the default)
+  std::string_view unit;     // unit as docs/CONFIG.md writes it ("mm", "cm/s", "bool"; "" none)
+  long long lo = 0;          // integers: smallest value accepted
+  long long hi = 0;          // integers: largest value accepted
+  std::string_view choices;  // strings: the words accepted, '|'-separated ("" = any text)
+  std::string_view doc;      // what it does, one line
+};
+
+}  // namespace robuter::param

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The serial module's parameters: what operators may do ([permissions]) and the links ([links], [links.serial]).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/param.hpp"
+
+namespace robuter {
+
+// What operators may do over the link.
+struct PermissionsConfig {
+  bool pass_through = false;                 // AY accepted at all
+  std::vector<std::string> pass_through_allow;  // AY command prefixes allowed when enabled
+  bool shutdown = true;                      // AX accepted
+};
+
+// [permissions]: each key, its unit, range and doc (the default is the field's initialiser).
+inline constexpr param::Param<PermissionsConfig> kPermissionsParams[] = {
+    {"pass_through", &PermissionsConfig::pass_through, "bool", 0, 0, "",
+     "AY accepted at all"},
+    {"pass_through_allow", &PermissionsConfig::pass_through_allow, "strings", 0, 0, "",
+     "AY command prefixes allowed when enabled"},
+    {"shutdown", &PermissionsConfig::shutdown, "bool", 0, 0, "",
+     "AX accepted"},
+};
+
+// A serial command link ([links.serial]; docs/HARDWARE.md).
+struct SerialLinkConfig {
+  std::string device;                        // its device, empty = none (robuterd --serial overrides)
+  std::uint32_t baud = 9600;                 // line rate, bit/s (robuterd --baud overrides)
+  std::string parity = "none";               // none, even, odd
+  std::uint32_t stop_bits = 1;               // 1 or 2
+  std::string flow_control = "none";         // none, hardware (RTS/CTS), software (XON/XOFF)
+  std::uint32_t retry_ms = 500;              // a lost device is looked for this often, ms
+};
+
+// [links.serial]: each key, its unit, range and doc (the default is the field's initialiser).
+inline constexpr param::Param<SerialLinkConfig> kSerialLinkParams[] = {
+    {"device", &SerialLinkConfig::device, "path", 0, 0, "",
+     "its device, empty = none (robuterd --serial overrides)"},
+    {"baud", &SerialLinkConfig::baud, "bit/s", 1200, 921'600, "",
+     "line rate, bit/s (robuterd --baud overrides)"},
+    {"parity", &SerialLinkConfig::parity, "", 0, 0, "none|even|odd",
+     "none, even, odd"},
+    {"stop_bits", &SerialLinkConfig::stop_bits, "", 1, 2, "",
+     "1 or 2"},
+    {"flow_control", &SerialLinkConfig::flow_control, "", 0, 0, "none|hardware|software",
+     "none, hardware (RTS/CTS), software (XON/XOFF)"},
+    {"retry_ms", &SerialLinkConfig::retry_ms, "ms", 10, 60'000, "",
+     "a lost device is looked for this often, ms"},
+};
+
+// Command links configured in the file ([links]).
+struct LinksConfig {
+  SerialLinkConfig serial;                   // [links.serial]
+  bool stop_when_clients_leave = false;      // stop the robot when a pty's last client closes it (ARCOS does)
+};
+
+// [links]: each key, its unit, range and doc (the default is the field's initialiser).
+inline constexpr param::Param<LinksConfig> kLinksParams[] = {
+    {"stop_when_clients_leave", &LinksConfig::stop_when_clients_leave, "bool", 0, 0, "",
+     "stop the robot when a pty's last client closes it (ARCOS does)"},
+};
+
+}  // namespace robuter
