@@ -73,23 +73,23 @@ struct Config {
 // docs/CONFIG.md and config/robuterd.toml in step with the tables walk it too.
 template <typename C, typename F>
 void for_each_param_section(C& c, F&& f) {
-  f(std::string_view("kernel"), std::span(kKernelParams), c.kernel);
-  f(std::string_view("robot"), std::span(kRobotParams), c.robot);
-  f(std::string_view("sonar"), std::span(kSonarParams), c.sonar);
-  f(std::string_view("emergency"), std::span(kEmergencyParams), c.emergency);
-  f(std::string_view("permissions"), std::span(kPermissionsParams), c.permissions);
-  f(std::string_view("planner"), std::span(kPlannerParams), c.planner);
-  f(std::string_view("places"), std::span(kPlacesParams), c.places);
-  f(std::string_view("localise"), std::span(kLocaliseParams), c.localise);
-  f(std::string_view("ptu"), std::span(kPanTiltParams), c.ptu);
-  f(std::string_view("gate"), std::span(kGateParams), c.gate);
-  f(std::string_view("doors"), std::span(kDoorsParams), c.doors);
-  f(std::string_view("links"), std::span(kLinksParams), c.links);
-  f(std::string_view("links.serial"), std::span(kSerialLinkParams), c.links.serial);
-  f(std::string_view("hardware.gpio"), std::span(kGpioParams), c.gpio);
-  f(std::string_view("demo"), std::span(kDemoParams), c.demo);
-  f(std::string_view("hardware"), std::span(kHardwareParams), c.hardware);
-  f(std::string_view("can"), std::span(kCanParams), c.can);
+  f(std::string_view("kernel"), kernel_params(), c.kernel);
+  f(std::string_view("robot"), robot_params(), c.robot);
+  f(std::string_view("sonar"), sonar_params(), c.sonar);
+  f(std::string_view("emergency"), emergency_params(), c.emergency);
+  f(std::string_view("permissions"), permissions_params(), c.permissions);
+  f(std::string_view("planner"), planner_params(), c.planner);
+  f(std::string_view("places"), places_params(), c.places);
+  f(std::string_view("localise"), localise_params(), c.localise);
+  f(std::string_view("ptu"), pan_tilt_params(), c.ptu);
+  f(std::string_view("gate"), gate_params(), c.gate);
+  f(std::string_view("doors"), doors_params(), c.doors);
+  f(std::string_view("links"), links_params(), c.links);
+  f(std::string_view("links.serial"), serial_link_params(), c.links.serial);
+  f(std::string_view("hardware.gpio"), gpio_params(), c.gpio);
+  f(std::string_view("demo"), demo_params(), c.demo);
+  f(std::string_view("hardware"), hardware_params(), c.hardware);
+  f(std::string_view("can"), can_params(), c.can);
 }
 
 // A configuration problem: where and what.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,17 +21,6 @@ struct KernelConfig {
 };
 
 // [kernel]: each key, its unit, range and doc (the default is the field's initialiser).
-inline constexpr param::Param<KernelConfig> kKernelParams[] = {
-    {"tick_us", &KernelConfig::tick_us, "µs", 100, 1'000'000, "",
-     "tick length, µs (seed: 10 ms)"},
-    {"realtime", &KernelConfig::realtime, "bool", 0, 0, "",
-     "ask for SCHED_FIFO at start-up"},
-    {"rt_priority", &KernelConfig::rt_priority, "", 1, 99, "",
-     "SCHED_FIFO priority, 1..99"},
-    {"lock_memory", &KernelConfig::lock_memory, "bool", 0, 0, "",
-     "mlockall(MCL_CURRENT | MCL_FUTURE) at start-up"},
-    {"log_level", &KernelConfig::log_level, "", 0, 0, "debug|info|warn|error|off",
-     "debug, info, warn, error, off"},
-};
+std::span<const param::Param<KernelConfig>> kernel_params();
 
 }  // namespace robuter

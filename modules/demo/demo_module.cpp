@@ -36,7 +36,7 @@ DemoModule::DemoModule(Blackboard& bb, const DemoConfig& cfg, const robot::Robot
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
       emergency_state_(bb.emergency.reader()),
-      motion_out_(bb.demo_motion.writer()),
+      requests_(bb.demo_motion.writer()),
       status_out_(bb.demo_status.writer()) {}
 
 // The run of [demo] enabled is handed out by the emergency module's init, before this one: the
@@ -47,7 +47,7 @@ bool DemoModule::init(Kernel& k) {
   if (claim_.granted()) {
     course_.start();
     running_ = true;
-    sent_stop_ = false;
+    requests_.begin();
     s.state = ModeState::running;
     log::info("demo: course started");
   }
@@ -60,7 +60,7 @@ void DemoModule::run(Kernel& k) {
   if (claim_.granted()) {
     course_.start();
     running_ = true;
-    sent_stop_ = false;
+    requests_.begin();
     log::info("demo: course started");
   } else if (running_) {
     const ModeReason why = claim_.ended();
@@ -84,16 +84,7 @@ void DemoModule::run(Kernel& k) {
   in.ranges = &ranges_.peek();
   in.emergency = e.latched || e.cause != EmergencyCause::none;
   const demo::CourseOutput o = course_.step(in);
-  if (o.request || !sent_stop_) {
-    motion_out_.modify([&](MotionRequest& r) {
-      r.left = o.request ? o.left : 0;
-      r.right = o.request ? o.right : 0;
-      ++r.seq;
-      r.tick = in.tick;
-    });
-    if (!o.request) sent_stop_ = true;
-    if (emergency_) k.trigger(emergency_);
-  }
+  requests_.send(k, o.request, o.left, o.right);
   ModeState st = ModeState::running;
   ModeReason why = ModeReason::none;
   if (o.phase == demo::Phase::done) {

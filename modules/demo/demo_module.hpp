@@ -5,6 +5,7 @@
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/demo/course.hpp"
+#include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
 
@@ -20,7 +21,7 @@ class DemoModule final : public Process {
   // Its own section ([demo]) and the robot model (the wheel base), nothing else.
   DemoModule(Blackboard& bb, const DemoConfig& cfg, const robot::RobotModel& robot);
   // The emergency module, triggered on every request so it is judged in the same tick.
-  void set_emergency(Process* p) { emergency_ = p; }
+  void set_emergency(Process* p) { requests_.set_emergency(p); }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -35,10 +36,8 @@ class DemoModule final : public Process {
   Reader<Posture> posture_;
   Reader<UltrasonicRanges> ranges_;
   Reader<EmergencyState> emergency_state_;
-  Writer<MotionRequest> motion_out_;
+  ModeRequests requests_;   // its motion requests, and the final zero one
   Writer<DemoStatus> status_out_;
-  Process* emergency_ = nullptr;
-  bool sent_stop_ = true;   // the final zero request went out
   // Publishes the status for the course's output `o` (state `st`, reason `why`).
   void report(const demo::CourseOutput& o, ModeState st, ModeReason why, std::uint64_t tick);
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,39 +37,6 @@ struct DemoConfig {
 };
 
 // [demo]: each key, its unit, range and doc (the default is the field's initialiser).
-inline constexpr param::Param<DemoConfig> kDemoParams[] = {
-    {"enabled", &DemoConfig::enabled, "bool", 0, 0, "",
-     "drive the course from start-up"},
-    {"distx_mm", &DemoConfig::distx_mm, "mm", 100, 10'000, "",
-     "front sensor to the front box when calibrated (DISTX 12000 × 0.1 mm)"},
-    {"disty_mm", &DemoConfig::disty_mm, "mm", 100, 10'000, "",
-     "side sensors to the calibration boxes on the lane (DISTY)"},
-    {"raio_mm", &DemoConfig::raio_mm, "mm", 400, 10'000, "",
-     "radius of the half-circles (RAIO)"},
-    {"straight_mm", &DemoConfig::straight_mm, "mm", 0, 100'000, "",
-     "the straight leg after the recalibration point"},
-    {"lane_mm", &DemoConfig::lane_mm, "mm", 0, 100'000, "",
-     "the lane driven back before calibrating"},
-    {"speed_cm_s", &DemoConfig::speed_cm_s, "cm/s", 1, 100, "",
-     "cruising wheel speed"},
-    {"slow_cm_s", &DemoConfig::slow_cm_s, "cm/s", 1, 100, "",
-     "approach and calibration circle speed"},
-    {"align_cm_s", &DemoConfig::align_cm_s, "cm/s", 1, 100, "",
-     "the turning wheel while aligning"},
-    {"sensor_a", &DemoConfig::sensor_a, "sensor", 1, robot::kRingSensors, "",
-     "side sensors that must read alike (seed text: 17 and 19)"},
-    {"sensor_b", &DemoConfig::sensor_b, "sensor", 1, robot::kRingSensors, "",
-     "the other one (seed text: 19)"},
-    {"front_sensor", &DemoConfig::front_sensor, "sensor", 1, robot::kRingSensors, "",
-     "the sensor that measures DISTX"},
-    {"align_tolerance_mm", &DemoConfig::align_tolerance_mm, "mm", 1, 1000, "",
-     "side readings this close count as alike"},
-    {"calibration_readings", &DemoConfig::calibration_readings, "readings", 1, demo::kMaxCalibrationReadings, "",
-     "each calibration figure is the median of this many fresh readings (1: the seed's one)"},
-    {"laps", &DemoConfig::laps, "", 0, 1'000'000, "",
-     "laps, then stop (the seed ended its program after n > 5: DOORS.md DM-2); 0 = for ever"},
-    {"calibration_timeout_ticks", &DemoConfig::calibration_timeout_ticks, "ticks", 0, 10'000'000, "",
-     "align + advance longer than this: failed no-landmark, ticks (0: no limit)"},
-};
+std::span<const param::Param<DemoConfig>> demo_params();
 
 }  // namespace robuter

@@ -11,16 +11,17 @@ namespace robuter {
 
 DoorsModule::DoorsModule(Blackboard& bb, const Config& cfg, EmergencyModule* emergency)
     : crossing_(doors::crossing_settings(cfg)),
-      emergency_(emergency),
       crossing_mask_(static_cast<std::uint8_t>(cfg.doors.emergency_mask & kDetectAll)),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),
       link_(bb.link_status.reader()),
       claim_(bb, MotionSource::doors),
-      motion_out_(bb.doors_motion.writer()),
+      requests_(bb.doors_motion.writer()),
       status_out_(bb.doors_status.writer()),
-      detections_out_(bb.doors_detections.writer()) {}
+      detections_out_(bb.doors_detections.writer()) {
+  requests_.set_emergency(emergency);
+}
 
 // Why lower the mask: the seed's doors() sets emerg.on = BUMPER — the ring would see the door's
 // edges under the safety distance and stop the robot in the doorway; the link may stay silent
@@ -35,7 +36,7 @@ bool DoorsModule::init(Kernel& k) {
 void DoorsModule::begin(std::uint64_t tick) {
   crossing_.start(tick);
   had_link_ = link_.peek().links_open > 0;
-  sent_stop_ = false;
+  requests_.begin();
   log::info("doors: crossing (emergency detections {} while in the door)", crossing_mask_);
 }
 
@@ -60,17 +61,7 @@ void DoorsModule::run(Kernel& k) {
 // Every way out passes here with request = false: the zero request, then the mask.
 void DoorsModule::publish(Kernel& k, const doors::CrossingOutput& o) {
   const std::uint64_t tick = k.tick();
-  const bool ending = !o.request && !sent_stop_;
-  if (o.request || ending) {  // dropped by the arbiter once the robot is no longer ours
-    motion_out_.modify([&](MotionRequest& r) {
-      r.left = o.request ? o.left : 0;
-      r.right = o.request ? o.right : 0;
-      ++r.seq;
-      r.tick = tick;
-    });
-  }
-  if (ending) sent_stop_ = true;
-  if ((o.request || ending) && emergency_) k.trigger(emergency_);
+  requests_.send(k, o.request, o.left, o.right);
   const ModeStatus& cur = status_out_.current();
   if (cur.state == o.state && cur.reason == o.reason) return;
   ModeStatus s = cur;

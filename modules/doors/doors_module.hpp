@@ -8,6 +8,7 @@
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/doors/crossing.hpp"
+#include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
 
@@ -36,18 +37,16 @@ class DoorsModule final : public Process {
   void publish(Kernel& k, const doors::CrossingOutput& o);
 
   doors::DoorCrossing crossing_;
-  EmergencyModule* emergency_;        // triggered on every request (null: none, e.g. tests)
   std::uint8_t crossing_mask_;        // detections kept while in the door
   Reader<PanTiltScan> scan_;
   Reader<ModeStatus> ptu_;
   Reader<Posture> posture_;
   Reader<LinkStatus> link_;
   MotionClaim claim_;                 // runs handed by the arbiter, and their end
-  Writer<MotionRequest> motion_out_;
+  ModeRequests requests_;             // its motion requests, and the final zero one
   Writer<ModeStatus> status_out_;
   Writer<DetectionRequest> detections_out_;  // the wish for lowered detections
   bool had_link_ = false;             // a link was open at the start
-  bool sent_stop_ = true;             // the final zero request went out
 };
 
 }  // namespace robuter

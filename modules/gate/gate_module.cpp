@@ -14,7 +14,7 @@ GateModule::GateModule(Blackboard& bb, const Config& cfg)
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),
       claim_(bb, MotionSource::gate),
-      motion_out_(bb.gate_motion.writer()),
+      requests_(bb.gate_motion.writer()),
       status_out_(bb.gate_status.writer()) {}
 
 bool GateModule::init(Kernel& k) {
@@ -28,7 +28,7 @@ void GateModule::run(Kernel& k) {
   if (claim_.granted()) {  // AG (a second AG restarts the search)
     logic_.start(tick);
     started_ = tick;
-    sent_stop_ = false;
+    requests_.begin();
     log::info("gate: searching for a passage");
   } else if (logic_.active()) {  // AT, the operator, an emergency
     const ModeReason why = claim_.ended();
@@ -43,22 +43,9 @@ void GateModule::run(Kernel& k) {
   publish(k, logic_.step(in));
 }
 
-// Why a last zero request: the gate remembers a request until a newer one comes, so ending
-// without one would leave the last manoeuvre running.
 void GateModule::publish(Kernel& k, const gate::GateOutput& o) {
   const std::uint64_t tick = k.tick();
-  const bool ending = !o.request && !sent_stop_;
-  if (o.request || ending) {
-    // The arbiter drops it once the robot is no longer ours (it stopped the robot then).
-    motion_out_.modify([&](MotionRequest& r) {
-      r.left = o.request ? o.left : 0;
-      r.right = o.request ? o.right : 0;
-      ++r.seq;
-      r.tick = tick;
-    });
-    if (emergency_) k.trigger(emergency_);
-    if (ending) sent_stop_ = true;
-  }
+  requests_.send(k, o.request, o.left, o.right);
   const ModeStatus& cur = status_out_.current();
   if (cur.state == o.state && cur.reason == o.reason && cur.width_mm == o.width_mm) return;
   ModeStatus s = cur;

@@ -5,6 +5,7 @@
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/gate/gate_logic.hpp"
+#include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
 
@@ -18,7 +19,7 @@ class GateModule final : public Process {
  public:
   GateModule(Blackboard& bb, const Config& cfg);
   // The emergency module, triggered on every request so it is judged in the same tick.
-  void set_emergency(Process* p) { emergency_ = p; }
+  void set_emergency(Process* p) { requests_.set_emergency(p); }
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;
@@ -35,11 +36,9 @@ class GateModule final : public Process {
   Reader<ModeStatus> ptu_;
   Reader<Posture> posture_;
   MotionClaim claim_;                 // runs handed by the arbiter (AG), and their end (AT, the operator, an emergency)
-  Writer<MotionRequest> motion_out_;
+  ModeRequests requests_;             // its motion requests, and the final zero one
   Writer<ModeStatus> status_out_;
-  Process* emergency_ = nullptr;
   std::uint64_t started_ = 0;         // tick of the start
-  bool sent_stop_ = true;             // the last request was zero and the search has ended
 };
 
 }  // namespace robuter

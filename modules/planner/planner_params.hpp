@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,48 +43,7 @@ struct PlannerModuleConfig {
 inline constexpr long long kPlannerFarMm = 1'000'000;
 
 // [planner]: each key, its unit, range and doc (the default is the field's initialiser).
-inline constexpr param::Param<PlannerModuleConfig> kPlannerParams[] = {
-    {"map_origin_x_mm", &PlannerModuleConfig::map_origin_x_mm, "mm", -kPlannerFarMm, kPlannerFarMm, "",
-     "lower-left corner of the map, odometry frame, mm"},
-    {"map_origin_y_mm", &PlannerModuleConfig::map_origin_y_mm, "mm", -kPlannerFarMm, kPlannerFarMm, "",
-     "lower-left corner of the map, odometry frame, y, mm"},
-    {"map_width_mm", &PlannerModuleConfig::map_width_mm, "mm", 500, kPlannerFarMm, "",
-     "map extent along x, mm"},
-    {"map_height_mm", &PlannerModuleConfig::map_height_mm, "mm", 500, kPlannerFarMm, "",
-     "map extent along y, mm"},
-    {"cell_mm", &PlannerModuleConfig::cell_mm, "mm", 10, 500, "",
-     "cell side, mm (seed 000: 5 cm)"},
-    {"footprint", &PlannerModuleConfig::footprint, "", 0, 0, "rectangle|disc",
-     "\"rectangle\" (the body, with heading) or \"disc\""},
-    {"disc_radius_mm", &PlannerModuleConfig::disc_radius_mm, "mm", 50, 5000, "",
-     "disc footprint radius, mm (axle to a front corner)"},
-    {"margin_mm", &PlannerModuleConfig::margin_mm, "mm", 0, 1000, "",
-     "clearance added all round the body to translate, mm"},
-    {"turn_clearance_mm", &PlannerModuleConfig::turn_clearance_mm, "mm", 0, 1000, "",
-     "more clearance needed to turn in place, mm"},
-    {"heading_slices", &PlannerModuleConfig::heading_slices, "", 4, 64, "",
-     "heading slices over a half turn (rectangle)"},
-    {"hit_threshold", &PlannerModuleConfig::hit_threshold, "hits", 1, 254, "",
-     "net sonar hits that make a cell an obstacle"},
-    {"initial_count", &PlannerModuleConfig::initial_count, "hits", 0, 253, "",
-     "count a never-seen cell starts from when a beam first touches it (seed 003: 5)"},
-    {"map_file", &PlannerModuleConfig::map_file, "path", 0, 0, "",
-     "a-priori map (\"robuter-map 1\", odometry frame), resolved against the configuration's folder; empty = none"},
-    {"scan_passes", &PlannerModuleConfig::scan_passes, "", 1, 20, "",
-     "full ring passes waited for at each stop"},
-    {"beam_range_mm", &PlannerModuleConfig::beam_range_mm, "mm", 200, 10'000, "",
-     "readings marked up to this range, mm"},
-    {"beam_half_angle_centideg", &PlannerModuleConfig::beam_half_angle_centideg, "0.01°", 0, 4500, "",
-     "ring sonar cone half-angle, 0.01° (0: axis only)"},
-    {"follow_range_mm", &PlannerModuleConfig::follow_range_mm, "mm", 100, 10'000, "",
-     "the path is followed this far before a new scan, mm"},
-    {"goal_tolerance_mm", &PlannerModuleConfig::goal_tolerance_mm, "mm", 10, 5000, "",
-     "arrived within this distance of the goal, mm"},
-    {"drive_speed_cm_s", &PlannerModuleConfig::drive_speed_cm_s, "cm/s", 1, 100, "",
-     "fastest wheel while driving, cm/s"},
-    {"turn_speed_cm_s", &PlannerModuleConfig::turn_speed_cm_s, "cm/s", 1, 100, "",
-     "fastest wheel while turning in place, cm/s"},
-};
+std::span<const param::Param<PlannerModuleConfig>> planner_params();
 
 // Why: the largest map (cells) the planner may be sized for, about 200 MB: checked for the
 // configured map and for an a-priori map file alike.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,17 +23,6 @@ struct SonarConfig {
 };
 
 // [sonar]: each key, its unit, range and doc (the default is the field's initialiser).
-inline constexpr param::Param<SonarConfig> kSonarParams[] = {
-    {"node_delay_ticks", &SonarConfig::node_delay_ticks, "ticks", 0, 1000, "",
-     "delay between firing two nodes, ticks"},
-    {"timeout_ms", &SonarConfig::timeout_ms, "ms", 1, 1000, "",
-     "echo time-out, ms (≈ 5 m at 300 m/s)"},
-    {"sound_speed_m_s", &SonarConfig::sound_speed_m_s, "m/s", 200, 400, "",
-     "calibrated speed of sound, m/s"},
-    {"schedule", &SonarConfig::schedule, "", 0, 0, "watch|seed",
-     "firing order while moving: \"watch\" (where the robot goes"},
-    {"moving_timeout_ms", &SonarConfig::moving_timeout_ms, "ms", 0, 1000, "",
-     "echo time-out of the rotation's firings between two watch"},
-};
+std::span<const param::Param<SonarConfig>> sonar_params();
 
 }  // namespace robuter

@@ -111,11 +111,11 @@ def check(doc, text=None):
         problems.append(f"{doc.name}: no row for the topic `{t}`")
     # Parameters: section -> the header declaring its table.
     config = (ROOT / "kernel/config.hpp").read_text()
-    sections = dict(re.findall(r'f\(std::string_view\("([\w.]+)"\), std::span\((\w+)\)', config))
+    sections = dict(re.findall(r'f\(std::string_view\("([\w.]+)"\), (\w+)\(\)', config))
     declared = {}
     for path in list(ROOT.glob("modules/*/*_params.hpp")) + list(ROOT.glob("hal/**/*_params.hpp")) + \
             list(ROOT.glob("kernel/*_params.hpp")) + list(ROOT.glob("robot/*_params.hpp")):
-        for table in re.findall(r"inline constexpr param::Param<\w+> (\w+)\[\]", path.read_text()):
+        for table in re.findall(r"std::span<const param::Param<\w+>> (\w+)\(\);", path.read_text()):
             declared[table] = str(path.relative_to(ROOT))
     prows = doc_table(lines, "section")
     pseen = set()
@@ -127,7 +127,7 @@ def check(doc, text=None):
                 problems.append(f"{doc.name}:{n}: [{s}] is not a section of for_each_param_section")
                 continue
             header = declared.get(sections[s], "?")
-            if f"`{header}`" not in cells[1]:
+            if f"`{header}`" not in cells[1] or f"`{sections[s]}()`" not in cells[1]:
                 problems.append(f"{doc.name}:{n}: [{s}]'s table {sections[s]} is declared in {header}")
     for s in sorted(set(sections) - pseen):
         problems.append(f"{doc.name}: no row for the section [{s}]")
