@@ -7,7 +7,7 @@ names its owner module and whose readers cell names exactly the modules that tak
 (`bb.<topic>.reader()` under modules/<module>/; a `MotionClaim` reads `authority`; the firmware's
 composition hands the motion requests and the known structure's readers to the emergency module).
 Parameters: every section of `for_each_param_section` (kernel/config.hpp) has one row naming the
-header that declares its table. Namespaces: a header under modules/<m>/ opens only robuter or
+header that declares its table. Blackboard::for_each_topic names every topic member. Namespaces: a header under modules/<m>/ opens only robuter or
 robuter::<m>. And no code outside tests/ includes tests/support/test_writer.hpp.
 
   architecture_check.py --check [--doc FILE]   exit 1 and say why when they disagree
@@ -109,6 +109,11 @@ def check(doc, text=None):
                             f"{sorted(got)}")
     for t in sorted(set(want) - seen):
         problems.append(f"{doc.name}: no row for the topic `{t}`")
+    # Blackboard::for_each_topic (the start-up claim check walks it) names every member, in order.
+    header = (ROOT / "modules/topics.hpp").read_text()
+    walked = re.findall(r'f\("(\w+)", bb\.(\w+)\);', header)
+    if [n for n, _ in walked] != list(want) or any(n != m for n, m in walked):
+        problems.append("modules/topics.hpp: for_each_topic does not name every topic of struct Blackboard, in order")
     # Parameters: section -> the header declaring its table.
     config = (ROOT / "kernel/config.hpp").read_text()
     sections = dict(re.findall(r'f\(std::string_view\("([\w.]+)"\), (\w+)\(\)', config))
