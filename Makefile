@@ -64,7 +64,7 @@ run: deps build
 	$(BUILD)/bin/robuterd $(RUN_ARGS)
 
 # The whole suite: the normal build, then the same tests under ASan and UBSan; the last line
-# adds both up ("N passed, N failed").
+# adds both up ("N passed, N failed"). The sanitizer tree is a unity build (docs/TESTING.md).
 test: deps
 	@set -o pipefail; $(MAKE) --no-print-directory test-fast 2>&1 | tee $(BUILD).test.log; a=$$?; \
 	 set -o pipefail; $(MAKE) --no-print-directory test-san 2>&1 | tee $(SAN_BUILD).test.log; b=$$?; \
@@ -74,7 +74,7 @@ test-fast: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600
 
 $(SAN_BUILD)/build.ninja:
-	cmake -S . -B $(SAN_BUILD) $(GEN) -DCMAKE_BUILD_TYPE=Debug -DROBUTER_SANITIZE=ON -DROBUTER_BENCH=OFF
+	cmake -S . -B $(SAN_BUILD) $(GEN) -DCMAKE_BUILD_TYPE=Debug -DROBUTER_SANITIZE=ON -DROBUTER_BENCH=OFF -DCMAKE_UNITY_BUILD=ON
 
 test-san: $(SAN_BUILD)/build.ninja
 	cmake --build $(SAN_BUILD) -j $(JOBS)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Door crossing: fresh scan, steer, wait when blocked, through, drive on, done.
 #include "modules/doors/crossing.hpp"
+#include "robot/robot_model.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +9,6 @@
 namespace robuter::doors {
 
 namespace {
-constexpr double kRad = std::numbers::pi / 180.0;
 bool within(int i, int first, int last) { return i >= first && i <= last; }
 }  // namespace
 
@@ -45,7 +45,7 @@ CrossingView DoorCrossing::look(const ptu::Echoes& e, const PanTiltScan& scan, s
     if (!x.valid || x.far) continue;
     const int sector = ptu::wrap_sector(static_cast<int>(std::lround(x.bearing_deg / ptu::kSectorDegrees)));
     const double spread = x.spread_deg * s.spread_weight;
-    const double lo = (x.bearing_deg - spread) * kRad, hi = (x.bearing_deg + spread) * kRad;
+    const double lo = (x.bearing_deg - spread) * robot::kDeg, hi = (x.bearing_deg + spread) * robot::kDeg;
     const bool too_close = x.range_mm < min_read_max(sd, lo, hi);
     if (too_close) {
       if (sector == 0 || sector == 71) v.threats.left = v.threats.right = true;  // straight ahead: both

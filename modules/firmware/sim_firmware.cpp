@@ -84,6 +84,12 @@ void SimFirmware::run_ticks(int n) {
   for (int i = 0; i < n; ++i) step();
 }
 
+std::pair<int, int> SimFirmware::wheels() {
+  std::int32_t l = 0, r = 0;
+  sim().drive().commanded(l, r);
+  return {l, r};
+}
+
 double SimFirmware::seconds() const { return fw_->sim() ? fw_->sim()->time() : 0.0; }
 
 std::pair<int, int> SimFirmware::count_lines() {

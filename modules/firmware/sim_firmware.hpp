@@ -85,6 +85,8 @@ class SimFirmware {
   Blackboard& bb() { return fw_->blackboard(); }
   hal::SimRobot& sim() { return *fw_->sim(); }
   double seconds() const;  // simulated time, s
+  // The wheel speeds the simulated drive is commanded now {left, right}, cm/s.
+  std::pair<int, int> wheels();
 
  private:
   // The common start: virtual clock, pty link in a temporary folder, setup, client, kernel start.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Passage estimate: corner lock, wall fit by a search over the normal, edges on the wall line.
 #include "modules/gate/door_estimate.hpp"
+#include "robot/robot_model.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +11,6 @@
 namespace robuter::gate {
 
 namespace {
-constexpr double kRad = std::numbers::pi / 180.0;  // radians per degree
 using ptu::kSectors;
 using ptu::wrap_sector;
 
@@ -87,20 +87,20 @@ DoorEstimate estimate_door(const PanTiltScan& scan, const ptu::Echoes& echoes, c
 
   // The normal: the passage's direction ± search_deg; D for a trial normal is the mean of what
   // every sample implies, and the best normal leaves the least spread.
-  const double guess = std::atan2(0.5 * (ry + ly), 0.5 * (rx + lx)) / kRad;
+  const double guess = std::atan2(0.5 * (ry + ly), 0.5 * (rx + lx)) / robot::kDeg;
   const double h = g.beam_half_deg;
   double best_sse = 1e300, best_psi = guess, best_D = 0.0;
   const int steps = static_cast<int>(std::lround(2.0 * s.search_deg / s.step_deg));
   std::array<double, 34> implied{};
   for (int i = 0; i <= steps; ++i) {
     const double psi = guess - s.search_deg + i * s.step_deg;
-    const double cp = std::cos(psi * kRad), sp = std::sin(psi * kRad);
+    const double cp = std::cos(psi * robot::kDeg), sp = std::sin(psi * robot::kDeg);
     int m = 0;
     for (int j = 0; j < n; ++j) {
       const WallSample& w = wall[static_cast<std::size_t>(j)];
       const double off = std::abs(diff_deg(w.axis_deg, psi));
       const double e = std::max(0.0, off - h);
-      implied[static_cast<std::size_t>(m++)] = w.range * std::cos(e * kRad) + g.face_mm * std::cos(off * kRad);
+      implied[static_cast<std::size_t>(m++)] = w.range * std::cos(e * robot::kDeg) + g.face_mm * std::cos(off * robot::kDeg);
     }
     implied[static_cast<std::size_t>(m++)] = rx * cp + ry * sp;  // the edges lie on the wall line
     implied[static_cast<std::size_t>(m++)] = lx * cp + ly * sp;
@@ -116,14 +116,14 @@ DoorEstimate estimate_door(const PanTiltScan& scan, const ptu::Echoes& echoes, c
     }
   }
   if (best_D <= 0.0) return d;
-  const double nx = std::cos(best_psi * kRad), ny = std::sin(best_psi * kRad);  // unit normal
+  const double nx = std::cos(best_psi * robot::kDeg), ny = std::sin(best_psi * robot::kDeg);  // unit normal
   const double tx = -ny, ty = nx;                                                // along the wall, to the left
 
   // Each edge on the line: where its localised echo falls, and where its range from its face
   // says, weighted by how well each is known there (a range says little near the foot of the
   // perpendicular, where along-the-wall distance hardly changes it; a bearing is ±2.5°).
   auto place = [&](const ptu::Echo& e, int sector, double& px, double& py) {
-    const double axis = ptu::kSectorDegrees * sector * kRad;
+    const double axis = ptu::kSectorDegrees * sector * robot::kDeg;
     const double fx = g.face_mm * std::cos(axis), fy = g.face_mm * std::sin(axis);
     const double to_line = best_D - (fx * nx + fy * ny);
     const double qx = fx + to_line * nx, qy = fy + to_line * ny;  // foot of the face on the line
@@ -134,7 +134,7 @@ DoorEstimate estimate_door(const PanTiltScan& scan, const ptu::Echoes& echoes, c
     if (r * r > to_line * to_line) {
       const double along_range = std::copysign(std::sqrt(r * r - to_line * to_line), along_echo);
       const double var_range = std::pow(s.range_sigma_mm * r / std::max(std::abs(along_range), 1.0), 2.0);
-      const double var_echo = std::pow(r * s.bearing_sigma_deg * kRad, 2.0);
+      const double var_echo = std::pow(r * s.bearing_sigma_deg * robot::kDeg, 2.0);
       along = (along_range * var_echo + along_echo * var_range) / (var_echo + var_range);
     }
     px = qx + along * tx;

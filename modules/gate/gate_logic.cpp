@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stop, scan, estimate, manoeuvre, scan again: the passage finder as a state machine.
 #include "modules/gate/gate_logic.hpp"
+#include "robot/robot_model.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +9,6 @@
 namespace robuter::gate {
 
 namespace {
-constexpr double kRad = std::numbers::pi / 180.0;
 
 executor::GoToSettings manoeuvre_settings(const GateSettings& s) {
   executor::GoToSettings g;
@@ -23,7 +23,7 @@ executor::GoToSettings manoeuvre_settings(const GateSettings& s) {
 
 // A pose and a robot-frame offset (mm, degrees) composed into odometry units (0.1 mm, 0.01°).
 executor::PostureUnits compose(const SectorPose& p, double x_mm, double y_mm, double dtheta_deg) {
-  const double th = p.theta * 0.01 * kRad;
+  const double th = p.theta * 0.01 * robot::kDeg;
   executor::PostureUnits t;
   t.x = static_cast<std::int32_t>(std::lround(p.x + 10.0 * (x_mm * std::cos(th) - y_mm * std::sin(th))));
   t.y = static_cast<std::int32_t>(std::lround(p.y + 10.0 * (x_mm * std::sin(th) + y_mm * std::cos(th))));
@@ -195,7 +195,7 @@ void GateLogic::evaluate(const GateInputs& in) {
   unlocked_since_ = 0;
   unsettled_ = 0;
   const DoorEstimate& d = estimate_;
-  const double nx = std::cos(d.normal_deg * kRad), ny = std::sin(d.normal_deg * kRad);
+  const double nx = std::cos(d.normal_deg * robot::kDeg), ny = std::sin(d.normal_deg * robot::kDeg);
   // The axle (origin) against the centre line through the passage's centre along the normal.
   lateral_mm_ = -(-d.center_x * ny + d.center_y * nx);  // + when the axle is left of the line
   heading_deg_ = -d.normal_deg;                         // + when the robot points left of the passage

@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Echo localisation (runs of equal ranges, farther neighbours) and odometric carrying of points.
 #include "modules/ptu/echo_points.hpp"
+#include "robot/robot_model.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace robuter::ptu {
-
-namespace {
-constexpr double kRad = std::numbers::pi / 180.0;  // radians per degree
-}  // namespace
 
 double wrap_deg(double a) {
   a = std::remainder(a, 360.0);
@@ -51,7 +48,7 @@ void locate_echoes(const PanTiltScan& scan, const SectorPose& now, std::uint64_t
     const std::uint64_t t = scan.read_tick[i];
     usable[i] = t > 0 && t <= now_tick && now_tick - t <= max_age_ticks;
   }
-  const double now_th = now.theta * 0.01 * kRad;
+  const double now_th = now.theta * 0.01 * robot::kDeg;
   const double cn = std::cos(now_th), sn = std::sin(now_th);
   const double now_x = now.x * 0.1, now_y = now.y * 0.1;  // mm
   for (int k = 0; k < kSectors; ++k) {
@@ -91,19 +88,19 @@ void locate_echoes(const PanTiltScan& scan, const SectorPose& now, std::uint64_t
       }
     }
     // The point in the robot frame of the firing: from the face on the axis, along the bearing.
-    const double fx = g.pivot_x_mm + g.face_mm * std::cos(axis * kRad);
-    const double fy = g.face_mm * std::sin(axis * kRad);
-    const double px = fx + r * std::cos(bearing * kRad), py = fy + r * std::sin(bearing * kRad);
+    const double fx = g.pivot_x_mm + g.face_mm * std::cos(axis * robot::kDeg);
+    const double fy = g.face_mm * std::sin(axis * robot::kDeg);
+    const double px = fx + r * std::cos(bearing * robot::kDeg), py = fy + r * std::sin(bearing * robot::kDeg);
     // Carried through the odometry frame to the current robot frame.
     const SectorPose& at = scan.pose[i];
-    const double th = at.theta * 0.01 * kRad;
+    const double th = at.theta * 0.01 * robot::kDeg;
     const double wx = at.x * 0.1 + px * std::cos(th) - py * std::sin(th);
     const double wy = at.y * 0.1 + px * std::sin(th) + py * std::cos(th);
     const double dx = wx - now_x, dy = wy - now_y;
     e.x_mm = dx * cn + dy * sn;
     e.y_mm = -dx * sn + dy * cn;
     const double rx = e.x_mm - g.pivot_x_mm, ry = e.y_mm;
-    e.bearing_deg = std::atan2(ry, rx) / kRad;
+    e.bearing_deg = std::atan2(ry, rx) / robot::kDeg;
     e.range_mm = std::hypot(rx, ry) - g.face_mm;
   }
 }

@@ -18,7 +18,7 @@ constexpr std::array<std::uint16_t, 256> make_table() noexcept {
   return table;
 }
 
-constexpr std::array<std::uint16_t, 256> kTable = make_table();
+constexpr std::array<std::uint16_t, 256> kCrcTable = make_table();
 
 // Value of one hex digit (either case), or -1.
 int hex_value(char c) noexcept {
@@ -35,7 +35,7 @@ std::uint16_t crc16(std::string_view bytes) noexcept {
   unsigned crc = 0xFFFFU;
   for (char ch : bytes) {
     const unsigned byte = static_cast<unsigned char>(ch);
-    crc = ((crc << 8) ^ kTable[((crc >> 8) ^ byte) & 0xFFU]) & 0xFFFFU;
+    crc = ((crc << 8) ^ kCrcTable[((crc >> 8) ^ byte) & 0xFFU]) & 0xFFFFU;
   }
   return static_cast<std::uint16_t>(crc);
 }

@@ -21,7 +21,7 @@ constexpr IntRange kStreamPeriod{0, static_cast<std::int32_t>(kMaxStreamPeriod)}
 
 using C = CommandId;
 
-constexpr std::array kTable = {
+constexpr std::array kCommands = {
     // B — information requests
     CommandRow{'B', 'O', C::get_posture, no_params(), handle_get_posture, "posture"},
     CommandRow{'B', 'U', C::get_ranges, no_params(), handle_get_ranges, "ultrasonic ranges"},
@@ -106,11 +106,11 @@ constexpr std::array kTable = {
 }  // namespace
 
 // The table as a span, for documentation tools and tests.
-std::span<const CommandRow> command_table() noexcept { return kTable; }
+std::span<const CommandRow> command_table() noexcept { return kCommands; }
 
 // Linear search: 39 rows of two bytes each is faster than any index worth keeping.
 const CommandRow* find_command(char category, char type) noexcept {
-  for (const CommandRow& row : kTable) {
+  for (const CommandRow& row : kCommands) {
     if (row.category == category && row.type == type) return &row;
   }
   return nullptr;

@@ -16,19 +16,12 @@
 namespace robuter {
 namespace {
 
-// The wheel speeds the simulated drive is commanded now, cm/s.
-std::pair<int, int> wheels(test::SimFirmware& fw) {
-  std::int32_t l = 0, r = 0;
-  fw.sim().drive().commanded(l, r);
-  return {l, r};
-}
-
 // Starts a turn on the spot and waits until the drive has it (the gate holds until the ring
 // has read the watch-dog sensors).
 void start_turning(test::SimFirmware& fw) {
   ASSERT_EQ(fw.ask("ASN"), "ack");
   ASSERT_EQ(fw.ask("AM 20 -20"), "ack");
-  ASSERT_TRUE(fw.run_until([&] { return wheels(fw) == std::pair{20, -20}; }, 300));
+  ASSERT_TRUE(fw.run_until([&] { return fw.wheels() == std::pair{20, -20}; }, 300));
 }
 
 // The client reads everything robuterd queued (the pty takes it a few kB at a time).
@@ -56,11 +49,11 @@ TEST(LinkSessions, StopByteActsBehindSixtyFourKilobytesOfUnreadReplies) {
   for (int i = 0; i < 100; ++i) fw.send_raw("XM\r");  // 100 × 1.7 kB of replies, none read
   fw.run_ticks(3);
   EXPECT_GT(fw.bb().link_status.reader().peek().lines_discarded, 0u);
-  EXPECT_EQ(wheels(fw), (std::pair{20, -20}));  // dropping replies stops nothing by itself
+  EXPECT_EQ(fw.wheels(), (std::pair{20, -20}));  // dropping replies stops nothing by itself
   const std::uint64_t tick = fw.kernel().tick();
   fw.send_raw("\r\x18");
   fw.step();  // one tick: the byte is read by an event activation before it
-  EXPECT_EQ(wheels(fw), (std::pair{0, 0})) << "stop byte not acted on within one tick";
+  EXPECT_EQ(fw.wheels(), (std::pair{0, 0})) << "stop byte not acted on within one tick";
   EXPECT_EQ(fw.kernel().tick(), tick + 1);
   EXPECT_FALSE(fw.sim().drive().servo());
   drain(fw);  // the client reads what was queued
@@ -85,12 +78,12 @@ TEST(LinkSessions, LineWhoseReplyCannotBeQueuedIsDroppedUnexecuted) {
   for (int i = 0; i < 20; ++i) lines += "XM\r";
   fw.send_raw(lines + "AM 20 20\r");
   fw.run_ticks(100);
-  EXPECT_EQ(wheels(fw), (std::pair{0, 0}));
+  EXPECT_EQ(fw.wheels(), (std::pair{0, 0}));
   EXPECT_GT(fw.bb().link_status.reader().peek().lines_discarded, dropped);
   drain(fw);
   EXPECT_EQ(fw.ask("BC").value_or("").substr(0, 2), "C ");
   fw.run_ticks(100);
-  EXPECT_EQ(wheels(fw), (std::pair{0, 0}));  // the dropped AM never runs later
+  EXPECT_EQ(fw.wheels(), (std::pair{0, 0}));  // the dropped AM never runs later
 }
 
 // `printf 'ASN\rAM 20 -20\r' > pty` after an earlier client left, and `printf '\x18' > pty`:
@@ -103,18 +96,18 @@ TEST(LinkSessions, OneShotClientsAreServedAfterAnEarlierClientLeft) {
   fw.close_client();
   fw.run_ticks(5);
   ASSERT_TRUE(fw.one_shot("ASN\rAM 20 -20\r"));
-  EXPECT_TRUE(fw.run_until([&] { return wheels(fw) == std::pair{20, -20}; }, 300)) << "one-shot motion not served";
+  EXPECT_TRUE(fw.run_until([&] { return fw.wheels() == std::pair{20, -20}; }, 300)) << "one-shot motion not served";
   fw.run_ticks(20);
   ASSERT_TRUE(fw.one_shot("\x18"));
   fw.step();
-  EXPECT_EQ(wheels(fw), (std::pair{0, 0})) << "one-shot stop byte not served";
+  EXPECT_EQ(fw.wheels(), (std::pair{0, 0})) << "one-shot stop byte not served";
   fw.run_ticks(100);  // at rest: XR is accepted only once the robot has stopped
   ASSERT_TRUE(fw.one_shot("XR\r"));  // alone: a request in the same read would be judged before it
   fw.run_ticks(3);
   ASSERT_TRUE(fw.one_shot("ASN\rAM 10 -10\r"));
-  EXPECT_TRUE(fw.run_until([&] { return wheels(fw) == std::pair{10, -10}; }, 300));
+  EXPECT_TRUE(fw.run_until([&] { return fw.wheels() == std::pair{10, -10}; }, 300));
   ASSERT_TRUE(fw.one_shot("AM 0 0\r"));
-  EXPECT_TRUE(fw.run_until([&] { return wheels(fw) == std::pair{0, 0}; }, 20)) << "one-shot AM 0 0 not served";
+  EXPECT_TRUE(fw.run_until([&] { return fw.wheels() == std::pair{0, 0}; }, 20)) << "one-shot AM 0 0 not served";
 }
 
 // Settings, half lines and unread replies of one client never reach the next one.
@@ -177,7 +170,7 @@ TEST(LinkSessions, StopWhenClientsLeaveIsAnOption) {
     start_turning(fw);
     fw.close_client();
     fw.run_ticks(3);
-    EXPECT_EQ(wheels(fw), (stop ? std::pair{0, 0} : std::pair{20, -20})) << "stop_when_clients_leave " << stop;
+    EXPECT_EQ(fw.wheels(), (stop ? std::pair{0, 0} : std::pair{20, -20})) << "stop_when_clients_leave " << stop;
     ASSERT_TRUE(fw.reconnect());
     const auto xe = fw.ask("XE");
     ASSERT_TRUE(xe);

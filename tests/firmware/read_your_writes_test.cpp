@@ -35,12 +35,6 @@ std::string emergency_of(const std::string& xe) {
   return "E " + std::to_string(held) + " " + std::to_string(latched) + " " + cause;
 }
 
-std::pair<int, int> wheels(test::SimFirmware& fw) {
-  std::int32_t l = 0, r = 0;
-  fw.sim().drive().commanded(l, r);
-  return {l, r};
-}
-
 class ReadYourWrites : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -147,12 +141,12 @@ TEST_F(ReadYourWrites, PipelinedCommandsAreEachSeenByTheQueryAfterThem) {
 TEST_F(ReadYourWrites, StopByteActsAtOnceBehindWaitingLines) {
   ASSERT_EQ(fw.ask("ASN"), "ack");
   ASSERT_EQ(fw.ask("AM 20 -20"), "ack");
-  ASSERT_TRUE(fw.run_until([&] { return wheels(fw) == std::pair{20, -20}; }, 300));
+  ASSERT_TRUE(fw.run_until([&] { return fw.wheels() == std::pair{20, -20}; }, 300));
   std::string lines;
   for (int i = 0; i < 50; ++i) lines += "AM 20 -20\rBO\r";
   fw.send_raw(lines + "\x18");
   fw.step();
-  EXPECT_EQ(wheels(fw), (std::pair{0, 0})) << "stop byte not acted on within one tick";
+  EXPECT_EQ(fw.wheels(), (std::pair{0, 0})) << "stop byte not acted on within one tick";
   const Replies r = fw.exchange("XE\r", 101, 200);
   ASSERT_EQ(r.size(), 101u);
   for (int i = 0; i < 50; ++i) EXPECT_EQ(servo_of(r[2 * i + 1]), 1) << i;

@@ -22,7 +22,7 @@ using plan::Cell;
 using plan::CellState;
 
 // Two 1 m x 0.5 m rooms side by side (x 0-1 and 1-2, y 0-0.5), a 0.3 m door between them.
-PlaceGraph two_rooms() {
+PlaceGraph two_small_rooms() {
   std::vector<Place> p{{"west", {{0, 0}, {1, 0}, {1, 0.5}, {0, 0.5}}, {0.5, 0.25}},
                        {"east", {{1, 0}, {2, 0}, {2, 0.5}, {1, 0.5}}, {1.5, 0.25}}};
   std::vector<Door> d{{"door", 0, 1, {1, 0.25}, 0.3}};
@@ -43,7 +43,7 @@ plan::OccupancyMap small_map() {
 // Why: the grid is the place's bounding box on the map's cells (no margin here), in seed 003's
 // characters, north row first; the robot's cell is 'P'; a margin widens it by whole cells.
 TEST(PlaceGrid, CutIsTheBoundingBoxInSeed003Characters) {
-  const PlaceGrid g = cut_place(two_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
+  const PlaceGrid g = cut_place(two_small_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
   EXPECT_EQ(g.place, "west");
   EXPECT_EQ(g.width, 4);
   EXPECT_EQ(g.height, 2);
@@ -61,7 +61,7 @@ TEST(PlaceGrid, CutIsTheBoundingBoxInSeed003Characters) {
             "grid\n"
             "...#\n"
             "P #.\n");
-  const PlaceGrid wide = cut_place(two_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.25);
+  const PlaceGrid wide = cut_place(two_small_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.25);
   EXPECT_EQ(wide.width, 6);
   EXPECT_EQ(wide.height, 4);
   EXPECT_DOUBLE_EQ(wide.origin.x, -0.25);
@@ -72,7 +72,7 @@ TEST(PlaceGrid, CutIsTheBoundingBoxInSeed003Characters) {
 // allocates nothing and gives what cut_place gives; a box larger than the capacity is refused and
 // the buffer left as it was.
 TEST(PlaceGrid, CutIntoABufferSizedBefore) {
-  const PlaceGraph g = two_rooms();
+  const PlaceGraph g = two_small_rooms();
   const plan::OccupancyMap m = small_map();
   const PlaceBox box = place_box(g, 0, m.geometry(), 0.0);
   EXPECT_EQ(box.lo, (Cell{2, 1}));
@@ -95,7 +95,7 @@ TEST(PlaceGrid, CutIntoABufferSizedBefore) {
 TEST(PlaceGrid, CellsOffTheMapAreUnknown) {
   plan::OccupancyMap m(plan::MapGeometry{3, 2, 0.25, {0.0, 0.0}});  // covers x 0-0.75 only
   for (int x = 0; x < 3; ++x) m.mark_free({x, 0});
-  const PlaceGrid g = cut_place(two_rooms(), 0, m, plan::Point2{5.0, 5.0}, 0.0);
+  const PlaceGrid g = cut_place(two_small_rooms(), 0, m, plan::Point2{5.0, 5.0}, 0.0);
   ASSERT_EQ(g.width, 4);
   EXPECT_FALSE(g.scanned_from.has_value());
   EXPECT_EQ(g.at(0, 0), CellState::Free);
@@ -176,7 +176,7 @@ TEST(PlaceGrid, SavedAndLoaded) {
   const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("place_grid_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const PlaceGrid g = cut_place(two_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
+  const PlaceGrid g = cut_place(two_small_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
   const std::string path = place_grid_path(dir.string(), g.place);
   EXPECT_EQ(path, (dir / "west.txt").string());
   ASSERT_TRUE(save_place_grid(g, path).ok());
@@ -225,7 +225,7 @@ TEST(PlaceGrid, AFifoAFolderOrAHugeFileIsRefusedWithoutReadingIt) {
 // clear a remembered obstacle that moved); what the map knows stays; a grid on other cells is
 // refused and changes nothing.
 TEST(PlaceGrid, AppliedWhereTheMapDoesNotKnow) {
-  const PlaceGrid g = cut_place(two_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
+  const PlaceGrid g = cut_place(two_small_rooms(), 0, small_map(), plan::Point2{0.1, 0.1}, 0.0);
   plan::OccupancyMap m(plan::MapGeometry{12, 4, 0.25, {-0.5, -0.25}});
   m.mark_occupied({2, 1});  // the map knows an obstacle where the grid says free: it stays
   const auto n = apply_place_grid(g, m);
@@ -255,7 +255,7 @@ TEST(GridMemory, SavedGridsReadBackIntoOneMapOfTheFloor) {
   const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / ("grid_memory_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const PlaceGraph rooms = two_rooms();
+  const PlaceGraph rooms = two_small_rooms();
   const plan::MapGeometry floor{12, 4, 0.25, {-0.5, -0.25}};
   const auto none = load_grid_memory(rooms, dir.string(), floor, 2);
   ASSERT_TRUE(none.ok()) << none.error().text();

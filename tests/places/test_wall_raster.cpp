@@ -11,7 +11,7 @@ namespace robuter::places {
 namespace {
 
 // Two 4 m squares side by side (x 0-4 and 4-8), a 1.0 m door in their shared edge at (4, 2).
-PlaceGraph two_rooms() {
+PlaceGraph two_rooms_4m() {
   std::vector<Place> p{{"west", {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {2, 2}},
                        {"east", {{4, 0}, {8, 0}, {8, 4}, {4, 4}}, {6, 2}}};
   std::vector<Door> d{{"door", 0, 1, {4, 2}, 1.0}};
@@ -19,7 +19,7 @@ PlaceGraph two_rooms() {
 }
 
 TEST(WallRaster, EdgesButTheDoorOnTheWallSide) {
-  const plan::OccupancyMap m = wall_raster(two_rooms(), 0.05, 1.0);
+  const plan::OccupancyMap m = wall_raster(two_rooms_4m(), 0.05, 1.0);
   auto at = [&](double x, double y) { return m.state(m.cell_of({x, y})); };
   EXPECT_EQ(m.resolution(), 0.05);
   EXPECT_DOUBLE_EQ(m.geometry().origin.x, -1.0);
@@ -41,7 +41,7 @@ TEST(WallRaster, EdgesButTheDoorOnTheWallSide) {
 }
 
 TEST(WallRaster, DoorOpeningsAreTheCellsInsideTheOpening) {
-  const std::vector<plan::Point2> cells = door_openings(two_rooms(), wall_raster(two_rooms(), 0.05), 0.35);
+  const std::vector<plan::Point2> cells = door_openings(two_rooms_4m(), wall_raster(two_rooms_4m(), 0.05), 0.35);
   ASSERT_FALSE(cells.empty());
   for (const plan::Point2& c : cells) {
     EXPECT_LE(std::abs(c.y - 2.0), 0.475 + 1e-9) << c.y;

@@ -190,7 +190,7 @@ TEST(FullTurnFootprint, PlannedPathClearsWithTheBodyWhereItIs) {
 // Why: the sample size; ROBUTER_FOOTPRINT_POSES (make bench: 100000) overrides.
 int pose_count() {
   if (const char* env = std::getenv("ROBUTER_FOOTPRINT_POSES")) return std::max(1, std::atoi(env));
-  return test::sample(10'000, 2'000);
+  return ::robuter::test::sample(10'000, 2'000);
 }
 
 // The property: on random maps (random obstacles, resolution, margin and slice count), at random

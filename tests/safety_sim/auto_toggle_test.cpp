@@ -12,14 +12,6 @@
 namespace robuter::test::safety_sim {
 namespace {
 
-// Sensor numbers of a table, for messages.
-std::string list(std::uint32_t m) {
-  std::string out;
-  for (int s = 1; s <= 24; ++s)
-    if (m & (1u << (s - 1))) out += (out.empty() ? "" : ",") + std::to_string(s);
-  return "{" + out + "}";
-}
-
 // A UT line for a table (sensor 1 first).
 std::string ut(std::uint32_t m) {
   std::string line = "UT";
@@ -54,56 +46,56 @@ TEST(AutoToggle, OnlyTheWatchSetFiresWhileMovingNoneWhenStoppedAndUtIsOredWhenOf
   // Auto-toggle on, stopped: nothing fires, every range reads 0.
   ASSERT_EQ(fw.ask("Uu1"), "ack");
   std::uint32_t f = fired_sensors(fw);
-  std::printf("Uu1, stopped:         selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu1, stopped:         selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), 0u);
-  EXPECT_EQ(f, 0u) << "fired " << list(f);
+  EXPECT_EQ(f, 0u) << "fired " << sensor_list(f);
   for (int s = 1; s <= 24; ++s) EXPECT_EQ(fw.bb().ranges.reader().peek().mm[static_cast<std::size_t>(s - 1)], 0) << s;
 
   // Moving straight: the five of sensor 1 only (held first: the set has no data yet).
   ASSERT_EQ(fw.ask("AM 20 20"), "ack");
   ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 20; }, 150)) << "granted once the set has read";
   f = fired_sensors(fw);
-  std::printf("Uu1, AM 20 20:        selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu1, AM 20 20:        selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), emergency::watch_mask(1));
-  EXPECT_EQ(f, emergency::watch_mask(1)) << "fired " << list(f);
+  EXPECT_EQ(f, emergency::watch_mask(1)) << "fired " << sensor_list(f);
 
   // Rotating: the special set of sensor 7.
   fw.sim().robot().place(sim::Pose{3.0, 3.0, 0.0});
   ASSERT_EQ(fw.ask("AM 10 -10"), "ack");
   ASSERT_TRUE(fw.run_until([&] { return commanded(fw).left == 10; }, 150));
   f = fired_sensors(fw);
-  std::printf("Uu1, AM 10 -10:       selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu1, AM 10 -10:       selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), emergency::watch_mask(7));
-  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << sensor_list(f);
 
   // UT while auto-toggle is on: stored, answered ack, not applied.
   const std::uint32_t rear = emergency::sensor_bit(13) | emergency::sensor_bit(12);
   ASSERT_EQ(fw.ask(ut(rear)), "ack");
   EXPECT_EQ(fw.bb().us_settings.reader().peek().user_table, rear) << "the table is stored";
   f = fired_sensors(fw);
-  std::printf("Uu1, UT {12,13}:      selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu1, UT {12,13}:      selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), emergency::watch_mask(7)) << "not applied while auto-toggle is on";
-  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(f, emergency::watch_mask(7)) << "fired " << sensor_list(f);
 
   // Auto-toggle off: the stored table OR the watch set.
   ASSERT_EQ(fw.ask("Uu0"), "ack");
   f = fired_sensors(fw);
-  std::printf("Uu0, AM 10 -10:       selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu0, AM 10 -10:       selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), rear | emergency::watch_mask(7));
-  EXPECT_EQ(f, rear | emergency::watch_mask(7)) << "fired " << list(f);
+  EXPECT_EQ(f, rear | emergency::watch_mask(7)) << "fired " << sensor_list(f);
 
   // Stopped with auto-toggle off: the user table alone.
   ASSERT_EQ(fw.ask("AM 0 0"), "ack");
   f = fired_sensors(fw);
-  std::printf("Uu0, stopped:         selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
+  std::printf("Uu0, stopped:         selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
   EXPECT_EQ(selection(fw), rear);
-  EXPECT_EQ(f, rear) << "fired " << list(f);
+  EXPECT_EQ(f, rear) << "fired " << sensor_list(f);
 
   // Auto-toggle back on while stopped: nothing fires again.
   ASSERT_EQ(fw.ask("Uu1"), "ack");
   f = fired_sensors(fw);
-  std::printf("Uu1, stopped again:   selection %s fired %s\n", list(selection(fw)).c_str(), list(f).c_str());
-  EXPECT_EQ(f, 0u) << "fired " << list(f);
+  std::printf("Uu1, stopped again:   selection %s fired %s\n", sensor_list(selection(fw)).c_str(), sensor_list(f).c_str());
+  EXPECT_EQ(f, 0u) << "fired " << sensor_list(f);
   EXPECT_EQ(fw.bb().emergency.reader().peek().trips, 0u);
   EXPECT_EQ(mon.violations(), 0u) << mon.first_violation;
 }

@@ -168,6 +168,13 @@ Wheels commanded(SimFirmware& fw) {
   return w;
 }
 
+std::string sensor_list(std::uint32_t mask) {
+  std::string out;
+  for (int s = 1; s <= 24; ++s)
+    if (mask & (1u << (s - 1))) out += (out.empty() ? "" : ",") + std::to_string(s);
+  return "{" + out + "}";
+}
+
 // The harness calls the observer after every tick, including those inside ask().
 void SafetyMonitor::attach(SimFirmware& fw) {
   fw_ = &fw;

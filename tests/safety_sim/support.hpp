@@ -85,6 +85,9 @@ struct Wheels {
 };
 Wheels commanded(SimFirmware& fw);
 
+// The sensor numbers set in a ring mask (sensor 1 = bit 0), for messages: "{1,5,12}".
+std::string sensor_list(std::uint32_t mask);
+
 // Checks the safety invariants after every tick of a firmware: no non-zero speed at the drive
 // while the emergency is latched, no non-zero speed the gate did not grant, and — while the
 // ultrasonic detection is on — no contact. Install with attach(); counts and the first violation

@@ -53,14 +53,6 @@ std::uint32_t mask_of(const std::set<int>& s) {
   return m;
 }
 
-// Sensor numbers of a table, for messages.
-std::string list(std::uint32_t m) {
-  std::string out;
-  for (int s = 1; s <= 24; ++s)
-    if (m & (1u << (s - 1))) out += (out.empty() ? "" : ",") + std::to_string(s);
-  return "{" + out + "}";
-}
-
 TEST(WatchdogSets, EveryMainSensorAndItsWatchSetFromAmOnTheWholeFirmware) {
   SimFirmware fw(ROBUTER_SHIPPED_WORLDS "/empty.toml", seed_rule_config());
   ASSERT_TRUE(fw.ok()) << fw.error();
@@ -76,7 +68,7 @@ TEST(WatchdogSets, EveryMainSensorAndItsWatchSetFromAmOnTheWholeFirmware) {
     const auto& e = fw.bb().emergency.reader().peek();
     ASSERT_TRUE(fw.run_until([&] { return e.main_sensor != 0; }, 20)) << "no verdict on the request";
     EXPECT_EQ(e.main_sensor, c.main);
-    EXPECT_EQ(e.watch, mask_of(c.watch)) << "published " << list(e.watch);
+    EXPECT_EQ(e.watch, mask_of(c.watch)) << "published " << sensor_list(e.watch);
     EXPECT_EQ(e.safety_mm, 300u) << "30 cm/s on the faster wheel";
     // Granted once the five sensors have data: the drive gets exactly these speeds.
     ASSERT_TRUE(fw.run_until([&] {
@@ -91,7 +83,7 @@ TEST(WatchdogSets, EveryMainSensorAndItsWatchSetFromAmOnTheWholeFirmware) {
     EXPECT_EQ(e.main_sensor, c.main);
     EXPECT_EQ(e.watch, mask_of(c.watch));
     covered.insert(e.main_sensor);
-    std::printf("AM %4d %4d -> main %2d watch %s\n", c.left, c.right, e.main_sensor, list(e.watch).c_str());
+    std::printf("AM %4d %4d -> main %2d watch %s\n", c.left, c.right, e.main_sensor, sensor_list(e.watch).c_str());
     ASSERT_EQ(fw.ask("AM 0 0"), "ack");
     ASSERT_TRUE(fw.run_until([&] { return e.main_sensor == 0 && commanded(fw).zero(); }, 20));
     EXPECT_EQ(e.watch, 0u) << "stopped: no watch set";

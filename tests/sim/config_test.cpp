@@ -65,7 +65,7 @@ offset = 0.0
 }
 
 // Expects a configuration error at `line` whose message contains `fragment`.
-void expect_error(const std::string& text, int line, const std::string& fragment) {
+void expect_sim_config_error(const std::string& text, int line, const std::string& fragment) {
   const auto r = parse_sim_config(text, "sim.toml");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().file, "sim.toml");
@@ -74,13 +74,13 @@ void expect_error(const std::string& text, int line, const std::string& fragment
 }
 
 TEST(SimConfig, ErrorsNameTheLine) {
-  expect_error("[robot]\nwheelbase = 0.6\n", 2, "[robot]: unknown key 'wheelbase'");
-  expect_error("[sonar]\ntimeout_ms = \"33\"\n", 2, "timeout_ms: expected a number");
-  expect_error("[sonar]\nhalf_angle_deg = 95\n", 2, "half_angle_deg: must be within 0..89");
-  expect_error("[sonar]\n[[sonar.sensor]]\nnumber = 25\n", 3, "number: must be within 1..24");
-  expect_error("[sonar]\n[[sonar.sensor]]\nx = 0.1\n", 2, "missing key 'number'");
-  expect_error("[lidar]\nrange = 4\n", 1, "unknown key 'lidar'");
-  expect_error("[robot]\naxle_to_front = 2.0\n", 1, "axle_to_front must lie within");
+  expect_sim_config_error("[robot]\nwheelbase = 0.6\n", 2, "[robot]: unknown key 'wheelbase'");
+  expect_sim_config_error("[sonar]\ntimeout_ms = \"33\"\n", 2, "timeout_ms: expected a number");
+  expect_sim_config_error("[sonar]\nhalf_angle_deg = 95\n", 2, "half_angle_deg: must be within 0..89");
+  expect_sim_config_error("[sonar]\n[[sonar.sensor]]\nnumber = 25\n", 3, "number: must be within 1..24");
+  expect_sim_config_error("[sonar]\n[[sonar.sensor]]\nx = 0.1\n", 2, "missing key 'number'");
+  expect_sim_config_error("[lidar]\nrange = 4\n", 1, "unknown key 'lidar'");
+  expect_sim_config_error("[robot]\naxle_to_front = 2.0\n", 1, "axle_to_front must lie within");
 }
 
 TEST(SimConfig, MissingFile) {

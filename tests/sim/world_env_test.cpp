@@ -9,7 +9,7 @@ namespace robuter::sim {
 namespace {
 
 // Expects a parse error at `line` whose message contains `fragment`.
-void expect_error(std::string_view text, int line, const std::string& fragment) {
+void expect_env_error(std::string_view text, int line, const std::string& fragment) {
   const auto r = parse_world_env(text, "lab.env");
   ASSERT_FALSE(r.ok()) << "parsed but should fail: " << text;
   EXPECT_EQ(r.error().file, "lab.env");
@@ -64,31 +64,31 @@ TEST(EnvFormat, TwoVertexObstacleIsAThinWall) {
 }
 
 TEST(EnvFormat, NonNumbers) {
-  expect_error("1\n3\n0 0\n1 x\n1 1\n", 4, "expected a number for y of vertex 2 of obstacle 1");
-  expect_error("one\n", 1, "the number of obstacles");
-  expect_error("1\nthree\n", 2, "vertex count of obstacle 1");
-  expect_error("1.5\n", 1, "whole number");
-  expect_error("1\n3\n0 0\n1 nan\n1 1\n", 4, "found 'nan'");
+  expect_env_error("1\n3\n0 0\n1 x\n1 1\n", 4, "expected a number for y of vertex 2 of obstacle 1");
+  expect_env_error("one\n", 1, "the number of obstacles");
+  expect_env_error("1\nthree\n", 2, "vertex count of obstacle 1");
+  expect_env_error("1.5\n", 1, "whole number");
+  expect_env_error("1\n3\n0 0\n1 nan\n1 1\n", 4, "found 'nan'");
 }
 
 TEST(EnvFormat, BadCounts) {
   // The first line promises 2 obstacles, the file holds 1.
-  expect_error("2\n3\n0 0\n1 0\n1 1\n", 1, "declares 2 obstacles but ends after 1");
+  expect_env_error("2\n3\n0 0\n1 0\n1 1\n", 1, "declares 2 obstacles but ends after 1");
   // The vertex count promises 4, the file ends after 3.
-  expect_error("1\n4\n0 0\n1 0\n1 1\n", 2, "declares 4 vertices but the file ends after 3");
+  expect_env_error("1\n4\n0 0\n1 0\n1 1\n", 2, "declares 4 vertices but the file ends after 3");
   // The vertex count promises 3 but a 4th vertex follows (read as trailing data).
-  expect_error("1\n3\n0 0\n1 0\n1 1\n0 1\n", 6, "unexpected data after the last of the 1");
+  expect_env_error("1\n3\n0 0\n1 0\n1 1\n0 1\n", 6, "unexpected data after the last of the 1");
   // The vertex count is too small to make an obstacle.
-  expect_error("1\n1\n0 0\n", 2, "obstacle 1 has 1 vertices");
-  expect_error("-1\n", 1, "cannot be negative");
+  expect_env_error("1\n1\n0 0\n", 2, "obstacle 1 has 1 vertices");
+  expect_env_error("-1\n", 1, "cannot be negative");
   // Too few vertices: the next obstacle's count line is read where a vertex was expected.
-  expect_error("2\n4\n0 0\n1 0\n1 1\n3\n2 2\n3 2\n3 3\n", 6, "single value where vertex 4");
+  expect_env_error("2\n4\n0 0\n1 0\n1 1\n3\n2 2\n3 2\n3 3\n", 6, "single value where vertex 4");
 }
 
 TEST(EnvFormat, MalformedLines) {
-  expect_error("1\n3\n0 0 0\n1 0\n1 1\n", 3, "expected 'x y' for vertex 1 of obstacle 1, found 3");
-  expect_error("1 3\n", 1, "alone on the line");
-  expect_error("1\n3\n0 0\n0 0\n0 0\n", 2, "no extent");
+  expect_env_error("1\n3\n0 0 0\n1 0\n1 1\n", 3, "expected 'x y' for vertex 1 of obstacle 1, found 3");
+  expect_env_error("1 3\n", 1, "alone on the line");
+  expect_env_error("1\n3\n0 0\n0 0\n0 0\n", 2, "no extent");
 }
 
 TEST(EnvFormat, MissingFileIsAnError) {

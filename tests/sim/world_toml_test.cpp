@@ -26,7 +26,7 @@ closed = true
 )";
 
 // Expects a parse error at `line` whose message contains `fragment`.
-void expect_error(const std::string& text, int line, const std::string& fragment) {
+void expect_world_error(const std::string& text, int line, const std::string& fragment) {
   const auto r = parse_world_toml(text, "room.toml");
   ASSERT_FALSE(r.ok()) << "parsed but should fail:\n" << text;
   EXPECT_EQ(r.error().file, "room.toml");
@@ -127,47 +127,47 @@ closed = true
   ASSERT_TRUE(r.ok()) << r.error().describe();
   EXPECT_DOUBLE_EQ(r.value().start->x, 1.0);
   EXPECT_NEAR(r.value().bounds().hi.x(), 5.05, 1e-12);
-  expect_error("[world]\nunits = \"ft\"\n[start]\nx = 1\ny = 1\n", 2, "units: expected");
+  expect_world_error("[world]\nunits = \"ft\"\n[start]\nx = 1\ny = 1\n", 2, "units: expected");
 }
 
 TEST(TomlWorld, UnknownKeys) {
-  expect_error(std::string(kRoom) + "colour = \"red\"\n", 15, "[[wall]] 'walls': unknown key 'colour'");
-  expect_error("[start]\nx = 1\ny = 1\nz = 0\n", 4, "[start]: unknown key 'z'");
-  expect_error("[start]\nx = 1\ny = 1\n[robot]\nlength = 1\n", 4, "unknown key 'robot'");
-  expect_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, 3]\nsize = [1, 1]\nheight = 2\n", 7,
+  expect_world_error(std::string(kRoom) + "colour = \"red\"\n", 15, "[[wall]] 'walls': unknown key 'colour'");
+  expect_world_error("[start]\nx = 1\ny = 1\nz = 0\n", 4, "[start]: unknown key 'z'");
+  expect_world_error("[start]\nx = 1\ny = 1\n[robot]\nlength = 1\n", 4, "unknown key 'robot'");
+  expect_world_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, 3]\nsize = [1, 1]\nheight = 2\n", 7,
                "[[box]] 'box 1': unknown key 'height'");
-  expect_error("[start]\nx = 1\ny = 1\n[[wall]]\nfrom = [3, 3]\nto = [4, 3]\n"
+  expect_world_error("[start]\nx = 1\ny = 1\n[[wall]]\nfrom = [3, 3]\nto = [4, 3]\n"
                "doors = [{ at = 0.5, width = 0.2, swing = 90 }]\n",
                7, "unknown key 'swing'");
 }
 
 TEST(TomlWorld, NonNumbers) {
-  expect_error("[start]\nx = \"one\"\ny = 1\n", 2, "[start]: x: expected a number, found a string");
-  expect_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, \"3\"]\nsize = [1, 1]\n", 5,
+  expect_world_error("[start]\nx = \"one\"\ny = 1\n", 2, "[start]: x: expected a number, found a string");
+  expect_world_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, \"3\"]\nsize = [1, 1]\n", 5,
                "center: expected a number");
-  expect_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, 3, 3]\nsize = [1, 1]\n", 5,
+  expect_world_error("[start]\nx = 1\ny = 1\n[[box]]\ncenter = [3, 3, 3]\nsize = [1, 1]\n", 5,
                "expected a point [x, y], found an array of 3 values");
-  expect_error("[start]\nx = 1\ny = 1\n[[wall]]\nfrom = [3, 3]\nto = [4, 3]\nthickness = true\n", 7,
+  expect_world_error("[start]\nx = 1\ny = 1\n[[wall]]\nfrom = [3, 3]\nto = [4, 3]\nthickness = true\n", 7,
                "thickness: expected a number, found a boolean");
 }
 
 TEST(TomlWorld, UnclosedPolygonsAndBadCounts) {
-  expect_error("[start]\nx = 1\ny = 1\n[[polygon]]\nname = \"p\"\npoints = [[3, 3], [4, 3], [4, 4]]\n",
+  expect_world_error("[start]\nx = 1\ny = 1\n[[polygon]]\nname = \"p\"\npoints = [[3, 3], [4, 3], [4, 4]]\n",
                6, "bad count: a polygon needs at least 3 corners");
-  expect_error("[start]\nx = 1\ny = 1\n[[polygon]]\nname = \"p\"\n"
+  expect_world_error("[start]\nx = 1\ny = 1\n[[polygon]]\nname = \"p\"\n"
                "points = [[3, 3], [4, 3], [4, 4], [3, 4]]\n",
                6, "[[polygon]] 'p': polygon is not closed");
-  expect_error("[start]\nx = 1\ny = 1\n[[polygon]]\npoints = [[3, 3], [4, 3], [5, 3], [3, 3]]\n", 5,
+  expect_world_error("[start]\nx = 1\ny = 1\n[[polygon]]\npoints = [[3, 3], [4, 3], [5, 3], [3, 3]]\n", 5,
                "no area");
-  expect_error("[start]\nx = 1\ny = 1\n[[wall]]\npoints = [[3, 3]]\n", 5, "at least 2 points");
+  expect_world_error("[start]\nx = 1\ny = 1\n[[wall]]\npoints = [[3, 3]]\n", 5, "at least 2 points");
 }
 
 TEST(TomlWorld, StartPoseInsideAWall) {
   // The body (0.695 ahead, 0.330 behind, 0.35 each side) reaches the wall at x = 1.5.
-  expect_error("[start]\nx = 1.0\ny = 1\n[[wall]]\nname = \"w\"\nfrom = [1.6, 0]\nto = [1.6, 3]\n", 1,
+  expect_world_error("[start]\nx = 1.0\ny = 1\n[[wall]]\nname = \"w\"\nfrom = [1.6, 0]\nto = [1.6, 3]\n", 1,
                "start pose is inside a wall: the robot's body there overlaps obstacle 'w' (line 4)");
   // Entirely inside a big box.
-  expect_error("# comment\n[start]\nx = 1.0\ny = 1\n[[box]]\nname = \"big\"\ncenter = [1, 1]\n"
+  expect_world_error("# comment\n[start]\nx = 1.0\ny = 1\n[[box]]\nname = \"big\"\ncenter = [1, 1]\n"
                "size = [4, 4]\n",
                2, "start pose is inside obstacle 'big'");
   // Just clear of it is fine.
@@ -177,26 +177,26 @@ TEST(TomlWorld, StartPoseInsideAWall) {
 }
 
 TEST(TomlWorld, MissingAndMisplacedTables) {
-  expect_error("[[wall]]\nfrom = [0, 0]\nto = [1, 0]\n", 1, "missing [start]");
-  expect_error("[start]\nx = 1\n", 1, "[start]: missing key 'y'");
-  expect_error("[start]\nx = 1\ny = 1\n[wall]\nfrom = [3, 0]\nto = [4, 0]\n", 4, "must be written [[wall]]");
-  expect_error("[[start]]\nx = 1\ny = 1\n", 1, "must be a table [start]");
+  expect_world_error("[[wall]]\nfrom = [0, 0]\nto = [1, 0]\n", 1, "missing [start]");
+  expect_world_error("[start]\nx = 1\n", 1, "[start]: missing key 'y'");
+  expect_world_error("[start]\nx = 1\ny = 1\n[wall]\nfrom = [3, 0]\nto = [4, 0]\n", 4, "must be written [[wall]]");
+  expect_world_error("[[start]]\nx = 1\ny = 1\n", 1, "must be a table [start]");
 }
 
 TEST(TomlWorld, DoorsMustFitAndNotOverlap) {
   const std::string head = "[start]\nx = 1\ny = 1\n[[wall]]\nname = \"w\"\nfrom = [3, 0]\nto = [3, 4]\n";
-  expect_error(head + "doors = [{ at = 0.2, width = 0.9 }]\n", 8, "does not fit in its wall");
-  expect_error(head + "doors = [\n  { name = \"a\", at = 1.0, width = 0.9 },\n"
+  expect_world_error(head + "doors = [{ at = 0.2, width = 0.9 }]\n", 8, "does not fit in its wall");
+  expect_world_error(head + "doors = [\n  { name = \"a\", at = 1.0, width = 0.9 },\n"
                       "  { name = \"b\", at = 1.5, width = 0.9 },\n]\n",
                10, "doors 'a' and 'b' overlap");
-  expect_error(head + "doors = [{ at = 1.0, width = 0 }]\n", 8, "width: must be positive");
-  expect_error("[start]\nx = 1\ny = 1\n[[wall]]\npoints = [[3, 0], [3, 4]]\n"
+  expect_world_error(head + "doors = [{ at = 1.0, width = 0 }]\n", 8, "width: must be positive");
+  expect_world_error("[start]\nx = 1\ny = 1\n[[wall]]\npoints = [[3, 0], [3, 4]]\n"
                "doors = [{ at = 1.0, width = 0.9 }]\n",
                6, "only a straight wall");
 }
 
 TEST(TomlWorld, DuplicateNames) {
-  expect_error("[start]\nx = 1\ny = 1\n[[box]]\nname = \"a\"\ncenter = [3, 3]\nsize = [1, 1]\n"
+  expect_world_error("[start]\nx = 1\ny = 1\n[[box]]\nname = \"a\"\ncenter = [3, 3]\nsize = [1, 1]\n"
                "[[box]]\nname = \"a\"\ncenter = [5, 3]\nsize = [1, 1]\n",
                8, "duplicate name 'a' (first used on line 4)");
 }

@@ -16,10 +16,10 @@ namespace {
 
 // The robot's axle at (2, 2) m heading east in a 4 × 4 m box of 10 cm walls: sensor 1 (on the
 // front face, 695 mm ahead of the axle) is 1255 mm from the east wall's inner face (3.95 m).
-struct Box {
+struct BoxedRobot {
   std::string file;
   std::optional<SimRobot> robot;
-  Box() {
+  BoxedRobot() {
     file = (std::filesystem::temp_directory_path() / ("robuter-sitl-ring-" + std::to_string(::getpid()) + ".toml")).string();
     std::ofstream(file) << "[world]\nname = \"box\"\nunits = \"m\"\n[start]\nx = 2.0\ny = 2.0\nheading_deg = 0.0\n"
                         << "[[wall]]\npoints = [[0, 0], [4, 0], [4, 4], [0, 4]]\nclosed = true\n";
@@ -27,13 +27,13 @@ struct Box {
     opt.world_file = file;
     robot.emplace(Config{}, opt);
   }
-  ~Box() { std::filesystem::remove(file); }
+  ~BoxedRobot() { std::filesystem::remove(file); }
 };
 
 constexpr double kEcho = 2.0 * 1.255 / 300.0;  // sensor 1's round trip, s (8.37 ms)
 
 TEST(SimRing, ANodeReportsOnceItsEchoesAreIn) {
-  Box b;
+  BoxedRobot b;
   ASSERT_FALSE(b.robot->error()) << *b.robot->error();
   SimRobot& r = *b.robot;
   const double t0 = r.time();
@@ -48,7 +48,7 @@ TEST(SimRing, ANodeReportsOnceItsEchoesAreIn) {
 }
 
 TEST(SimRing, ANodeMeasuresWhereTheRobotWasWhenItFired) {
-  Box b;
+  BoxedRobot b;
   SimRobot& r = *b.robot;
   const double t0 = r.time();
   ASSERT_TRUE(r.ring().fire(0, 0x1));
@@ -60,7 +60,7 @@ TEST(SimRing, ANodeMeasuresWhereTheRobotWasWhenItFired) {
 }
 
 TEST(SimRing, AShortenedFiringHearsOnlyItsReachAndReportsAtItsTimeOut) {
-  Box b;
+  BoxedRobot b;
   SimRobot& r = *b.robot;
   const double t0 = r.time();
   ASSERT_TRUE(r.ring().fire(0, 0x1, 5));  // 5 ms: 750 mm at 300 m/s, the wall is at 1255 mm

@@ -21,7 +21,7 @@
 
 namespace {
 volatile std::sig_atomic_t g_stop = 0;  // SIGINT/SIGTERM
-extern "C" void on_stop(int) { g_stop = 1; }
+void on_stop(int) { g_stop = 1; }  // C++ linkage: kernel/signals.cpp defines a C-linkage on_stop
 
 std::int64_t monotonic_us() {
   timespec ts{};
