@@ -4,21 +4,16 @@
 
 namespace robuter {
 
-namespace {
-constexpr param::Param<KernelConfig> kKernelParams[] = {
-    {"tick_us", &KernelConfig::tick_us, "µs", 100, 1'000'000, "",
-     "tick length, µs (seed: 10 ms)"},
-    {"realtime", &KernelConfig::realtime, "bool", 0, 0, "",
-     "ask for SCHED_FIFO at start-up"},
-    {"rt_priority", &KernelConfig::rt_priority, "", 1, 99, "",
-     "SCHED_FIFO priority, 1..99"},
-    {"lock_memory", &KernelConfig::lock_memory, "bool", 0, 0, "",
-     "mlockall(MCL_CURRENT | MCL_FUTURE) at start-up"},
-    {"log_level", &KernelConfig::log_level, "", 0, 0, "debug|info|warn|error|off",
-     "debug, info, warn, error, off"},
-};
-}  // namespace
-
-std::span<const param::Param<KernelConfig>> kernel_params() { return kKernelParams; }
+std::span<const param::Param<KernelConfig>> kernel_params() {
+  using P = param::Param<KernelConfig>;
+  static constexpr P kRows[] = {
+      P::integer("tick_us", &KernelConfig::tick_us, "µs", 100, 1'000'000, "tick length, µs (seed: 10 ms)"),
+      P::flag("realtime", &KernelConfig::realtime, "ask for SCHED_FIFO at start-up"),
+      P::integer("rt_priority", &KernelConfig::rt_priority, "", 1, 99, "SCHED_FIFO priority, 1..99"),
+      P::flag("lock_memory", &KernelConfig::lock_memory, "mlockall(MCL_CURRENT | MCL_FUTURE) at start-up"),
+      P::word("log_level", &KernelConfig::log_level, "debug|info|warn|error|off", "debug, info, warn, error, off"),
+  };
+  return kRows;
+}
 
 }  // namespace robuter

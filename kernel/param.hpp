@@ -32,6 +32,25 @@ struct Param {
   long long hi = 0;          // integers: largest value accepted
   std::string_view choices;  // strings: the words accepted, '|'-separated ("" = any text)
   std::string_view doc;      // what it does, one line
+
+  // The rows of a table, one constructor per kind (a table reads one key per line):
+  // a boolean key (unit "bool");
+  static constexpr Param flag(std::string_view key, bool S::*f, std::string_view doc) {
+    return {key, f, "bool", 0, 0, "", doc};
+  }
+  // an integer, or a list of integers, each within lo..hi;
+  static constexpr Param integer(std::string_view key, Field<S> f, std::string_view unit, long long lo, long long hi,
+                                 std::string_view doc) {
+    return {key, f, unit, lo, hi, "", doc};
+  }
+  // a word, one of `choices` ('|'-separated);
+  static constexpr Param word(std::string_view key, std::string S::*f, std::string_view choices, std::string_view doc) {
+    return {key, f, "", 0, 0, choices, doc};
+  }
+  // any text, or a list of texts (a path, a name, command prefixes).
+  static constexpr Param text(std::string_view key, Field<S> f, std::string_view unit, std::string_view doc) {
+    return {key, f, unit, 0, 0, "", doc};
+  }
 };
 
 }  // namespace robuter::param

@@ -4,25 +4,20 @@
 
 namespace robuter::doors {
 
-CrossingSettings crossing_settings(const Config& c) {
+CrossingSettings crossing_settings(const DoorsConfig& d, const robot::RobotModel& m, const ptu::EchoGeometry& echoes) {
   CrossingSettings s;
-  const robot::RobotModel m = robot_model(c);
-  s.body = body_geometry(m, static_cast<std::int32_t>(c.doors.safety_mm));
-  s.echoes.pivot_x_mm = m.pan_tilt.pivot_x * 1000.0;
-  s.echoes.face_mm = m.pan_tilt.face_offset * 1000.0;
-  s.echoes.beam_half_deg = m.pan_tilt.half_angle / robot::kDeg;
-  s.echoes.same_echo_mm = static_cast<std::int32_t>(c.doors.same_echo_mm);
-  s.echoes.far_mm = static_cast<std::int32_t>(c.gate.max_mm);
-  s.speeds.forward_cm_s = static_cast<std::int32_t>(c.doors.forward_cm_s);
-  s.speeds.back_cm_s = static_cast<std::int32_t>(c.doors.back_cm_s);
-  s.spread_weight = c.doors.echo_spread_percent / 100.0;
-  s.max_dist_mm = static_cast<std::int32_t>(c.doors.max_dist_mm);
-  s.time_before_move_ticks = c.doors.time_before_move_ticks;
-  s.entered_mm = static_cast<std::int32_t>(c.doors.entered_mm);
-  s.beside_mm = c.doors.beside_mm;
-  s.exit_mm = c.doors.exit_mm;
-  s.max_age_ticks = c.doors.max_age_ticks;
-  s.timeout_ticks = c.doors.timeout_ticks;
+  s.body = body_geometry(m, static_cast<std::int32_t>(d.safety_mm));
+  s.echoes = echoes;
+  s.speeds.forward_cm_s = static_cast<std::int32_t>(d.forward_cm_s);
+  s.speeds.back_cm_s = static_cast<std::int32_t>(d.back_cm_s);
+  s.spread_weight = d.echo_spread_percent / 100.0;
+  s.max_dist_mm = static_cast<std::int32_t>(d.max_dist_mm);
+  s.time_before_move_ticks = d.time_before_move_ticks;
+  s.entered_mm = static_cast<std::int32_t>(d.entered_mm);
+  s.beside_mm = d.beside_mm;
+  s.exit_mm = d.exit_mm;
+  s.max_age_ticks = d.max_age_ticks;
+  s.timeout_ticks = d.timeout_ticks;
   return s;
 }
 

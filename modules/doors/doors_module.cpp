@@ -9,9 +9,10 @@
 
 namespace robuter {
 
-DoorsModule::DoorsModule(Blackboard& bb, const Config& cfg, EmergencyModule* emergency)
-    : crossing_(doors::crossing_settings(cfg)),
-      crossing_mask_(static_cast<std::uint8_t>(cfg.doors.emergency_mask & kDetectAll)),
+DoorsModule::DoorsModule(Blackboard& bb, const DoorsConfig& cfg, const robot::RobotModel& model,
+                         const ptu::EchoGeometry& echoes, EmergencyModule* emergency)
+    : crossing_(doors::crossing_settings(cfg, model, echoes)),
+      crossing_mask_(static_cast<std::uint8_t>(cfg.emergency_mask & kDetectAll)),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),

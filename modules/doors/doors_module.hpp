@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
-#include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/doors/crossing.hpp"
+#include "modules/doors/doors_params.hpp"
 #include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
@@ -24,7 +24,9 @@ class EmergencyModule;
 // closed, the time limit, the firmware stopping — gives the detections back at once.
 class DoorsModule final : public Process {
  public:
-  DoorsModule(Blackboard& bb, const Config& cfg, EmergencyModule* emergency);
+  // Its own section, the robot model and the pan-tilt's echo geometry (shared with the gate).
+  DoorsModule(Blackboard& bb, const DoorsConfig& cfg, const robot::RobotModel& model, const ptu::EchoGeometry& echoes,
+              EmergencyModule* emergency);
 
   bool init(Kernel& k) override;
   void run(Kernel& k) override;

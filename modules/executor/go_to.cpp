@@ -7,17 +7,13 @@
 #include <numbers>
 
 #include "robot/angles.hpp"
+#include "robot/wheel_speed.hpp"
 
 namespace robuter::executor {
 
 namespace {
 using robot::wrap_angle;  // (−π, π]: robot/angles.hpp
-// A speed in cm/s rounded, at least `lo` in magnitude when not zero, at most `hi`.
-std::int32_t shape(double v, std::int32_t lo, std::int32_t hi) {
-  const double m = std::clamp(std::abs(v), static_cast<double>(lo), static_cast<double>(hi));
-  const auto r = static_cast<std::int32_t>(std::lround(m));
-  return v < 0 ? -r : r;
-}
+using robot::wheel_command;  // whole cm/s within lo..hi: robot/wheel_speed.hpp
 }  // namespace
 
 void GoToController::start(const PostureUnits& target) {
@@ -29,7 +25,7 @@ void GoToController::start(const PostureUnits& target) {
 // Positive error = target counter-clockwise = right wheel forward, left wheel back.
 WheelSpeeds GoToController::turn(double error_rad) const {
   const double half_base_cm = static_cast<double>(s_.wheel_base_mm) / 20.0;
-  const std::int32_t w = shape(s_.turn_gain * error_rad * half_base_cm, s_.min_cm_s, s_.max_turn_cm_s);
+  const std::int32_t w = wheel_command(s_.turn_gain * error_rad * half_base_cm, s_.min_cm_s, s_.max_turn_cm_s);
   return {-w, w};
 }
 

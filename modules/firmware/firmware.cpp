@@ -279,7 +279,8 @@ std::optional<std::string> Firmware::setup() {
     localise->set_map(*map);
     if (auto err = keep_map_pose(*localise)) return *err;
   }
-  auto planner = std::make_unique<PlannerModule>(bb_, cfg_);  // sized at init, only if its row runs
+  auto planner = std::make_unique<PlannerModule>(bb_, cfg_.planner, robot_model(cfg_),
+                                                 planner::PlannerNeighbours{cfg_.ptu.cap_mm, cfg_.places.cross_doors});  // sized at init, only if its row runs
   if (prior_map) planner->set_prior_map(std::move(*prior_map));
   if (walls_) {
     planner->set_structure(walls_.get());
@@ -300,12 +301,17 @@ std::optional<std::string> Firmware::setup() {
   }
   if (places_) planner->set_places(places_.get());
   auto ptu = std::make_unique<PtuModule>(bb_, ptu_link_.get(), *ring_, ptu::ptu_settings(cfg_.ptu));
-  auto gate = std::make_unique<GateModule>(bb_, cfg_);
-  auto doors = std::make_unique<DoorsModule>(bb_, cfg_, emergency.get());
+  // The passage finder and the door crossing read the same echoes: one geometry for both, from
+  // the robot model and the two keys that group and bound them (doors.same_echo_mm, gate.max_mm).
+  const robot::RobotModel model = robot_model(cfg_);
+  const ptu::EchoGeometry echoes = ptu::echo_geometry(model, static_cast<std::int32_t>(cfg_.doors.same_echo_mm),
+                                                      static_cast<std::int32_t>(cfg_.gate.max_mm));
+  auto gate = std::make_unique<GateModule>(bb_, cfg_.gate, model, echoes);
+  auto doors = std::make_unique<DoorsModule>(bb_, cfg_.doors, model, echoes, emergency.get());
   emergency->add_motion_source(MotionSource::gate, bb_.gate_motion.reader());
   emergency->add_motion_source(MotionSource::doors, bb_.doors_motion.reader());
   gate->set_emergency(emergency.get());
-  auto demo = std::make_unique<DemoModule>(bb_, cfg_.demo, robot_model(cfg_));
+  auto demo = std::make_unique<DemoModule>(bb_, cfg_.demo, model);
   emergency->add_motion_source(MotionSource::demo, bb_.demo_motion.reader());
   demo->set_emergency(emergency.get());
   emergency->add_motion_source(MotionSource::planner, bb_.planner_motion.reader());

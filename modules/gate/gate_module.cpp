@@ -8,8 +8,9 @@
 
 namespace robuter {
 
-GateModule::GateModule(Blackboard& bb, const Config& cfg)
-    : logic_(gate::gate_settings(cfg)),
+GateModule::GateModule(Blackboard& bb, const GateConfig& cfg, const robot::RobotModel& model,
+                       const ptu::EchoGeometry& echoes)
+    : logic_(gate::gate_settings(cfg, model, echoes)),
       scan_(bb.pan_tilt_scan.reader()),
       ptu_(bb.pan_tilt_status.reader()),
       posture_(bb.posture.reader()),

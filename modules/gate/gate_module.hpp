@@ -2,9 +2,9 @@
 // Passage-finder module (AG / AT): runs GateLogic, asks for motion through the emergency gate.
 #pragma once
 
-#include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/gate/gate_logic.hpp"
+#include "modules/gate/gate_params.hpp"
 #include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/topics.hpp"
@@ -17,7 +17,8 @@ namespace robuter {
 // allowed manoeuvres, the pan-tilt failing, an emergency, or another motion request taking over.
 class GateModule final : public Process {
  public:
-  GateModule(Blackboard& bb, const Config& cfg);
+  // Its own section, the robot model and the pan-tilt's echo geometry (shared with the doors).
+  GateModule(Blackboard& bb, const GateConfig& cfg, const robot::RobotModel& model, const ptu::EchoGeometry& echoes);
   // The emergency module, triggered on every request so it is judged in the same tick.
   void set_emergency(Process* p) { requests_.set_emergency(p); }
 

@@ -6,7 +6,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "kernel/config.hpp"
+#include "modules/planner/planner_params.hpp"
+#include "robot/robot_model.hpp"
 
 namespace robuter::planner {
 
@@ -56,9 +57,9 @@ inline bool goal_on_map(const PlannerModuleConfig& p, std::int32_t x_tenth_mm, s
 // Why: the room a re-placed window leaves around the robot and the goal, 0.1 mm: the body's
 // reach from the axle (the farthest corner, which sweeps a disc turning in place), the planner's
 // translation margin, and one cell for the snap to the grid. The Robuter: 778 + 0 + 50 = 828 mm.
-inline std::int64_t window_margin(const Config& cfg) {
-  const double reach_mm = robot_model(cfg).body.corner_radius() * 1000.0;
-  return (static_cast<std::int64_t>(std::ceil(reach_mm)) + cfg.planner.margin_mm + cfg.planner.cell_mm) * 10;
+inline std::int64_t window_margin(const PlannerModuleConfig& p, const robot::RobotModel& m) {
+  const double reach_mm = m.body.corner_radius() * 1000.0;
+  return (static_cast<std::int64_t>(std::ceil(reach_mm)) + p.margin_mm + p.cell_mm) * 10;
 }
 
 namespace detail {
@@ -83,10 +84,11 @@ inline std::optional<std::int64_t> axis_shift(std::int64_t x0, std::int64_t w, s
 // evidence of the overlap shifts by whole cells), when both then lie at least window_margin()
 // inside it; otherwise none, and the goal is refused. A goal on the window needs no shift. With
 // an a-priori map ([planner] map_file) the map never moves: a goal off it is refused.
-inline std::optional<WindowShift> window_shift(const Config& cfg, const MapWindow& now, std::int64_t robot_x,
-                                               std::int64_t robot_y, std::int64_t goal_x, std::int64_t goal_y) {
-  if (now.cell == 0 || !cfg.planner.map_file.empty()) return std::nullopt;  // a prior map's geometry is fixed
-  const std::int64_t margin = window_margin(cfg);
+inline std::optional<WindowShift> window_shift(const PlannerModuleConfig& p, const robot::RobotModel& m,
+                                               const MapWindow& now, std::int64_t robot_x, std::int64_t robot_y,
+                                               std::int64_t goal_x, std::int64_t goal_y) {
+  if (now.cell == 0 || !p.map_file.empty()) return std::nullopt;  // a prior map's geometry is fixed
+  const std::int64_t margin = window_margin(p, m);
   const auto sx = detail::axis_shift(now.x0, now.w, now.cell, robot_x, goal_x, margin);
   const auto sy = detail::axis_shift(now.y0, now.h, now.cell, robot_y, goal_y, margin);
   if (!sx || !sy) return std::nullopt;
@@ -96,9 +98,9 @@ inline std::optional<WindowShift> window_shift(const Config& cfg, const MapWindo
 // Why: XG's whole rule, in one place for the link and the planner: a goal on the current window
 // is taken; a goal off it is taken when the window can move to hold the robot and the goal
 // (never with an a-priori map file).
-inline bool goal_acceptable(const Config& cfg, const MapWindow& now, std::int64_t robot_x, std::int64_t robot_y,
-                            std::int64_t goal_x, std::int64_t goal_y) {
-  return on_window(now, goal_x, goal_y) || window_shift(cfg, now, robot_x, robot_y, goal_x, goal_y).has_value();
+inline bool goal_acceptable(const PlannerModuleConfig& p, const robot::RobotModel& m, const MapWindow& now,
+                            std::int64_t robot_x, std::int64_t robot_y, std::int64_t goal_x, std::int64_t goal_y) {
+  return on_window(now, goal_x, goal_y) || window_shift(p, m, now, robot_x, robot_y, goal_x, goal_y).has_value();
 }
 
 }  // namespace robuter::planner

@@ -44,8 +44,9 @@ planner::FollowerSettings follower_settings(const planner::PlannerSettings& s) {
 }
 }  // namespace
 
-PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
-    : s_(planner::make_settings(cfg)),
+PlannerModule::PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, const robot::RobotModel& model,
+                             const planner::PlannerNeighbours& neighbours)
+    : s_(planner::make_settings(cfg, model, neighbours.pan_far_mm)),
       planner_(s_.planner),
       follower_(follower_settings(s_)),
       posture_(bb.posture.reader()),
@@ -60,9 +61,10 @@ PlannerModule::PlannerModule(Blackboard& bb, const Config& cfg)
       motion_out_(bb.planner_motion.writer()),
       status_out_(bb.planner_status.writer()),
       map_out_(bb.planner_map.writer()),
-      map_x0_mm_(cfg.planner.map_origin_x_mm),
-      map_y0_mm_(cfg.planner.map_origin_y_mm),
-      cfg_(cfg) {}
+      map_x0_mm_(cfg.map_origin_x_mm),
+      map_y0_mm_(cfg.map_origin_y_mm),
+      cfg_(cfg),
+      cross_doors_(neighbours.cross_doors) {}
 
 // Everything sized here: the map, the C-space layers, the searches' arrays.
 bool PlannerModule::init(Kernel& k) {
@@ -150,15 +152,15 @@ void PlannerModule::skip_readings() {
 // The same rule as the link's check (planner::goal_acceptable), from the posture now: the robot
 // may have moved a little since the XG was taken, which the margin absorbs.
 void PlannerModule::place_window(std::uint64_t tick) {
-  const planner::MapWindow now = planner::window_at(cfg_.planner, map_x0_mm_, map_y0_mm_);
+  const planner::MapWindow now = planner::window_at(cfg_, map_x0_mm_, map_y0_mm_);
   const executor::PostureUnits at = localise::map_posture(posture_.peek(), localisation_.peek());
   const PlannerGoal::Via t = target();
   if (planner::on_window(now, t.x, t.y)) return;
-  const auto shift = planner::window_shift(cfg_, now, at.x, at.y, t.x, t.y);
+  const auto shift = planner::window_shift(cfg_, s_.robot, now, at.x, at.y, t.x, t.y);
   if (!shift) return;  // the plan then reports the goal off the map: unreachable
   planner_.shift_map(shift->dx, shift->dy);
-  map_x0_mm_ += std::int64_t{shift->dx} * cfg_.planner.cell_mm;
-  map_y0_mm_ += std::int64_t{shift->dy} * cfg_.planner.cell_mm;
+  map_x0_mm_ += std::int64_t{shift->dx} * cfg_.cell_mm;
+  map_y0_mm_ += std::int64_t{shift->dy} * cfg_.cell_mm;
   prepared_seq_ = 0;  // the cost field is to be made on the moved map
   log::info("planner: map window moved by ({}, {}) cells to ({}, {}) mm at tick {}", shift->dx, shift->dy,
             map_x0_mm_, map_y0_mm_, tick);
@@ -320,7 +322,7 @@ bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
   }
   if (add_via_turn(pose)) return true;
   const PlannerGoal::Via& v = goal_.via[via_next_];
-  if (!cfg_.places.cross_doors || !v.has_theta) {
+  if (!cross_doors_ || !v.has_theta) {
     next_via(tick, "reached");
     return false;
   }

@@ -9,7 +9,6 @@
 #include <span>
 #include <utility>
 
-#include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/planner/lib/planner.hpp"
@@ -41,7 +40,9 @@ class PlannerModule final : public Process {
   static constexpr double kViaTolerance = 0.30;  // m: a route's via point is passed this close
   static constexpr std::uint64_t kLendTicks = 50;  // ticks the arbiter has to lend the robot to the door crossing
 
-  PlannerModule(Blackboard& bb, const Config& cfg);
+  // Its own section, the robot model, and what it reads of the pan-tilt's and the places' sections.
+  PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, const robot::RobotModel& model,
+                const planner::PlannerNeighbours& neighbours);
   // The emergency module, triggered when the requested speeds change so a stop acts this tick.
   void set_emergency(Process* p) { emergency_process_ = p; }
   // Pictures (robuterd --planner-pictures): every plan is copied into `box` in the activation
@@ -217,7 +218,8 @@ class PlannerModule final : public Process {
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
   std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
   std::int64_t map_x0_mm_ = 0, map_y0_mm_ = 0;   // mm, the map window's lower-left corner
-  const Config& cfg_;                      // for the window's rule (planner::window_shift)
+  PlannerModuleConfig cfg_;                // its section, for the window's rule (planner::window_shift)
+  bool cross_doors_ = false;               // places.cross_doors: lend the robot to the doors at a narrow door
 };
 
 }  // namespace robuter

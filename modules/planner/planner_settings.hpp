@@ -4,9 +4,11 @@
 
 #include <cstdint>
 
-#include "kernel/config.hpp"
 #include "modules/planner/lib/occupancy_map.hpp"
 #include "modules/planner/lib/planner.hpp"
+#include "modules/planner/planner_params.hpp"
+#include "modules/places/places_params.hpp"
+#include "modules/ptu/ptu_params.hpp"
 #include "robot/robot_model.hpp"
 
 namespace robuter::planner {
@@ -36,7 +38,15 @@ struct PlannerSettings {
                                               // new: 20,000 took 4-6.5 ms in the seed 000 lab run)
 };
 
-// Why: one place turns the configuration's mm and counts into the planner's m and cells.
-PlannerSettings make_settings(const Config& cfg);
+// What the planner reads of its neighbours' sections, handed over by the firmware's composition.
+struct PlannerNeighbours {
+  std::uint32_t pan_far_mm = PanTiltConfig{}.cap_mm;  // ptu.cap_mm: a pan-tilt reading at or beyond this is "no echo", mm
+  bool cross_doors = PlacesConfig{}.cross_doors;      // places.cross_doors: at a narrow door, lend the robot to the doors
+};
+
+// Why: one place turns the configuration's mm and counts into the planner's m and cells: its
+// section, the robot model (body, mounts, wheel base, top speed) and the pan-tilt's far reading.
+PlannerSettings make_settings(const PlannerModuleConfig& p, const robot::RobotModel& m,
+                              std::uint32_t pan_far_mm = PlannerNeighbours{}.pan_far_mm);
 
 }  // namespace robuter::planner

@@ -9,6 +9,16 @@
 
 namespace robuter::ptu {
 
+EchoGeometry echo_geometry(const robot::RobotModel& m, std::int32_t same_echo_mm, std::int32_t far_mm) {
+  EchoGeometry g;
+  g.pivot_x_mm = m.pan_tilt.pivot_x * 1000.0;
+  g.face_mm = m.pan_tilt.face_offset * 1000.0;
+  g.beam_half_deg = m.pan_tilt.half_angle / robot::kDeg;
+  g.same_echo_mm = same_echo_mm;
+  g.far_mm = far_mm;
+  return g;
+}
+
 double wrap_deg(double a) {
   a = std::remainder(a, 360.0);
   return a <= -180.0 ? a + 360.0 : a;

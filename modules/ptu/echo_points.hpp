@@ -22,6 +22,11 @@ struct EchoGeometry {
   std::uint64_t run_window_ticks = 60;  // neighbours read within this of each other belong to one pass, ticks
 };
 
+// The echo geometry of a robot model's pan-tilt mount, with the grouping and range limits the
+// configuration gives (doors.same_echo_mm, gate.max_mm): one rule for the passage finder and the
+// door crossing, which read the same echoes.
+EchoGeometry echo_geometry(const robot::RobotModel& m, std::int32_t same_echo_mm, std::int32_t far_mm);
+
 // One sector's echo in the robot's current frame (x forward, y left, origin the wheel axle).
 struct Echo {
   bool valid = false;         // read, and younger than the age limit

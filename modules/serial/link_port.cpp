@@ -229,7 +229,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
           ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
           : planner::configured_window(cfg_.planner);
   const executor::PostureUnits at = map_pose();
-  if (!planner::goal_acceptable(cfg_, now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
+  if (!planner::goal_acceptable(cfg_.planner, robot_model(cfg_), now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   w_.goal.modify([&](PlannerGoal& p) {
     p.x = g.x;
@@ -280,7 +280,7 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
           : planner::configured_window(cfg_.planner);
   std::int64_t fx = at.x, fy = at.y;
   for (const places::ViaPoint& p : pts) {
-    if (!planner::goal_acceptable(cfg_, now, fx, fy, p.x, p.y)) return PortResult::out_of_range;
+    if (!planner::goal_acceptable(cfg_.planner, robot_model(cfg_), now, fx, fy, p.x, p.y)) return PortResult::out_of_range;
     fx = p.x;
     fy = p.y;
   }

@@ -4,21 +4,16 @@
 
 namespace robuter {
 
-namespace {
-constexpr param::Param<SonarConfig> kSonarParams[] = {
-    {"node_delay_ticks", &SonarConfig::node_delay_ticks, "ticks", 0, 1000, "",
-     "delay between firing two nodes, ticks"},
-    {"timeout_ms", &SonarConfig::timeout_ms, "ms", 1, 1000, "",
-     "echo time-out, ms (≈ 5 m at 300 m/s)"},
-    {"sound_speed_m_s", &SonarConfig::sound_speed_m_s, "m/s", 200, 400, "",
-     "calibrated speed of sound, m/s"},
-    {"schedule", &SonarConfig::schedule, "", 0, 0, "watch|seed",
-     "firing order while moving: \"watch\" (where the robot goes"},
-    {"moving_timeout_ms", &SonarConfig::moving_timeout_ms, "ms", 0, 1000, "",
-     "echo time-out of the rotation's firings between two watch"},
-};
-}  // namespace
-
-std::span<const param::Param<SonarConfig>> sonar_params() { return kSonarParams; }
+std::span<const param::Param<SonarConfig>> sonar_params() {
+  using P = param::Param<SonarConfig>;
+  static constexpr P kRows[] = {
+      P::integer("node_delay_ticks", &SonarConfig::node_delay_ticks, "ticks", 0, 1000, "delay between firing two nodes, ticks"),
+      P::integer("timeout_ms", &SonarConfig::timeout_ms, "ms", 1, 1000, "echo time-out, ms (≈ 5 m at 300 m/s)"),
+      P::integer("sound_speed_m_s", &SonarConfig::sound_speed_m_s, "m/s", 200, 400, "calibrated speed of sound, m/s"),
+      P::word("schedule", &SonarConfig::schedule, "watch|seed", "firing order while moving: \"watch\" (where the robot goes"),
+      P::integer("moving_timeout_ms", &SonarConfig::moving_timeout_ms, "ms", 0, 1000, "echo time-out of the rotation's firings between two watch"),
+  };
+  return kRows;
+}
 
 }  // namespace robuter

@@ -44,7 +44,7 @@ TEST(PlannerSimDoor, RectanglePlansThroughThe90cmDoorDiscReportsNoPath) {
   const plan::Point2 goal{world.goal->x(), world.goal->y()};
 
   Config cfg = world_config();
-  const planner::PlannerSettings rect = planner::make_settings(cfg);
+  const planner::PlannerSettings rect = planner::make_settings(cfg.planner, robot_model(cfg), cfg.ptu.cap_mm);
   ASSERT_EQ(rect.planner.footprint, plan::FootprintKind::Rectangle);
   plan::Planner p(rect.planner);
   p.set_map(known_map(world, rect));
@@ -64,7 +64,7 @@ TEST(PlannerSimDoor, RectanglePlansThroughThe90cmDoorDiscReportsNoPath) {
               r.length * rect.map.resolution, w.size(), r.expanded);
 
   cfg.planner.footprint = "disc";  // the thesis' method: the body as the disc it sweeps turning
-  const planner::PlannerSettings disc = planner::make_settings(cfg);
+  const planner::PlannerSettings disc = planner::make_settings(cfg.planner, robot_model(cfg), cfg.ptu.cap_mm);
   plan::Planner q(disc.planner);
   q.set_map(known_map(world, disc));
   const plan::PlanResult d = q.plan(start, goal);

@@ -18,19 +18,19 @@ TEST(PlannerWindow, TheRuleCentresTheWindowOnWholeCellsAndNeedsTheMargin) {
   const planner::MapWindow now = planner::configured_window(cfg.planner);
   EXPECT_EQ(now.x0, -80'000);
   EXPECT_EQ(now.w, 160'000);
-  EXPECT_EQ(planner::window_margin(cfg), 8'290);  // 779 mm (rounded up) + 0 + 50 mm
+  EXPECT_EQ(planner::window_margin(cfg.planner, robot_model(cfg)), 8'290);  // 779 mm (rounded up) + 0 + 50 mm
   // Seed 000: robot at (2.5, 2.0) m, goal (15.0, 5.5) m: off the default window.
   EXPECT_FALSE(planner::on_window(now, 150'000, 55'000));
-  const auto s = planner::window_shift(cfg, now, 25'000, 20'000, 150'000, 55'000);
+  const auto s = planner::window_shift(cfg.planner, robot_model(cfg), now, 25'000, 20'000, 150'000, 55'000);
   ASSERT_TRUE(s);
   EXPECT_EQ(s->dx, 175);  // corner (0.75, -4.25) m: centred on (8.75, 3.75) m
   EXPECT_EQ(s->dy, 75);
-  EXPECT_TRUE(planner::goal_acceptable(cfg, now, 25'000, 20'000, 150'000, 55'000));
+  EXPECT_TRUE(planner::goal_acceptable(cfg.planner, robot_model(cfg), now, 25'000, 20'000, 150'000, 55'000));
   // 14.3 m apart fits (0.85 m each side); 15 m does not; a goal on the window needs no move.
-  EXPECT_TRUE(planner::window_shift(cfg, now, 0, 0, 0, 143'000));
-  EXPECT_FALSE(planner::window_shift(cfg, now, 0, 0, 0, 150'000));
-  EXPECT_FALSE(planner::goal_acceptable(cfg, now, 0, 0, 0, 150'000));
-  EXPECT_TRUE(planner::goal_acceptable(cfg, now, 0, 0, 79'999, 0));
+  EXPECT_TRUE(planner::window_shift(cfg.planner, robot_model(cfg), now, 0, 0, 0, 143'000));
+  EXPECT_FALSE(planner::window_shift(cfg.planner, robot_model(cfg), now, 0, 0, 0, 150'000));
+  EXPECT_FALSE(planner::goal_acceptable(cfg.planner, robot_model(cfg), now, 0, 0, 0, 150'000));
+  EXPECT_TRUE(planner::goal_acceptable(cfg.planner, robot_model(cfg), now, 0, 0, 79'999, 0));
 }
 
 // Why: a goal no window of the configured size holds with the robot is refused (error 4) and
@@ -139,8 +139,8 @@ TEST(PlannerWindow, WithAnAPrioriMapFileAGoalOffTheMapIsRefused) {
   Config unknown = file;
   unknown.planner.map_file.clear();
   const planner::MapWindow now = planner::configured_window(file.planner);
-  EXPECT_TRUE(planner::window_shift(unknown, now, 15'000, 15'000, 15'000, 68'000));
-  EXPECT_FALSE(planner::goal_acceptable(file, now, 15'000, 15'000, 15'000, 68'000));
+  EXPECT_TRUE(planner::window_shift(unknown.planner, robot_model(unknown), now, 15'000, 15'000, 15'000, 68'000));
+  EXPECT_FALSE(planner::goal_acceptable(file.planner, robot_model(file), now, 15'000, 15'000, 15'000, 68'000));
   EXPECT_EQ(fw.ask("XG 15000 68000"), "error 4 out-of-range");
   fw.run_ticks(20);
   EXPECT_EQ(pm->state(), PlannerState::idle);

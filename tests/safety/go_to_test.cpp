@@ -7,6 +7,7 @@
 
 #include "modules/executor/go_to.hpp"
 #include "modules/executor/posture_units.hpp"
+#include "robot/wheel_speed.hpp"
 
 namespace robuter::executor {
 namespace {
@@ -115,6 +116,16 @@ TEST(PostureUnits, MetresAndTenthsOfMillimetres) {
   EXPECT_NEAR(o.theta_rad, std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(metres_to_tenth_mm(1e12), 2147483647);
   EXPECT_EQ(metres_to_tenth_mm(std::nan("")), 0);
+}
+
+// The one rounding of a controller's wheel speed (go-to and the planner's path follower).
+TEST(WheelCommand, RoundsToWholeCmPerSecondWithinTheLimitsAndKeepsTheSign) {
+  EXPECT_EQ(robot::wheel_command(12.4, 2, 30), 12);
+  EXPECT_EQ(robot::wheel_command(-12.6, 2, 30), -13);
+  EXPECT_EQ(robot::wheel_command(0.3, 2, 30), 2);    // too little to move the wheel: lo
+  EXPECT_EQ(robot::wheel_command(-0.3, 2, 30), -2);
+  EXPECT_EQ(robot::wheel_command(80.0, 2, 30), 30);  // at most hi
+  EXPECT_EQ(robot::wheel_command(-80.0, 2, 30), -30);
 }
 
 }  // namespace

@@ -503,7 +503,7 @@ struct FirmwareCase {
 // the case has no path (reported).
 bool bench_firmware(const FirmwareCase& fc, bool check_default) {
   const long hwm0 = vm_hwm_kb();
-  const robuter::planner::PlannerSettings settings = robuter::planner::make_settings(robuter::Config{});
+  const robuter::planner::PlannerSettings settings = robuter::planner::make_settings(robuter::PlannerModuleConfig{}, robuter::robot::kRobuter);
   const OccupancyMap& base = fc.map;
   const Pose2 start = fc.start;
   const Point2 goal = fc.goal;
@@ -678,7 +678,7 @@ void bench_firmware_all(const std::string& root) {
         const Pose2 s{world.start->x, world.start->y, world.start->theta};
         // The default [planner] window (make_settings), placed around the world's start as the
         // module places it around the odometry origin.
-        MapGeometry g = robuter::planner::make_settings(robuter::Config{}).map;
+        MapGeometry g = robuter::planner::make_settings(robuter::PlannerModuleConfig{}, robuter::robot::kRobuter).map;
         g.origin = {s.x + g.origin.x, s.y + g.origin.y};
         FirmwareCase fc{"default", OccupancyMap(g), s, Point2{world.goal->x(), world.goal->y()}};
         for (int y = 0; y < g.height; ++y)
