@@ -103,6 +103,21 @@ class NoSonarRing final : public hal::SonarRing {
   bool fire(int, std::uint8_t, std::uint32_t = 0) override { return false; }
   bool read(int, hal::NodeRanges&) override { return false; }
 };
+
+// The link's sections and the keys of its neighbours' it checks commands against (the serial
+// module is given these, not the whole configuration).
+LinkSettings link_settings(const Config& cfg) {
+  LinkSettings s;
+  s.permissions = cfg.permissions;
+  s.stop_when_clients_leave = cfg.links.stop_when_clients_leave;
+  s.max_speed_cm_s = cfg.robot.max_speed_cm_s;
+  s.model = robot_model(cfg);
+  s.planner = cfg.planner;
+  s.report_corrected = cfg.localise.report_corrected;
+  s.comm_limit_ticks = cfg.emergency.comm_limit_ticks;
+  s.initial_us = UltrasonicSettings{0xFFFFFF, cfg.sonar.node_delay_ticks, cfg.sonar.timeout_ms, cfg.emergency.auto_toggle};
+  return s;
+}
 }  // namespace
 
 Firmware::Firmware(const Config& cfg, const FirmwareOptions& opt) : cfg_(cfg), opt_(opt) {}
@@ -214,7 +229,7 @@ std::optional<std::string> Firmware::setup() {
   for (auto& l : links_) streams.push_back(l.get());
 
   auto heartbeat = std::make_unique<HeartbeatModule>(bb_);
-  auto serial = std::make_unique<SerialModule>(bb_, cfg_, streams);
+  auto serial = std::make_unique<SerialModule>(bb_, link_settings(cfg_), streams);
   std::unique_ptr<hal::SimStepper> stepper;
   if (sim_) {
     stepper = std::make_unique<hal::SimStepper>(*sim_);

@@ -18,7 +18,7 @@ namespace robuter {
 
 using protocol::PortResult;
 
-LinkPort::LinkPort(Blackboard& bb, LinkWriters& w, const Config& cfg)
+LinkPort::LinkPort(Blackboard& bb, LinkWriters& w, const LinkSettings& settings)
     : w_(w),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
@@ -32,7 +32,7 @@ LinkPort::LinkPort(Blackboard& bb, LinkWriters& w, const Config& cfg)
       doors_status_(bb.doors_status.reader()),
       demo_status_(bb.demo_status.reader()),
       localisation_(bb.localisation.reader()),
-      cfg_(cfg),
+      s_(settings),
       command_(bb.motion_command.reader()) {}
 
 // An owner without a row in this run's table (`modules.enabled`) is never waited for.
@@ -61,7 +61,7 @@ bool LinkPort::latched() const { return !emergency::admits_motion(emergency_.pee
 
 // AM: a request to the emergency module's gate, never to the motors.
 PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexcept {
-  const auto limit = static_cast<std::int32_t>(cfg_.robot.max_speed_cm_s);
+  const auto limit = static_cast<std::int32_t>(s_.max_speed_cm_s);
   if (std::abs(left) > limit || std::abs(right) > limit) return PortResult::out_of_range;
   if (latched() && (left != 0 || right != 0)) return PortResult::refused_emergency;
   const std::uint64_t t = tick();
@@ -89,8 +89,8 @@ PortResult LinkPort::set_servo(bool on) noexcept {
 // AY: refused unless configured, and then only for an allow-listed prefix. This robot's
 // drives have no text controller behind them, so even an allowed line is not forwarded.
 PortResult LinkPort::pass_through(std::string_view line) noexcept {
-  if (!cfg_.permissions.pass_through) return PortResult::not_permitted;
-  const bool allowed = std::any_of(cfg_.permissions.pass_through_allow.begin(), cfg_.permissions.pass_through_allow.end(),
+  if (!s_.permissions.pass_through) return PortResult::not_permitted;
+  const bool allowed = std::any_of(s_.permissions.pass_through_allow.begin(), s_.permissions.pass_through_allow.end(),
                                    [&](const std::string& p) { return line.substr(0, p.size()) == p; });
   return allowed ? PortResult::unavailable : PortResult::not_permitted;
 }
@@ -125,7 +125,7 @@ PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
 }
 
 PortResult LinkPort::request_shutdown() noexcept {
-  if (!cfg_.permissions.shutdown) return PortResult::not_permitted;
+  if (!s_.permissions.shutdown) return PortResult::not_permitted;
   shutdown_ = true;
   return PortResult::ok;
 }
@@ -226,10 +226,10 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
   if (with_theta && !protocol::heading_in_range(g.theta)) return PortResult::out_of_range;
   const planner::MapWindow now =
       planner_status_.advertised()
-          ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
-          : planner::configured_window(cfg_.planner);
+          ? planner::window_at(s_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
+          : planner::configured_window(s_.planner);
   const executor::PostureUnits at = map_pose();
-  if (!planner::goal_acceptable(cfg_.planner, robot_model(cfg_), now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
+  if (!planner::goal_acceptable(s_.planner, s_.model, now, at.x, at.y, g.x, g.y)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   w_.goal.modify([&](PlannerGoal& p) {
     p.x = g.x;
@@ -276,11 +276,11 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
   if (pts.empty()) return PortResult::out_of_range;  // exploring: more points than a goal holds
   const planner::MapWindow now =
       planner_status_.advertised()
-          ? planner::window_at(cfg_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
-          : planner::configured_window(cfg_.planner);
+          ? planner::window_at(s_.planner, planner_status_.peek().map_x0_mm, planner_status_.peek().map_y0_mm)
+          : planner::configured_window(s_.planner);
   std::int64_t fx = at.x, fy = at.y;
   for (const places::ViaPoint& p : pts) {
-    if (!planner::goal_acceptable(cfg_.planner, robot_model(cfg_), now, fx, fy, p.x, p.y)) return PortResult::out_of_range;
+    if (!planner::goal_acceptable(s_.planner, s_.model, now, fx, fy, p.x, p.y)) return PortResult::out_of_range;
     fx = p.x;
     fy = p.y;
   }

@@ -7,8 +7,8 @@
 
 #include "modules/places/place_graph.hpp"
 #include "modules/places/route_table.hpp"
-#include "kernel/config.hpp"
 #include "modules/executor/posture_units.hpp"
+#include "modules/serial/link_settings.hpp"
 #include "modules/topics.hpp"
 #include "protocol/codec/robot_port.hpp"
 
@@ -33,7 +33,7 @@ struct LinkWriters {
 
 class LinkPort final : public protocol::RobotPort {
  public:
-  LinkPort(Blackboard& bb, LinkWriters& w, const Config& cfg);
+  LinkPort(Blackboard& bb, LinkWriters& w, const LinkSettings& settings);
   // The kernel, for the clock, XK and the owners' runs (set at init, after the table).
   void attach(Kernel& k);
   // The emergency module, triggered on a stop byte or a motion request so it acts this tick.
@@ -139,7 +139,7 @@ class LinkPort final : public protocol::RobotPort {
   Reader<ModeStatus> doors_status_;
   Reader<DemoStatus> demo_status_;
   Reader<Localisation> localisation_;
-  const Config& cfg_;
+  const LinkSettings& s_;                  // the serial module's, which outlives the port
   Kernel* kernel_ = nullptr;
   Process* emergency_process_ = nullptr;   // triggered on stop byte and motion requests
   Process* executor_process_ = nullptr;    // triggered on servo and odometry requests

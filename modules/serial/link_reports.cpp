@@ -21,7 +21,7 @@ protocol::Ticks LinkPort::clock() const noexcept { return static_cast<protocol::
 // BO, BV and the stream: the odometry, as the seed reports it, unless [localise] report_corrected.
 protocol::Posture LinkPort::posture() const noexcept {
   const Posture& p = posture_.peek();
-  if (cfg_.localise.report_corrected) {
+  if (s_.report_corrected) {
     const executor::PostureUnits m = map_pose();
     return {m.x, m.y, m.theta};
   }
@@ -106,7 +106,7 @@ std::string_view LinkPort::firmware_version() const noexcept { return ROBUTER_VE
 
 std::uint32_t LinkPort::features() const noexcept {
   std::uint32_t f = protocol::kFeatureGoTo;
-  if (cfg_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
+  if (s_.permissions.pass_through) f |= protocol::kFeaturePassThrough;
   if (planner_running()) f |= protocol::kFeaturePlanner;
   if (pan_tilt_status_.advertised()) f |= protocol::kFeaturePanTilt;
   if (gate_status_.advertised()) f |= protocol::kFeatureGate;

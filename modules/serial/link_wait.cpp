@@ -67,7 +67,7 @@ void LinkPort::trigger_owners() const {
 
 bool LinkPort::revive_link() {
   const std::uint64_t t = tick(), last = w_.status.current().last_message_tick;
-  if (!(t > last && t - last > cfg_.emergency.comm_limit_ticks)) return false;
+  if (!(t > last && t - last > s_.comm_limit_ticks)) return false;
   message_received();
   await_owners(false);
   return true;

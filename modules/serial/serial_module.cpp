@@ -10,19 +10,19 @@
 
 namespace robuter {
 
-SerialModule::SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links)
-    : writers_{bb.link_motion.writer(), bb.servo_request.writer(), bb.odometry_set.writer(), bb.go_to.writer(),
+SerialModule::SerialModule(Blackboard& bb, const LinkSettings& settings, std::span<hal::ByteStream* const> links)
+    : settings_(settings),
+      writers_{bb.link_motion.writer(), bb.servo_request.writer(), bb.odometry_set.writer(), bb.go_to.writer(),
                bb.us_settings.writer(), bb.link_status.writer(),  bb.modes.writer(),
                bb.planner_goal.writer(), bb.operator_events.writer(), bb.localise_request.writer()},
-      port_(bb, writers_, cfg),
-      stop_when_clients_leave_(cfg.links.stop_when_clients_leave) {
+      port_(bb, writers_, settings_),
+      stop_when_clients_leave_(settings.stop_when_clients_leave) {
   for (hal::ByteStream* s : links) {
     if (link_count_ == kMaxLinks) break;
     links_[link_count_++].stream = s;
   }
   // The ring's settings start as the configuration says.
-  writers_.us.publish(UltrasonicSettings{0xFFFFFF, cfg.sonar.node_delay_ticks, cfg.sonar.timeout_ms,
-                                         cfg.emergency.auto_toggle});
+  writers_.us.publish(settings.initial_us);
 }
 
 bool SerialModule::init(Kernel& k) {

@@ -7,9 +7,9 @@
 #include <span>
 
 #include "hal/api/byte_stream.hpp"
-#include "kernel/config.hpp"
 #include "kernel/process.hpp"
 #include "modules/serial/link_port.hpp"
+#include "modules/serial/link_settings.hpp"
 #include "modules/serial/output_ring.hpp"
 #include "modules/topics.hpp"
 #include "protocol/codec/link_codec.hpp"
@@ -26,8 +26,11 @@ class SerialModule final : public Process {
   static constexpr std::size_t kBacklogBytes = 16 * 1024;  // bytes read and scanned but not yet handled per
                                                            // link: lines waiting for a command's owner to run
 
-  // `links` must outlive the module; at most kMaxLinks are used.
-  SerialModule(Blackboard& bb, const Config& cfg, std::span<hal::ByteStream* const> links);
+  // `links` must outlive the module; at most kMaxLinks are used. `settings` is copied.
+  SerialModule(Blackboard& bb, const LinkSettings& settings, std::span<hal::ByteStream* const> links);
+  // The port holds references to this module's writers and settings: neither copied nor moved.
+  SerialModule(const SerialModule&) = delete;
+  SerialModule& operator=(const SerialModule&) = delete;
   // The emergency module, woken in the same tick by a stop byte or a motion request.
   void set_emergency(Process* p) { port_.set_emergency(p); }
   // The executor, run before the next line after a servo or odometry request (read-your-writes).
@@ -85,6 +88,7 @@ class SerialModule final : public Process {
   // Writes queued replies as far as the transport takes them.
   void flush(Link& l);
 
+  LinkSettings settings_;     // what the link checks commands against (the port holds a reference)
   LinkWriters writers_;       // topics this module owns, lent to the port
   LinkPort port_;             // the protocol's view of the robot
   std::array<Link, kMaxLinks> links_{};

@@ -80,11 +80,11 @@ struct OneLink {
 
   LateClientStream stream;
   std::array<hal::ByteStream*, 1> streams{&stream};
-  Config cfg;
+  LinkSettings settings;
   Blackboard bb;
   VirtualClock clock;
   Kernel kernel;
-  SerialModule link{bb, cfg, streams};
+  SerialModule link{bb, settings, streams};
   std::array<ProcessRow, 1> rows{};
   bool ok = false;
 };
