@@ -50,6 +50,20 @@ TEST(Firmware, BoAndBuChangeAsTheRobotMoves) {
   EXPECT_GE(bu_changes, 8);
 }
 
+// The link checks AM against the configured top speed (robot.max_speed_cm_s), handed to it by
+// the composition (LinkSettings): not the default's 100 cm/s.
+TEST(Firmware, TheLinkRefusesAmAboveTheConfiguredTopSpeed) {
+  Config cfg;
+  cfg.robot.max_speed_cm_s = 50;
+  test::SimFirmware fw("", cfg);
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  EXPECT_EQ(fw.ask("ASN"), "ack");
+  const std::string fast = fw.ask("AM 60 60").value_or("(no reply)");
+  EXPECT_EQ(fast.rfind("error", 0), 0u) << "AM 60 60 answered " << fast;
+  EXPECT_EQ(fw.ask("AM 50 -50"), "ack");
+  EXPECT_EQ(fw.ask("AM 0 0"), "ack");
+}
+
 TEST(Firmware, AxStopsTheMotorsAndEndsTheLoop) {
   test::SimFirmware fw;
   ASSERT_TRUE(fw.ok()) << fw.error();
