@@ -4,6 +4,8 @@
 // and the kernel's configuration reader only binds and checks them (kernel/config.cpp).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -52,5 +54,15 @@ struct Param {
     return {key, f, unit, 0, 0, "", doc};
   }
 };
+
+// One table of two: rows shared by several sections (a serial port's keys) followed by a
+// section's own.
+template <typename S, std::size_t A, std::size_t B>
+constexpr std::array<Param<S>, A + B> join(const std::array<Param<S>, A>& a, const std::array<Param<S>, B>& b) {
+  std::array<Param<S>, A + B> out{};
+  for (std::size_t i = 0; i < A; ++i) out[i] = a[i];
+  for (std::size_t i = 0; i < B; ++i) out[A + i] = b[i];
+  return out;
+}
 
 }  // namespace robuter::param

@@ -78,14 +78,13 @@ class TestRaise final : public Process {
 void stop_sim_drive(void* drive) { static_cast<hal::Drive*>(drive)->set_servo(false); }
 
 // The line settings of a serial port from its (validated) configuration words.
-hal::SerialSettings line_settings(std::uint32_t baud, const std::string& parity, std::uint32_t stop_bits,
-                                  const std::string& flow, std::uint32_t retry_ms) {
+hal::SerialSettings line_settings(const hal::SerialPortConfig& c) {
   hal::SerialSettings s;
-  s.baud = baud;
-  hal::parse_parity(parity, s.parity);
-  hal::parse_flow_control(flow, s.flow);
-  s.stop_bits = stop_bits;
-  s.retry_ms = retry_ms;
+  s.baud = c.baud;
+  hal::parse_parity(c.parity, s.parity);
+  hal::parse_flow_control(c.flow_control, s.flow);
+  s.stop_bits = c.stop_bits;
+  s.retry_ms = c.retry_ms;
   return s;
 }
 
@@ -217,7 +216,7 @@ std::optional<std::string> Firmware::setup() {
   const auto& ls = cfg_.links.serial;
   const std::string& serial_device = opt_.serial_device.empty() ? ls.device : opt_.serial_device;
   if (!serial_device.empty() && opt_.open_devices) {
-    hal::SerialSettings s = line_settings(ls.baud, ls.parity, ls.stop_bits, ls.flow_control, ls.retry_ms);
+    hal::SerialSettings s = line_settings(ls);
     if (opt_.baud != 0) s.baud = opt_.baud;
     if (!hal::valid_baud(s.baud)) return fmt::format("--baud {}: not a supported rate", s.baud);
     auto l = std::make_unique<hal::SerialStream>(serial_device, s, "serial " + serial_device);
@@ -241,11 +240,9 @@ std::optional<std::string> Firmware::setup() {
     stepper->set_ptu_sweep(opt_.ptu_sweep);
   }
   // The pan-tilt unit's port (after the emulator's pty exists, so its path can be opened).
-  const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.port : opt_.ptu_port;
+  const std::string& ptu_port = opt_.ptu_port.empty() ? cfg_.ptu.device : opt_.ptu_port;
   if (!ptu_port.empty() && opt_.open_devices) {
-    const auto& p = cfg_.ptu;
-    auto link = std::make_unique<hal::SerialStream>(
-        ptu_port, line_settings(p.baud, p.parity, p.stop_bits, p.flow_control, p.retry_ms), "pan-tilt " + ptu_port);
+    auto link = std::make_unique<hal::SerialStream>(ptu_port, line_settings(cfg_.ptu), "pan-tilt " + ptu_port);
     if (link->error()) return "pan-tilt port: " + *link->error();
     ptu_link_ = std::move(link);
   } else if (stepper && opt_.sim_ptu && opt_.ptu_pty.empty() && !opt_.ptu_sweep) {

@@ -7,19 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "hal/api/serial_port_params.hpp"
 #include "kernel/param.hpp"
 #include "robot/robot_model.hpp"
 
 namespace robuter {
 
 // The pan-tilt unit and its two sonars (seed ptu.c, ptu.h; docs/DOORS.md).
-struct PanTiltConfig {
-  std::string port;                          // the unit's serial device, empty = no unit (robuterd --ptu-port)
-  std::uint32_t baud = 9600;                 // its rate, bit/s
-  std::string parity = "none";               // its parity: none, even, odd (docs/HARDWARE.md)
-  std::uint32_t stop_bits = 1;               // its stop bits, 1 or 2
-  std::string flow_control = "none";         // none, hardware (RTS/CTS), software (XON/XOFF)
-  std::uint32_t retry_ms = 500;              // a lost port is looked for this often, ms
+// Its serial port (the base: key `port` for the device, empty = no unit) comes first.
+struct PanTiltConfig : hal::SerialPortConfig {
   std::int32_t min_position = -1755;         // one end of the sweep, positions (−90.2°)
   std::int32_t max_position = 1655;          // the other end, positions (85.0°)
   std::uint32_t speed = 1500;                // pan speed, positions/s (SPEED)

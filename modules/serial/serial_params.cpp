@@ -15,15 +15,8 @@ std::span<const param::Param<PermissionsConfig>> permissions_params() {
 }
 
 std::span<const param::Param<SerialLinkConfig>> serial_link_params() {
-  using P = param::Param<SerialLinkConfig>;
-  static constexpr P kRows[] = {
-      P::text("device", &SerialLinkConfig::device, "path", "its device, empty = none (robuterd --serial overrides)"),
-      P::integer("baud", &SerialLinkConfig::baud, "bit/s", 1200, 921'600, "line rate, bit/s (robuterd --baud overrides)"),
-      P::word("parity", &SerialLinkConfig::parity, "none|even|odd", "none, even, odd"),
-      P::integer("stop_bits", &SerialLinkConfig::stop_bits, "", 1, 2, "1 or 2"),
-      P::word("flow_control", &SerialLinkConfig::flow_control, "none|hardware|software", "none, hardware (RTS/CTS), software (XON/XOFF)"),
-      P::integer("retry_ms", &SerialLinkConfig::retry_ms, "ms", 10, 60'000, "a lost device is looked for this often, ms"),
-  };
+  static constexpr auto kRows = hal::serial_port_rows<SerialLinkConfig>(
+      "device", "its device, empty = none (robuterd --serial overrides)", "line rate, bit/s (robuterd --baud overrides)");
   return kRows;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hal/api/serial_port_params.hpp"
 #include "kernel/param.hpp"
 
 namespace robuter {
@@ -22,14 +23,8 @@ struct PermissionsConfig {
 std::span<const param::Param<PermissionsConfig>> permissions_params();
 
 // A serial command link ([links.serial]; docs/HARDWARE.md).
-struct SerialLinkConfig {
-  std::string device;                        // its device, empty = none (robuterd --serial overrides)
-  std::uint32_t baud = 9600;                 // line rate, bit/s (robuterd --baud overrides)
-  std::string parity = "none";               // none, even, odd
-  std::uint32_t stop_bits = 1;               // 1 or 2
-  std::string flow_control = "none";         // none, hardware (RTS/CTS), software (XON/XOFF)
-  std::uint32_t retry_ms = 500;              // a lost device is looked for this often, ms
-};
+// (robuterd --serial overrides its device, --baud its rate.)
+using SerialLinkConfig = hal::SerialPortConfig;
 
 // [links.serial]: each key, its unit, range and doc (the default is the field's initialiser).
 std::span<const param::Param<SerialLinkConfig>> serial_link_params();

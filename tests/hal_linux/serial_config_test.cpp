@@ -61,7 +61,7 @@ debounce_us = 2000
   EXPECT_EQ(c.links.serial.stop_bits, 2u);
   EXPECT_EQ(c.links.serial.flow_control, "hardware");
   EXPECT_EQ(c.links.serial.retry_ms, 250u);
-  EXPECT_EQ(c.ptu.port, "/dev/robuter-ptu");
+  EXPECT_EQ(c.ptu.device, "/dev/robuter-ptu");
   EXPECT_EQ(c.ptu.baud, 19200u);
   EXPECT_EQ(c.ptu.parity, "odd");
   EXPECT_EQ(c.ptu.flow_control, "software");
