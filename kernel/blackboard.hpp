@@ -81,6 +81,8 @@ class Writer {
   // Says the owner runs without publishing a value (readers' advertised() turns true).
   void advertise() { data_->advertised = true; }
   const T& current() const { return data_->value; }
+  // Publications so far: what a reader that reports "taken" echoes back (read-your-writes).
+  std::uint32_t generation() const { return data_->generation; }
   bool valid() const { return data_ != nullptr; }
 
  private:

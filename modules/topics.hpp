@@ -13,6 +13,13 @@
 
 namespace robuter {
 
+// A new value is told by the topic's generation (Reader::updated(), generation()); no payload
+// repeats it. A payload counter is kept only where it says more: several events in one topic
+// (LinkStatus.stop_seq and reenable_seq), or a reader echoing
+// the generation of another topic it has acted on, so the writer can wait for its effect
+// (read-your-writes: Posture.command_seq and odometry_seq, Localisation.request_seq and
+// odometry_seq, PlannerStatus.goal_seq).
+
 // Owner modules (each defined in modules/<name>/); naming one in a Topic makes it the writer.
 class HeartbeatModule;
 class SerialModule;
@@ -56,8 +63,9 @@ struct Posture {
   std::int32_t right = 0;       // cm/s
   std::uint64_t tick = 0;       // tick of the odometry read
   hal::DriveHealth drive_health = hal::DriveHealth::ok;  // the drive's health as its backend sees it
-  std::uint32_t command_seq = 0;  // MotionCommand.seq applied by this run (the link's read-your-writes)
-  std::uint32_t odometry_seq = 0; // OdometrySet.seq applied so far (AC: the odometry jumped to it)
+  std::uint32_t command_seq = 0;  // MotionCommand's generation applied by this run (the link's read-your-writes)
+  std::uint32_t odometry_seq = 0; // OdometrySet's generation applied so far: the odometry frame's number (AC
+                                  // starts a new one; the link's read-your-writes, the localisation's frame)
 };
 
 // Who asked for a motion (the emergency module arbitrates, newest request wins).
@@ -67,14 +75,12 @@ enum class MotionSource : std::uint8_t { link, go_to, gate, doors, planner, demo
 struct MotionRequest {
   std::int32_t left = 0;        // cm/s
   std::int32_t right = 0;       // cm/s
-  std::uint32_t seq = 0;        // bumped on every request (a repeat of the same speeds counts)
-  std::uint64_t tick = 0;       // tick of the request
+  std::uint64_t tick = 0;       // tick of the request (each request is a publication: a repeat of the same speeds counts)
 };
 
 // Servo on/off asked by the operator (ASN / ASF).
 struct ServoRequest {
   bool on = false;              // wanted servo state
-  std::uint32_t seq = 0;        // bumped on every request
 };
 
 // Odometry posture to set (AC).
@@ -82,7 +88,6 @@ struct OdometrySet {
   std::int32_t x = 0;           // 0.1 mm
   std::int32_t y = 0;           // 0.1 mm
   std::int32_t theta = 0;       // 0.01 degree
-  std::uint32_t seq = 0;        // bumped on every request
 };
 
 // Go-to-posture target (AW); the executor drives there through the emergency gate.
@@ -91,7 +96,6 @@ struct GoToRequest {
   std::int32_t y = 0;           // 0.1 mm
   std::int32_t theta = 0;       // 0.01 degree
   bool active = false;          // false cancels
-  std::uint32_t seq = 0;        // bumped on every request
 };
 
 // How the operator set the ultrasonic ring (UT, UD, Ut, Uu; defaults from the configuration).
@@ -151,7 +155,6 @@ struct MotionCommand {
   std::int32_t left = 0;        // cm/s
   std::int32_t right = 0;       // cm/s
   bool stop = true;             // true: zero speeds and servo off (emergency)
-  std::uint32_t seq = 0;        // bumped on every decision
   MotionSource source = MotionSource::link;  // who asked for the granted speeds
 };
 
@@ -168,15 +171,10 @@ struct LinkStatus {
   std::uint32_t sessions = 0;           // pty client sessions started, count
 };
 
-// Modes switched from the link (Ap/Ag, AG/AT, Ad/Af).
+// The pan-tilt scanning switched from the link (Ap/Ag; each is a publication: a new Ap restarts a
+// failed unit). The other modes (AG/AT, Ad/Af, XT) start and end through the arbiter (`authority`).
 struct ModeRequest {
   bool pan_tilt = false;        // pan-tilt scanning on
-  bool gate = false;            // passage finder on
-  bool doors = false;           // door crossing on
-  std::uint32_t seq = 0;        // bumped on every change
-  std::uint32_t pan_tilt_seq = 0;  // bumped by every Ap / Ag
-  std::uint32_t gate_seq = 0;      // bumped by every AG / AT
-  std::uint32_t doors_seq = 0;     // bumped by every Ad / Af
 };
 
 // ---- pan-tilt scanner, passage finder, door crossing, demonstration (docs/DOORS.md) ----
@@ -232,7 +230,6 @@ struct PlannerGoal {
   std::int32_t theta = 0;       // 0.01 degree, final heading when has_theta
   bool has_theta = false;       // turn to theta once at (x, y)
   bool active = false;          // false cancels (XH)
-  std::uint32_t seq = 0;        // bumped on every request
   std::uint8_t vias = 0;        // points in `via` driven through, in order, before (x, y) (XG: 0)
   std::uint16_t place = 0;      // XQ: the goal place's number (1-based); 0 for XG
   std::array<Via, kMaxVias> via{};  // the first `vias` are used
@@ -249,7 +246,7 @@ struct PlannerStatus {
   std::uint32_t scans = 0;      // stops to scan for this goal
   std::uint32_t plan_us = 0;    // execution time of the last plan's search, µs (thread CPU time)
   std::uint32_t run_us_max = 0; // longest activation of the planner since start, µs (thread CPU time)
-  std::uint32_t goal_seq = 0;   // PlannerGoal.seq being served
+  std::uint32_t goal_seq = 0;   // PlannerGoal's generation being served: the goal's number (plan pictures' names)
   std::uint8_t vias = 0;        // the goal's via points (a route over places, XQ; 0 for XG)
   std::uint8_t via_next = 0;    // via points passed so far (== vias: driving to the goal itself)
   std::uint16_t goal_place = 0; // XQ: the goal place's number; 0 for XG
@@ -330,7 +327,6 @@ struct LocaliseRequest {
   std::int32_t x = 0;           // 0.1 mm, map frame
   std::int32_t y = 0;           // 0.1 mm
   std::int32_t theta = 0;       // 0.01 degree
-  std::uint32_t seq = 0;        // bumped on every request
 };
 
 // Where the robot is on its map (localise), and the map frame's place against the odometry's:
@@ -357,7 +353,7 @@ struct Localisation {
   std::int32_t odo_y = 0;         // 0.1 mm
   std::int32_t odo_theta = 0;     // 0.01 degree
   std::uint32_t odometry_seq = 0; // Posture.odometry_seq the odometry pose belongs to
-  std::uint32_t request_seq = 0;  // LocaliseRequest.seq taken (the link's read-your-writes after XA)
+  std::uint32_t request_seq = 0;  // LocaliseRequest's generation taken (the link's read-your-writes after XA)
   std::uint32_t run_us_max = 0;   // longest activation since start, µs (thread CPU time)
   std::uint32_t scouts_fired = 0; // times a scout's evidence drew particles to it since start (docs/LOCALISATION.md, "Scouts")
   std::uint64_t tick = 0;         // tick of the report

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Units converted and the seed's geometry gathered from the robot model ([robot], [ptu] mount).
+// The door crossing's settings: [doors] with units converted, the body from the robot model, the pan-tilt's echo geometry as given.
 #include "modules/doors/crossing_settings.hpp"
 
 namespace robuter::doors {

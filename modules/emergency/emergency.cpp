@@ -80,7 +80,7 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
 // Registration happens at start-up, before the periodic path.
 bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionRequest> reader) {
   if (source_count_ == sources_.size()) return false;
-  sources_[source_count_++] = Source{source, reader, reader.peek().seq};
+  sources_[source_count_++] = Source{source, reader, reader.generation()};
   return true;
 }
 
@@ -90,10 +90,10 @@ bool EmergencyModule::init(Kernel& k) {
   gate_ = emergency::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
   gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
   envelope_.set_tick(static_cast<double>(k.tick_ns()) / 1e9);
-  for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen_seq = sources_[i].reader.peek().seq;
+  for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen = sources_[i].reader.generation();
   seen_stop_ = link_.peek().stop_seq;
   seen_reenable_ = link_.peek().reenable_seq;
-  seen_servo_ = servo_.peek().seq;
+  servo_.copy();
   seen_actions_ = actions_.peek().count;
   door_wish_seen_ = planner_status_.peek().door_wish;
   if (demo_at_boot_) arbiter_.start_at_boot(MotionSource::demo);
@@ -153,9 +153,9 @@ std::uint8_t EmergencyModule::detections() const {
 void EmergencyModule::take_requests(emergency::GateInputs& in) {
   for (std::size_t i = 0; i < source_count_; ++i) {
     Source& s = sources_[i];
+    if (s.reader.generation() == s.seen) continue;
+    s.seen = s.reader.generation();
     const MotionRequest& r = s.reader.peek();
-    if (r.seq == s.seen_seq) continue;
-    s.seen_seq = r.seq;
     if (!arbiter_.accepts(s.source)) continue;
     in.new_request = true;
     in.left = r.left;
@@ -186,8 +186,8 @@ void EmergencyModule::run(Kernel& k) {
     in.left = in.right = 0;
     in.source = now.owner;
   }
-  in.servo_request = servo_.peek().seq != seen_servo_;
-  seen_servo_ = servo_.peek().seq;
+  in.servo_request = servo_.updated();
+  if (in.servo_request) servo_.copy();
   in.stop_byte = link.stop_seq != seen_stop_;
   seen_stop_ = link.stop_seq;
   in.reenable = link.reenable_seq != seen_reenable_;
@@ -221,9 +221,8 @@ void EmergencyModule::run(Kernel& k) {
   if (a.owner != was.owner || a.runs != was.runs || a.ended != was.ended || a.detections != was.detections)
     authority_out_.publish(a);
   const MotionCommand& cur = command_out_.current();
-  if (cur.seq == 0 || cur.left != d.left || cur.right != d.right || cur.stop != d.stop || cur.source != d.source) {
-    const std::uint32_t seq = cur.seq + 1;
-    command_out_.publish(MotionCommand{d.left, d.right, d.stop, seq, d.source});
+  if (command_out_.generation() == 0 || cur.left != d.left || cur.right != d.right || cur.stop != d.stop || cur.source != d.source) {
+    command_out_.publish(MotionCommand{d.left, d.right, d.stop, d.source});
     if (executor_) k.trigger(executor_);
   }
   // The ring fires the watch-dog set first and most often, listening 200 mm past the largest

@@ -56,11 +56,11 @@ class EmergencyModule final : public Process {
   void run(Kernel& k) override;
 
  private:
-  // A motion source and the request sequence number last seen from it.
+  // A motion source and the generation of its topic last taken.
   struct Source {
     MotionSource source = MotionSource::link;  // who publishes there
     Reader<MotionRequest> reader;              // its topic
-    std::uint32_t seen_seq = 0;                // seq of its last request taken, for change detection
+    std::uint32_t seen = 0;                    // its topic's generation last taken: a new one is a new request
   };
   // Applies the operator's actions since the last run to the arbiter, in order.
   void take_actions();
@@ -87,7 +87,7 @@ class EmergencyModule final : public Process {
   std::array<Source, kMaxSources> sources_{};
   std::size_t source_count_ = 0;
   Reader<LinkStatus> link_;
-  Reader<ServoRequest> servo_;
+  Reader<ServoRequest> servo_;   // ASN/ASF: a new generation is a new request
   Reader<UltrasonicSettings> settings_;
   Reader<UltrasonicRanges> ranges_;
   Reader<Posture> posture_;
@@ -103,7 +103,6 @@ class EmergencyModule final : public Process {
   Process* executor_ = nullptr;       // triggered on every new command
   std::uint32_t seen_stop_ = 0;       // LinkStatus.stop_seq last seen
   std::uint32_t seen_reenable_ = 0;   // LinkStatus.reenable_seq last seen
-  std::uint32_t seen_servo_ = 0;      // ServoRequest.seq last seen
   std::uint32_t seen_actions_ = 0;    // OperatorEvents.count last seen
   std::uint8_t base_mask_ = kDetectAll;  // the operator's detections (configuration, set_enabled)
   bool hand_over_ = false;            // [gate] hand_over

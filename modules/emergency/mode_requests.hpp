@@ -31,7 +31,6 @@ class ModeRequests {
     out_.modify([&](MotionRequest& r) {
       r.left = request ? left : 0;
       r.right = request ? right : 0;
-      ++r.seq;
       r.tick = tick;
     });
     if (!request) sent_stop_ = true;

@@ -44,7 +44,7 @@ bool ExecutorModule::init(Kernel& k) {
   servo_.copy();
   odometry_set_.copy();
   go_to_request_.copy();
-  applied_seq_ = command_.peek().seq;
+  applied_seq_ = command_.generation();
   const executor::PostureUnits p = executor::to_posture(drive_.odometry());
   posture_out_.publish(Posture{p.x, p.y, p.theta, false, 0, 0, k.tick(), drive_.health(), applied_seq_});
   return true;
@@ -60,18 +60,18 @@ void ExecutorModule::close(Kernel&) {
   log::info("executor: drive stopped: zero speed (was {} {} cm/s), servo off (was {})", l, r, was_on ? "on" : "off");
 }
 
-// A command is applied once (by seq), except "stop", which is enforced every activation: the
+// A command is applied once (by its generation), except "stop", which is enforced every activation: the
 // servo stays off whatever else happens. Before the emergency module has published, nothing is
 // granted (the default command is a stop).
 void ExecutorModule::apply_command(bool drive_ok) {
   const MotionCommand& c = command_.peek();
   if (c.stop || !command_.advertised()) {
     if (drive_.servo()) drive_.set_servo(false);
-    applied_seq_ = c.seq;
+    applied_seq_ = command_.generation();
     return;
   }
-  if (c.seq == applied_seq_) return;
-  applied_seq_ = c.seq;
+  if (command_.generation() == applied_seq_) return;
+  applied_seq_ = command_.generation();
   if (c.left != 0 || c.right != 0) {
     if (!drive_ok) return;
     if (!drive_.servo()) drive_.set_servo(true);
@@ -85,7 +85,6 @@ void ExecutorModule::request(std::uint64_t tick, std::int32_t left, std::int32_t
   go_to_out_.modify([&](MotionRequest& m) {
     m.left = left;
     m.right = right;
-    ++m.seq;
     m.tick = tick;
   });
 }
@@ -153,7 +152,7 @@ void ExecutorModule::run(Kernel& k) {
   if (odometry_set_.updated()) {
     const OdometrySet o = odometry_set_.copy();
     drive_.set_odometry(executor::to_odometry(executor::PostureUnits{o.x, o.y, o.theta}));
-    odometry_seq_ = o.seq;
+    odometry_seq_ = odometry_set_.generation();
     end_go_to(tick, true);  // the target was in the old frame
   }
   const executor::PostureUnits now = executor::to_posture(drive_.odometry());

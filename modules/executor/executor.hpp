@@ -45,8 +45,8 @@ class ExecutorModule final : public Process {
   MotionClaim claim_;                    // AW's runs handed by the arbiter, and their end
   Writer<Posture> posture_out_;
   Writer<MotionRequest> go_to_out_;
-  std::uint32_t applied_seq_ = 0;        // MotionCommand.seq last applied
-  std::uint32_t odometry_seq_ = 0;       // OdometrySet.seq last applied (Posture.odometry_seq)
+  std::uint32_t applied_seq_ = 0;        // MotionCommand's generation last applied (Posture.command_seq)
+  std::uint32_t odometry_seq_ = 0;       // OdometrySet's generation last applied (Posture.odometry_seq)
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)
   std::uint64_t servo_asked_tick_ = 0;     // tick of an ASN still waiting for a ready drive
   std::uint32_t servo_asked_trips_ = 0;    // the emergency module's trips when it was asked

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Units converted: 0.01° to degrees; the pan axis and the front face from the robot model.
+// The gate's settings: [gate] with units converted (0.01° to degrees), the pan-tilt's echo geometry as given, the front face and wheel base from the robot model.
 #include "modules/gate/gate_settings.hpp"
 
 namespace robuter::gate {

@@ -112,7 +112,7 @@ void LocaliseModule::run(Kernel& k) {
   take_inputs(tick);
   if (started_ && request_.updated()) {
     const LocaliseRequest r = request_.copy();
-    report_.request_seq = r.seq;
+    report_.request_seq = request_.generation();
     const loc::Pose odo = localise::to_pose(last_posture_.x, last_posture_.y, last_posture_.theta);
     if (r.global) {
       filter_->set_global();

@@ -177,7 +177,6 @@ void PlannerModule::request(std::uint64_t tick, std::int32_t left, std::int32_t 
   motion_out_.modify([&](MotionRequest& m) {
     m.left = left;
     m.right = right;
-    ++m.seq;
     m.tick = tick;
   });
   last_left_ = left;
@@ -202,8 +201,8 @@ void PlannerModule::serve_goal(std::uint64_t tick) {
       finish(tick, PlannerState::cancelled, navigating(state_));
     return;
   }
-  const PlannerGoal g = goal_in_.copy();
-  goal_ = g;
+  const PlannerGoal& g = goal_ = goal_in_.copy();
+  goal_number_ = goal_in_.generation();
   plans_ = scans_ = 0;
   via_next_ = 0;
   paused_replans_ = 0;
@@ -409,13 +408,13 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
     return;
   }
   step_waited_ = false;
-  if (!searching && (prepared_seq_ != goal_.seq || !planner_.field_ready(goal))) {
+  if (!searching && (prepared_seq_ != goal_number_ || !planner_.field_ready(goal))) {
     // A new goal, or a field a sync dropped (a cell made cheaper: sonar misses do it nearly every
     // scan): the cost field (a Dijkstra over the whole map) in steps of at most
     // PlannerSettings::field_cells_per_run cells, one per activation, and the search in the next, so that no
     // activation carries a whole field or a field and a search (docs/PLANNER.md, "The module").
     // Made inside the search's first step instead, the field took 5-8 ms there (the seed 000 lab run).
-    if (planner_.prepare_step(goal, s_.field_cells_per_run)) prepared_seq_ = goal_.seq;
+    if (planner_.prepare_step(goal, s_.field_cells_per_run)) prepared_seq_ = goal_number_;
     return;
   }
   // The search in steps of at most PlannerSettings::search_pops_per_run states, one per activation.
@@ -588,7 +587,7 @@ void PlannerModule::run(Kernel& k) {
 // for 320 x 320 cells and 32 slices) is take_picture()'s, at the next activation's start.
 void PlannerModule::picture(std::uint64_t tick, const plan::PlanResult& r, const plan::Pose2& pose, plan::Point2 goal) {
   if (pictures_ == nullptr) return;
-  shot_ = Shot{true, r, pose, goal, tick, plans_, goal_.seq, prefix_len_};
+  shot_ = Shot{true, r, pose, goal, tick, plans_, goal_number_, prefix_len_};
 }
 
 void PlannerModule::take_picture() {
@@ -621,7 +620,7 @@ void PlannerModule::publish_status(std::uint64_t tick) {
   s.scans = scans_;
   s.plan_us = plan_us_;
   s.run_us_max = run_us_max_;
-  s.goal_seq = goal_.seq;
+  s.goal_seq = goal_number_;
   s.vias = goal_.vias;
   s.via_next = via_next_;
   s.goal_place = goal_.place;

@@ -177,6 +177,7 @@ class PlannerModule final : public Process {
 
   PlannerState state_ = PlannerState::idle;
   PlannerGoal goal_{};                     // goal being served
+  std::uint32_t goal_number_ = 0;          // its topic's generation: the goal's number (PlannerStatus.goal_seq)
   std::array<std::uint64_t, robot::kRingSensors> read_tick_{};  // last reading marked, per sensor
   std::array<std::uint32_t, robot::kRingSensors> fresh_{};      // readings since the scan's stop
   std::array<std::uint64_t, kPanTiltSectors> pan_tick_{};         // last pan-tilt reading marked, per sector
@@ -214,7 +215,7 @@ class PlannerModule final : public Process {
   };
   Shot shot_{};
   bool step_waited_ = false;               // the last activation put a search's first step off for a sync
-  std::uint32_t prepared_seq_ = 0;         // goal seq whose cost field was computed (0: none)
+  std::uint32_t prepared_seq_ = 0;         // goal number whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
   std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
   std::int64_t map_x0_mm_ = 0, map_y0_mm_ = 0;   // mm, the map window's lower-left corner

@@ -58,7 +58,7 @@ PtuModule::PtuModule(Blackboard& bb, hal::ByteStream* stream, hal::SonarRing& ri
 bool PtuModule::init(Kernel& k) {
   status_out_.publish(ModeStatus{ModeState::off, ModeReason::none, 0, k.tick(), 0, 0, k.tick()});
   scan_out_.publish(driver_.scan());
-  seen_modes_ = modes_.peek().pan_tilt_seq;
+  modes_.copy();  // an Ap from before the start is not replayed as a new one
   return true;
 }
 
@@ -70,8 +70,7 @@ bool PtuModule::wanted() const {
 void PtuModule::run(Kernel& k) {
   const std::uint64_t tick = k.tick();
   const bool want = wanted();
-  const bool new_ap = modes_.peek().pan_tilt_seq != seen_modes_ && modes_.peek().pan_tilt;
-  seen_modes_ = modes_.peek().pan_tilt_seq;
+  const bool new_ap = modes_.updated() && modes_.copy().pan_tilt;
   if (want && (!was_wanted_ || new_ap)) driver_.start(tick);
   if (!want && was_wanted_) {
     driver_.stop();

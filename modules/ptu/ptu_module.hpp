@@ -31,14 +31,13 @@ class PtuModule final : public Process {
   void report(std::uint64_t tick);
 
   ptu::PtuDriver driver_;
-  Reader<ModeRequest> modes_;
+  Reader<ModeRequest> modes_;    // Ap/Ag: its generation tells a new one
   Reader<ModeStatus> gate_;
   Reader<ModeStatus> doors_;
   Reader<Posture> posture_;
   Writer<PanTiltScan> scan_out_;
   Writer<ModeStatus> status_out_;
   bool was_wanted_ = false;  // wanted() at the previous activation
-  std::uint32_t seen_modes_ = 0;  // ModeRequest.pan_tilt_seq last acted on
 };
 
 }  // namespace robuter

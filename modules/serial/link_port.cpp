@@ -64,23 +64,14 @@ PortResult LinkPort::request_motion(std::int32_t left, std::int32_t right) noexc
   const auto limit = static_cast<std::int32_t>(s_.max_speed_cm_s);
   if (std::abs(left) > limit || std::abs(right) > limit) return PortResult::out_of_range;
   if (latched() && (left != 0 || right != 0)) return PortResult::refused_emergency;
-  const std::uint64_t t = tick();
-  w_.motion.modify([&](MotionRequest& m) {
-    m.left = left;
-    m.right = right;
-    ++m.seq;
-    m.tick = t;
-  });
+  w_.motion.publish(MotionRequest{left, right, tick()});
   act(OperatorAction::motion);
   return PortResult::ok;
 }
 
 PortResult LinkPort::set_servo(bool on) noexcept {
   if (on && latched()) return PortResult::refused_emergency;
-  w_.servo.modify([&](ServoRequest& s) {
-    s.on = on;
-    ++s.seq;
-  });
+  w_.servo.publish(ServoRequest{on});
   act(OperatorAction::servo);
   await_owners(true);  // the executor switches the servo: BO after the ack reads it
   return PortResult::ok;
@@ -97,12 +88,7 @@ PortResult LinkPort::pass_through(std::string_view line) noexcept {
 
 PortResult LinkPort::set_odometry(const protocol::Posture& p) noexcept {
   if (!protocol::heading_in_range(p.theta)) return PortResult::out_of_range;
-  w_.odometry.modify([&](OdometrySet& o) {
-    o.x = p.x;
-    o.y = p.y;
-    o.theta = p.theta;
-    ++o.seq;
-  });
+  w_.odometry.publish(OdometrySet{p.x, p.y, p.theta});
   await_owners(true);  // the executor sets the odometry: BO after the ack reads it
   return PortResult::ok;
 }
@@ -113,13 +99,7 @@ PortResult LinkPort::go_to(const protocol::Posture& t) noexcept {
   if (!protocol::heading_in_range(t.theta)) return PortResult::out_of_range;
   if (latched()) return PortResult::refused_emergency;
   const executor::PostureUnits o = localise::odometry_posture({t.x, t.y, t.theta}, localisation_.peek(), posture_.peek().odometry_seq);
-  w_.go_to.modify([&](GoToRequest& g) {
-    g.x = o.x;
-    g.y = o.y;
-    g.theta = o.theta;
-    g.active = true;
-    ++g.seq;
-  });
+  w_.go_to.publish(GoToRequest{o.x, o.y, o.theta, true});
   act(OperatorAction::go_to);
   return PortResult::ok;
 }
@@ -133,46 +113,31 @@ PortResult LinkPort::request_shutdown() noexcept {
 PortResult LinkPort::set_pan_tilt(bool on) noexcept {
   if (!pan_tilt_status_.advertised()) return PortResult::unavailable;
   if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
-  w_.modes.modify([&](ModeRequest& m) {
-    m.pan_tilt = on;
-    ++m.seq;
-    ++m.pan_tilt_seq;
-  });
+  w_.modes.publish(ModeRequest{on});
+  return PortResult::ok;
+}
+
+// The one rule of a mode the arbiter starts and ends: its module absent, unavailable; starting it
+// needs the pan-tilt unit when the mode scans, and no latched emergency; ending it always goes.
+PortResult LinkPort::switch_mode(bool present, bool scans, bool on, OperatorAction start, OperatorAction stop) noexcept {
+  if (!present) return PortResult::unavailable;
+  if (on && scans && !has_pan_tilt_unit()) return PortResult::no_unit;
+  if (on && latched()) return PortResult::refused_emergency;
+  act(on ? start : stop);
   return PortResult::ok;
 }
 
 PortResult LinkPort::set_gate_finder(bool on) noexcept {
-  if (!gate_status_.advertised()) return PortResult::unavailable;
-  if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
-  if (on && latched()) return PortResult::refused_emergency;
-  w_.modes.modify([&](ModeRequest& m) {
-    m.gate = on;
-    ++m.seq;
-    ++m.gate_seq;
-  });
-  act(on ? OperatorAction::start_gate : OperatorAction::stop_gate);
-  return PortResult::ok;
+  return switch_mode(gate_status_.advertised(), true, on, OperatorAction::start_gate, OperatorAction::stop_gate);
 }
 
 PortResult LinkPort::set_door_crossing(bool on) noexcept {
-  if (!doors_status_.advertised()) return PortResult::unavailable;
-  if (on && !has_pan_tilt_unit()) return PortResult::no_unit;
-  if (on && latched()) return PortResult::refused_emergency;
-  w_.modes.modify([&](ModeRequest& m) {
-    m.doors = on;
-    ++m.seq;
-    ++m.doors_seq;
-  });
-  act(on ? OperatorAction::start_doors : OperatorAction::stop_doors);
-  return PortResult::ok;
+  return switch_mode(doors_status_.advertised(), true, on, OperatorAction::start_doors, OperatorAction::stop_doors);
 }
 
-// XT1 / XT0: the demonstration course, started and stopped like the other modes.
+// XT1 / XT0: the demonstration course, started and stopped like the other modes (no scanner).
 PortResult LinkPort::set_demo(bool on) noexcept {
-  if (!demo_status_.advertised()) return PortResult::unavailable;
-  if (on && latched()) return PortResult::refused_emergency;
-  act(on ? OperatorAction::start_demo : OperatorAction::stop_demo);
-  return PortResult::ok;
+  return switch_mode(demo_status_.advertised(), false, on, OperatorAction::start_demo, OperatorAction::stop_demo);
 }
 
 PortResult LinkPort::set_sensor_table(const protocol::SensorTable& active) noexcept {
@@ -239,7 +204,6 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
     p.active = true;
     p.vias = 0;
     p.place = 0;
-    ++p.seq;
   });
   act(OperatorAction::start_planner);
   return PortResult::ok;
@@ -248,10 +212,7 @@ PortResult LinkPort::set_goal(const protocol::Posture& g, bool with_theta) noexc
 // XH: always accepted while the planner runs (a halt is never refused).
 PortResult LinkPort::cancel_goal() noexcept {
   if (!planner_running()) return PortResult::unavailable;
-  w_.goal.modify([](PlannerGoal& p) {
-    p.active = false;
-    ++p.seq;
-  });
+  w_.goal.modify([](PlannerGoal& p) { p.active = false; });
   act(OperatorAction::halt);
   return PortResult::ok;
 }
@@ -295,7 +256,6 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
     g.place = static_cast<std::uint16_t>(number);
     for (std::size_t k = 0; k + 1 < pts.size(); ++k)
       g.via[k] = {pts[k].x, pts[k].y, pts[k].theta, pts[k].has_theta, pts[k].spin};
-    ++g.seq;
   });
   act(OperatorAction::start_planner);
   return PortResult::ok;
@@ -305,13 +265,7 @@ PortResult LinkPort::go_to_place(std::int32_t number, bool explore) noexcept {
 PortResult LinkPort::set_map_pose(const protocol::Posture& pose, bool global) noexcept {
   if (!localisation_.advertised()) return PortResult::unavailable;
   if (!global && !protocol::heading_in_range(pose.theta)) return PortResult::out_of_range;
-  w_.localise.modify([&](LocaliseRequest& r) {
-    r.global = global;
-    r.x = pose.x;
-    r.y = pose.y;
-    r.theta = pose.theta;
-    ++r.seq;
-  });
+  w_.localise.publish(LocaliseRequest{global, pose.x, pose.y, pose.theta});
   await_owners(false);  // XW after the ack reads the new pose
   return PortResult::ok;
 }

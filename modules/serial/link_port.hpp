@@ -118,6 +118,9 @@ class LinkPort final : public protocol::RobotPort {
   bool latched() const;
   // The pan-tilt module runs and has a unit to talk to (Ap, AG, Ad need it).
   bool has_pan_tilt_unit() const;
+  // AG/AT, Ad/Af, XT1/XT0: the mode's module is `present`, `scans` with the pan-tilt; `start` or
+  // `stop` goes to the arbiter.
+  protocol::PortResult switch_mode(bool present, bool scans, bool on, OperatorAction start, OperatorAction stop) noexcept;
   std::uint64_t tick() const;
   // The robot's pose on its map (the odometry's while no localisation runs): XG, XN, XQ.
   executor::PostureUnits map_pose() const;

@@ -39,13 +39,13 @@ bool LinkPort::emergency_ran() const { return !emergency_runs_ || emergency_.gen
 bool LinkPort::executor_done() const {
   if (!executor_runs_) return true;
   if (wait_executor_ && posture_.generation() == wait_posture_gen_) return false;
-  return posture_.peek().command_seq == command_.peek().seq;
+  return posture_.peek().command_seq == command_.generation();
 }
 
 bool LinkPort::localise_done() const {
   if (!localise_runs_) return true;
   const Localisation& l = localisation_.peek();
-  return l.odometry_seq == w_.odometry.current().seq && l.request_seq == w_.localise.current().seq;
+  return l.odometry_seq == w_.odometry.generation() && l.request_seq == w_.localise.generation();
 }
 
 // The owners must run after the latest request: a new one restarts the wait from now.

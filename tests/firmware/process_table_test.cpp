@@ -145,5 +145,39 @@ TEST(TopicClaims, ASecondWriterOrAMissingOneIsNamed) {
   EXPECT_NE(none->find("heartbeat claimed 0 times (want 1)"), std::string::npos) << *none;
 }
 
+// A payload field named like a counter (`seq`, `*_seq`), checked on the topic's struct.
+template <typename T>
+constexpr bool kCarriesSeq = requires(const T& t) { t.seq; };
+
+// modules/topics.hpp: a new request is a new generation of its topic; no payload counter repeats
+// it (a reader that needs "new?" asks updated() or generation(), a writer waiting for the effect
+// compares its Writer::generation() with what the owner echoes).
+TEST(Topics, NoRequestRepeatsItsGenerationInAPayloadCounter) {
+  EXPECT_FALSE(kCarriesSeq<MotionRequest>);
+  EXPECT_FALSE(kCarriesSeq<ServoRequest>);
+  EXPECT_FALSE(kCarriesSeq<OdometrySet>);
+  EXPECT_FALSE(kCarriesSeq<GoToRequest>);
+  EXPECT_FALSE(kCarriesSeq<ModeRequest>);
+  EXPECT_FALSE(kCarriesSeq<MotionCommand>);
+  EXPECT_FALSE(kCarriesSeq<PlannerGoal>);
+  EXPECT_FALSE(kCarriesSeq<LocaliseRequest>);
+}
+
+// The echoes that stay are generations of the topic they answer: after AC, ASN and AM through
+// the link, the posture carries exactly the generations the link and the emergency module wrote.
+TEST(Topics, OwnersEchoTheGenerationTheyActedOn) {
+  test::SimFirmware fw;
+  ASSERT_TRUE(fw.ok()) << fw.error();
+  ASSERT_EQ(fw.ask("AC 1000 2000 0"), "ack");
+  ASSERT_EQ(fw.ask("AC 3000 2000 0"), "ack");
+  ASSERT_EQ(fw.ask("ASN"), "ack");
+  ASSERT_EQ(fw.ask("AM 10 10"), "ack");
+  fw.run_ticks(5);
+  const Blackboard& bb = fw.bb();
+  EXPECT_EQ(bb.posture.reader().peek().odometry_seq, bb.odometry_set.reader().generation());
+  EXPECT_EQ(bb.odometry_set.reader().generation(), 2u);
+  EXPECT_EQ(bb.posture.reader().peek().command_seq, bb.motion_command.reader().generation());
+}
+
 }  // namespace
 }  // namespace robuter

@@ -2,6 +2,7 @@
 // Blackboard topics: generation counters, updated()/copy(), and the owner's writable handle.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -20,6 +21,7 @@ class Owner {
   explicit Owner(Topic<Range, Owner>& t) : w_(t.writer()) {}
   void put(int mm) { w_.publish(Range{mm}); }
   void bump() { w_.modify([](Range& r) { r.mm += 1; }); }
+  std::uint32_t written() const { return w_.generation(); }
 
  private:
   Writer<Range> w_;
@@ -42,6 +44,7 @@ TEST(Blackboard, ReadersSeeNewDataByGeneration) {
   EXPECT_EQ(r1.peek().mm, 121);
   EXPECT_TRUE(r1.updated());  // peek does not mark seen
   EXPECT_EQ(r1.generation(), 2u);
+  EXPECT_EQ(owner.written(), 2u);  // the writer knows its own count: what an owner's echo is compared with
   EXPECT_EQ(r2.copy().mm, 121);
 }
 

@@ -118,11 +118,11 @@ TEST(PlannerSimProtocol, MapWindowAndHalt) {
       << static_cast<int>(pm->state()) << " " << *fw.ask("XP");
   // A refused goal while navigating changes nothing: the same goal is served, the robot moves on.
   ASSERT_EQ(fw.ask("XB1"), "ack");
-  const std::uint32_t seq = fw.bb().planner_goal.reader().peek().seq;
+  const std::uint32_t seq = fw.bb().planner_goal.reader().generation();
   EXPECT_EQ(fw.ask("XG 900000 0"), "error 4 out-of-range");
   EXPECT_EQ(fw.ask("XG 1x 0"), "error 3 not-a-number");
   fw.run_ticks(20);
-  EXPECT_EQ(fw.bb().planner_goal.reader().peek().seq, seq);
+  EXPECT_EQ(fw.bb().planner_goal.reader().generation(), seq);
   const PlannerState now = pm->state();
   EXPECT_TRUE(now == PlannerState::moving || now == PlannerState::scanning || now == PlannerState::planning)
       << static_cast<int>(now);

@@ -199,7 +199,7 @@ TEST(Core, GoToDrivesThroughTheGateAndArrives) {
   r.link.aw(5000, 2000, 9000);  // 50 cm ahead, 20 cm left, facing +y
   r.step(10);
   EXPECT_TRUE(r.executor.go_to().active());
-  EXPECT_GT(r.bb.go_to_motion.reader().peek().seq, 0u) << "asks the gate, never the drive";
+  EXPECT_GT(r.bb.go_to_motion.reader().generation(), 0u) << "asks the gate, never the drive";
   ASSERT_TRUE(r.step_until([&] { return !r.executor.go_to().active(); }, 6000));
   r.step(30);
   const Posture& p = r.posture();

@@ -42,44 +42,24 @@ class LinkDouble {
   // AM left right.
   void am(std::int32_t left, std::int32_t right) {
     message();
-    const std::uint64_t t = k_.tick();
-    motion_.modify([&](MotionRequest& m) {
-      m.left = left;
-      m.right = right;
-      ++m.seq;
-      m.tick = t;
-    });
+    motion_.publish(MotionRequest{left, right, k_.tick()});
     act(OperatorAction::motion);
   }
   // ASN / ASF.
   void as(bool on) {
     message();
-    servo_.modify([&](ServoRequest& s) {
-      s.on = on;
-      ++s.seq;
-    });
+    servo_.publish(ServoRequest{on});
     act(OperatorAction::servo);
   }
   // AC x y theta.
   void ac(std::int32_t x, std::int32_t y, std::int32_t theta) {
     message();
-    odometry_.modify([&](OdometrySet& o) {
-      o.x = x;
-      o.y = y;
-      o.theta = theta;
-      ++o.seq;
-    });
+    odometry_.publish(OdometrySet{x, y, theta});
   }
   // AW x y theta (active) or a cancel.
   void aw(std::int32_t x, std::int32_t y, std::int32_t theta, bool active = true) {
     message();
-    go_to_.modify([&](GoToRequest& g) {
-      g.x = x;
-      g.y = y;
-      g.theta = theta;
-      g.active = active;
-      ++g.seq;
-    });
+    go_to_.publish(GoToRequest{x, y, theta, active});
     if (active) act(OperatorAction::go_to);
   }
   // UT table (bit s-1 = sensor s).

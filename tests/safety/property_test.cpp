@@ -95,8 +95,8 @@ testing::AssertionResult run_sequence(std::uint64_t seed, Totals& totals) {
                                          << ": the robot moves at the end of a tick while an emergency holds";
     if (e.held) ++totals.held_ticks;
     const MotionCommand& c = r->command();
-    if (c.seq != last_cmd_seq) {
-      last_cmd_seq = c.seq;
+    if (r->bb.motion_command.reader().generation() != last_cmd_seq) {
+      last_cmd_seq = r->bb.motion_command.reader().generation();
       if (!c.stop && c.source == MotionSource::go_to && (c.left != 0 || c.right != 0)) ++totals.go_to_grants;
     }
   }

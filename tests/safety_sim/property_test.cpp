@@ -320,7 +320,7 @@ void run_sequence(std::uint64_t seed, Totals& tot, std::string& report, bool con
       const double clear = body_clearance(fw.sim().world(), fw.sim().robot().params().geometry, pose, &near);
       std::printf("%llu cmd#%u %d %d%s src%d | drive %d %d | main %d watch %06x safety %u held %d latched %d cause %d "
                   "sensor %d | pose %.3f %.3f %.1f° clear %.0f mm at (%.0f, %.0f) bump %d |%s%s\n",
-                  static_cast<unsigned long long>(tick), c.seq, c.left, c.right, c.stop ? " stop" : "",
+                  static_cast<unsigned long long>(tick), fw.bb().motion_command.reader().generation(), c.left, c.right, c.stop ? " stop" : "",
                   static_cast<int>(c.source), w.left, w.right, e.main_sensor, e.watch, e.safety_mm, e.held, e.latched,
                   static_cast<int>(e.cause), e.sensor, pose.x, pose.y, sim::rad_to_deg(pose.theta),
                   clear * 1000.0, near.x() * 1000.0, near.y() * 1000.0, fw.sim().robot().bumper(), reads.c_str(), env.c_str());
