@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Handlers of the A messages: motion, servo, pass-through, odometry, go-to, shutdown.
+// Handlers of the A messages (motion, servo, pass-through, odometry, go-to, shutdown); a port's answer as ack or error.
 #include "protocol/codec/handlers.hpp"
 
 namespace robuter::protocol {
