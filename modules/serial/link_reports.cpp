@@ -76,15 +76,8 @@ bool LinkPort::has_pan_tilt_unit() const {
 
 protocol::EmergencyStatus LinkPort::emergency() const noexcept {
   const EmergencyState& e = emergency_.peek();
-  protocol::EmergencyStatus s;
-  s.held = e.held;
-  s.latched = e.latched;
-  s.enabled = e.enabled;
-  s.cause = e.cause;
-  s.granted_pct = e.granted_pct;
-  s.envelope = e.envelope;
-  s.protective = e.protective;
-  return s;
+  return {.held = e.held, .latched = e.latched, .cause = e.cause, .enabled = e.enabled,
+          .granted_pct = e.granted_pct, .envelope = e.envelope, .protective = e.protective};
 }
 
 protocol::KernelFigures LinkPort::kernel_figures() const noexcept {
@@ -117,15 +110,9 @@ std::uint32_t LinkPort::features() const noexcept {
 PortResult LinkPort::planner_status(protocol::PlannerReport& out) const noexcept {
   if (!planner_running()) return PortResult::unavailable;
   const PlannerStatus& s = planner_status_.peek();
-  out.state = s.state;
-  out.goal_x = s.goal_x;
-  out.goal_y = s.goal_y;
-  out.path_mm = s.path_mm;
-  out.prefix_mm = s.prefix_mm;
-  out.replans = s.plans > 0 ? s.plans - 1 : 0;
-  out.scans = s.scans;
-  out.plan_us = s.plan_us;
-  out.max_us = s.run_us_max;
+  out = {.state = s.state, .goal_x = s.goal_x, .goal_y = s.goal_y, .path_mm = s.path_mm,
+         .prefix_mm = s.prefix_mm, .replans = s.plans > 0 ? s.plans - 1 : 0, .scans = s.scans,
+         .plan_us = s.plan_us, .max_us = s.run_us_max};
   return PortResult::ok;
 }
 
@@ -162,17 +149,9 @@ PortResult LinkPort::place_here(protocol::PlaceReport& out) const noexcept {
 PortResult LinkPort::localisation(protocol::LocaliseReport& out) const noexcept {
   if (!localisation_.advertised()) return PortResult::unavailable;
   const Localisation& l = localisation_.peek();
-  out.state = l.state;
-  out.x = l.x;
-  out.y = l.y;
-  out.theta = l.theta;
-  out.major_mm = l.major_mm;
-  out.minor_mm = l.minor_mm;
-  out.axis = l.axis;
-  out.sigma_theta = l.sigma_theta;
-  out.cluster_pct = l.cluster_pct;
-  out.particles = l.particles;
-  out.steps = l.steps;
+  out = {.state = l.state, .x = l.x, .y = l.y, .theta = l.theta, .major_mm = l.major_mm, .minor_mm = l.minor_mm,
+         .axis = l.axis, .sigma_theta = l.sigma_theta, .cluster_pct = l.cluster_pct, .particles = l.particles,
+         .steps = l.steps};
   return PortResult::ok;
 }
 
@@ -189,11 +168,8 @@ static_assert(PlannerMapWindow::kSide == protocol::kMapWindowSide, "XM window si
 PortResult LinkPort::planner_map(protocol::MapWindow& out) const noexcept {
   if (!planner_running() || planner_map_.peek().cell_mm == 0) return PortResult::unavailable;
   const PlannerMapWindow& w = planner_map_.peek();
-  out.side = PlannerMapWindow::kSide;
-  out.cell_mm = w.cell_mm;
-  out.center_x = w.center_x;
-  out.center_y = w.center_y;
-  out.cells = std::string_view(w.cells.data(), w.cells.size());
+  out = {.side = PlannerMapWindow::kSide, .cell_mm = w.cell_mm, .center_x = w.center_x, .center_y = w.center_y,
+         .cells = std::string_view(w.cells.data(), w.cells.size())};
   return PortResult::ok;
 }
 

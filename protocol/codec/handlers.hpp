@@ -11,6 +11,9 @@ namespace robuter::protocol {
 
 // Turns a port's answer into `ack` or the matching `error`.
 void reply_result(PortResult result, ReplyWriter& out) noexcept;
+// True when the port refused (anything but ok): the reply is then the matching `error`. A report's
+// handler asks with it and stops there: `if (refused(port.planner_status(r), out)) return;`.
+bool refused(PortResult result, ReplyWriter& out) noexcept;
 // The error code a port result stands for (ok → none).
 ErrorCode error_for(PortResult result) noexcept;
 
@@ -53,7 +56,6 @@ void handle_get_kernel_figures(const Command&, RobotPort&, ReplyWriter&) noexcep
 void handle_get_version(const Command&, RobotPort&, ReplyWriter&) noexcept;         // XV
 void handle_set_stream(const Command&, RobotPort&, ReplyWriter&) noexcept;          // XS
 void handle_set_verbose_errors(const Command&, RobotPort&, ReplyWriter&) noexcept;  // XB
-void handle_set_demo(const Command&, RobotPort&, ReplyWriter&) noexcept;            // XT
 void handle_set_checksums(const Command&, RobotPort&, ReplyWriter&) noexcept;       // XC
 void handle_set_terminator(const Command&, RobotPort&, ReplyWriter&) noexcept;      // XL
 
@@ -70,7 +72,8 @@ void handle_go_to_place(const Command&, RobotPort&, ReplyWriter&) noexcept;     
 void handle_get_localisation(const Command&, RobotPort&, ReplyWriter&) noexcept;    // XW
 void handle_set_map_pose(const Command&, RobotPort&, ReplyWriter&) noexcept;        // XA
 
-// X: pan-tilt, passage finder and door crossing (handlers_modes.cpp)
+// X: pan-tilt, passage finder, door crossing and demonstration (handlers_modes.cpp)
 void handle_get_modes(const Command&, RobotPort&, ReplyWriter&) noexcept;           // XD
+void handle_set_demo(const Command&, RobotPort&, ReplyWriter&) noexcept;            // XT
 
 }  // namespace robuter::protocol

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Handlers of the A messages: motion, servo, pass-through, odometry, go-to, shutdown.
+// Handlers of the A messages (motion, servo, pass-through, odometry, go-to, shutdown); a port's answer as ack or error.
 #include "protocol/codec/handlers.hpp"
 
 namespace robuter::protocol {
@@ -18,13 +18,16 @@ ErrorCode error_for(PortResult result) noexcept {
   return ErrorCode::internal;
 }
 
+// The one place a refusal becomes the reply, for commands and reports alike.
+bool refused(PortResult result, ReplyWriter& out) noexcept {
+  if (result == PortResult::ok) return false;
+  out.error(error_for(result));
+  return true;
+}
+
 // The common ending of every A/U command: `ack` or the refusal.
 void reply_result(PortResult result, ReplyWriter& out) noexcept {
-  if (result == PortResult::ok) {
-    out.ack();
-  } else {
-    out.error(error_for(result));
-  }
+  if (!refused(result, out)) out.ack();
 }
 
 // AM <left> <right>: a request to move, which the emergency module may refuse.

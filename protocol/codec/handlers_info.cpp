@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Handlers of the B messages: posture, ranges, clock, time-out and pan-tilt arrays.
 #include "protocol/codec/handlers.hpp"
+#include "protocol/codec/posture_fields.hpp"
 
 namespace robuter::protocol {
 namespace {
@@ -8,11 +9,7 @@ namespace {
 // `<letter> <p1> … <p72> <clock>` for one pan-tilt array, or `error` when there is none.
 void reply_sectors(char letter, SectorKind kind, RobotPort& port, ReplyWriter& out) noexcept {
   Sectors sectors{};
-  const PortResult r = port.pan_tilt(kind, sectors);
-  if (r != PortResult::ok) {
-    out.error(error_for(r));
-    return;
-  }
+  if (refused(port.pan_tilt(kind, sectors), out)) return;
   const char head[2] = {letter, '\0'};
   out.open(std::string_view(head, 1));
   out.fields(sectors);
@@ -23,12 +20,8 @@ void reply_sectors(char letter, SectorKind kind, RobotPort& port, ReplyWriter& o
 
 // BO → `S <x> <y> <theta> <servo> <clock>`.
 void handle_get_posture(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
-  const Posture p = port.posture();
   out.open("S");
-  out.field(p.x);
-  out.field(p.y);
-  out.field(p.theta);
-  out.field(port.servo_on() ? 1 : 0);
+  posture_fields(port, out);
   out.field(port.clock());
 }
 
@@ -44,14 +37,10 @@ void handle_get_ranges(const Command&, RobotPort& port, ReplyWriter& out) noexce
 
 // BV → `V <x> <y> <theta> <servo> <u1> … <u24> <clock>` (the seed code's order).
 void handle_get_posture_ranges(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
-  const Posture p = port.posture();
   Ranges ranges{};
   port.ranges(ranges);
   out.open("V");
-  out.field(p.x);
-  out.field(p.y);
-  out.field(p.theta);
-  out.field(port.servo_on() ? 1 : 0);
+  posture_fields(port, out);
   out.fields(ranges);
   out.field(port.clock());
 }

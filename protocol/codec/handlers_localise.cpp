@@ -8,25 +8,11 @@ namespace robuter::protocol {
 // <particles> <steps> <clock>`.
 void handle_get_localisation(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   LocaliseReport r;
-  const PortResult res = port.localisation(r);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.localisation(r), out)) return;
   out.open("W");
-  out.raw(" ");
-  out.raw(word(r.state));
-  out.field(r.x);
-  out.field(r.y);
-  out.field(r.theta);
-  out.field(r.major_mm);
-  out.field(r.minor_mm);
-  out.field(r.axis);
-  out.field(r.sigma_theta);
-  out.field(r.cluster_pct);
-  out.field(r.particles);
-  out.field(r.steps);
-  out.field(port.clock());
+  out.word(word(r.state));
+  out.fields({r.x, r.y, r.theta, r.major_mm, r.minor_mm, r.axis, r.sigma_theta, r.cluster_pct, r.particles,
+              r.steps, port.clock()});
 }
 
 // XA <x> <y> <theta>: the robot is there on its map; XA alone: a global search.

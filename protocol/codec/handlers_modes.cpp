@@ -12,30 +12,23 @@ void mode_words(const ModeReport& m, ReplyWriter& out) noexcept {
 }
 }  // namespace
 
-// XD → `D <pantilt> <reason> <gate> <reason> <doors> <reason> <sweeps> <width-mm> <cross-ticks>
-// <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words of the
-// vocabulary (the demonstration's words come after the older fields, so readers of those keep working).
 // XT1 / XT0: the demonstration course started (taking the robot) or stopped.
 void handle_set_demo(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
   reply_result(port.set_demo(cmd.choice == '1'), out);
 }
 
+// XD → `D <pantilt> <reason> <gate> <reason> <doors> <reason> <sweeps> <width-mm> <cross-ticks>
+// <demo> <reason> <phase> <laps> <clock>`: states, reasons and the phase are single words of the
+// vocabulary (the demonstration's words come after the older fields, so readers of those keep working).
 void handle_get_modes(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   ModesReport r;
-  const PortResult res = port.modes(r);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.modes(r), out)) return;
   out.open("D");
   for (const ModeReport* m : {&r.pan_tilt, &r.gate, &r.doors}) mode_words(*m, out);
-  out.field(r.sweeps);
-  out.field(r.width_mm);
-  out.field(r.crossing_ticks);
+  out.fields({r.sweeps, r.width_mm, r.crossing_ticks});
   mode_words(r.demo, out);
   out.word(r.demo.absent || r.demo.state == ModeState::off ? kNoPhaseWord : word(r.demo_phase));
-  out.field(r.demo_laps);
-  out.field(port.clock());
+  out.fields({r.demo_laps, port.clock()});
 }
 
 }  // namespace robuter::protocol

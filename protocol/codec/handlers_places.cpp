@@ -10,14 +10,9 @@ namespace robuter::protocol {
 // outside every place).
 void handle_get_place(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   PlaceReport r;
-  const PortResult res = port.place_here(r);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.place_here(r), out)) return;
   out.open("N");
-  out.field(r.count);
-  out.field(r.number);
+  out.fields({r.count, r.number});
   out.word(r.number > 0 ? r.name : std::string_view("-"));
 }
 
@@ -25,17 +20,11 @@ void handle_get_place(const Command&, RobotPort& port, ReplyWriter& out) noexcep
 // one door away and (at most 16 of) their numbers.
 void handle_get_place_info(const Command& cmd, RobotPort& port, ReplyWriter& out) noexcept {
   PlaceReport r;
-  const PortResult res = port.place_info(cmd.ints[0], r);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.place_info(cmd.ints[0], r), out)) return;
   out.open("I");
   out.field(r.number);
   out.word(r.name);
-  out.field(r.centre_x);
-  out.field(r.centre_y);
-  out.field(r.neighbours);
+  out.fields({r.centre_x, r.centre_y, r.neighbours});
   const auto listed = static_cast<std::size_t>(std::clamp<std::int32_t>(r.neighbours, 0, static_cast<std::int32_t>(PlaceReport::kMaxNeighbours)));
   out.fields(std::span<const std::int32_t>(r.neighbour.data(), listed));
 }

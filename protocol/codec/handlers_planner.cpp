@@ -19,45 +19,24 @@ void handle_cancel_goal(const Command&, RobotPort& port, ReplyWriter& out) noexc
 // <max-us> <clock>`.
 void handle_get_planner_status(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   PlannerReport r;
-  const PortResult res = port.planner_status(r);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.planner_status(r), out)) return;
   out.open("P");
-  out.raw(" ");
-  out.raw(word(r.state));
-  out.field(r.goal_x);
-  out.field(r.goal_y);
-  out.field(r.path_mm);
-  out.field(r.prefix_mm);
-  out.field(r.replans);
-  out.field(r.scans);
-  out.field(r.plan_us);
-  out.field(r.max_us);
-  out.field(port.clock());
+  out.word(word(r.state));
+  out.fields({r.goal_x, r.goal_y, r.path_mm, r.prefix_mm, r.replans, r.scans, r.plan_us, r.max_us, port.clock()});
 }
 
 // XM → `M <w> <h> <cell-mm> <x> <y> <row1>|<row2>|…|<rowh>`: rows top first, one character a
 // cell, exactly one space before the first row (rows may begin and end with spaces: free cells).
 void handle_get_planner_map(const Command&, RobotPort& port, ReplyWriter& out) noexcept {
   MapWindow w;
-  const PortResult res = port.planner_map(w);
-  if (res != PortResult::ok) {
-    out.error(error_for(res));
-    return;
-  }
+  if (refused(port.planner_map(w), out)) return;
   const auto side = static_cast<std::size_t>(w.side > 0 ? w.side : 0);
   if (side == 0 || w.cells.size() != side * side) {
     out.error(ErrorCode::unavailable);
     return;
   }
   out.open("M");
-  out.field(w.side);
-  out.field(w.side);
-  out.field(w.cell_mm);
-  out.field(w.center_x);
-  out.field(w.center_y);
+  out.fields({w.side, w.side, w.cell_mm, w.center_x, w.center_y});
   out.raw(" ");
   for (std::size_t row = 0; row < side; ++row) {
     if (row > 0) out.raw("|");

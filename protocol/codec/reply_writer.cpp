@@ -69,6 +69,10 @@ void ReplyWriter::fields(std::span<const std::int32_t> values) noexcept {
   for (const std::int32_t v : values) field(v);
 }
 
+void ReplyWriter::fields(std::initializer_list<std::int64_t> values) noexcept {
+  for (const std::int64_t v : values) field(v);
+}
+
 // Port-supplied words must not break the line into tokens or lines.
 void ReplyWriter::word(std::string_view text) noexcept {
   char clean[kMaxTokenLength];

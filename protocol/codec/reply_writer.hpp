@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string_view>
 
@@ -37,6 +38,8 @@ class ReplyWriter {
   void field(std::int64_t value) noexcept;
   // Appends " <values...>" in decimal.
   void fields(std::span<const std::int32_t> values) noexcept;
+  // Appends " <value>" in decimal for each value, in order (a reply's numbers as listed).
+  void fields(std::initializer_list<std::int64_t> values) noexcept;
   // Appends " <word>": at most kMaxTokenLength bytes, non-printables and spaces made '_'.
   void word(std::string_view text) noexcept;
   // Appends raw text with no leading space (already a valid reply fragment).

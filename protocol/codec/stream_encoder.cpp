@@ -2,6 +2,8 @@
 // Encoder of the status stream's lines: a compact snapshot that never looks like a reply.
 #include "protocol/codec/stream_encoder.hpp"
 
+#include "protocol/codec/posture_fields.hpp"
+
 namespace robuter::protocol {
 
 // Three bits so a client sees "waiting for data", "stopped by an emergency" and "stopped short
@@ -13,17 +15,10 @@ int stream_emergency_field(const EmergencyStatus& status) noexcept {
 // '@' starts no reply, so an opted-in client can tell stream lines from replies.
 std::string_view encode_status_line(const RobotPort& port, ReplyWriter& out) noexcept {
   out.begin();
-  const Posture p = port.posture();
   const WheelSpeeds w = port.wheel_speeds();
   out.open("@");
-  out.field(p.x);
-  out.field(p.y);
-  out.field(p.theta);
-  out.field(port.servo_on() ? 1 : 0);
-  out.field(w.left);
-  out.field(w.right);
-  out.field(stream_emergency_field(port.emergency()));
-  out.field(port.clock());
+  posture_fields(port, out);
+  out.fields({w.left, w.right, stream_emergency_field(port.emergency()), port.clock()});
   return out.finish();
 }
 
