@@ -31,37 +31,35 @@ demo::CourseSettings course_settings(const DemoConfig& c, const robot::RobotMode
 }  // namespace
 
 DemoModule::DemoModule(Blackboard& bb, const DemoConfig& cfg, const robot::RobotModel& robot)
-    : course_(course_settings(cfg, robot)),
-      claim_(bb, MotionSource::demo),
+    : ModeProcess(bb, MotionSource::demo, bb.demo_motion.writer(), bb.demo_status.writer()),
+      course_(course_settings(cfg, robot)),
       posture_(bb.posture.reader()),
       ranges_(bb.ranges.reader()),
-      emergency_state_(bb.emergency.reader()),
-      requests_(bb.demo_motion.writer()),
-      status_out_(bb.demo_status.writer()) {}
+      emergency_state_(bb.emergency.reader()) {}
 
 // The run of [demo] enabled is handed out by the emergency module's init, before this one: the
 // course is running from the first tick.
 bool DemoModule::init(Kernel& k) {
   DemoStatus s;
   s.tick = k.tick();
-  if (claim_.granted()) {
-    course_.start();
-    running_ = true;
-    requests_.begin();
+  if (begun()) {
+    begin();
     s.state = ModeState::running;
-    log::info("demo: course started");
   }
   status_out_.publish(s);
   return true;
 }
 
+void DemoModule::begin() {
+  course_.start();
+  running_ = true;
+  log::info("demo: course started");
+}
+
 void DemoModule::run(Kernel& k) {
   const std::uint64_t tick = k.tick();
-  if (claim_.granted()) {
-    course_.start();
-    running_ = true;
-    requests_.begin();
-    log::info("demo: course started");
+  if (begun()) {
+    begin();
   } else if (running_) {
     const ModeReason why = claim_.ended();
     if (why != ModeReason::none) {

@@ -7,7 +7,9 @@
 
 #include "modules/doors/min_read.hpp"
 #include "modules/doors/steering.hpp"
+#include "modules/emergency/mode_output.hpp"
 #include "modules/ptu/echo_points.hpp"
+#include "modules/ptu/scan_view.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter::doors {
@@ -29,20 +31,13 @@ struct CrossingSettings {
   std::uint32_t timeout_ticks = 30000;       // the whole crossing, 0 = no limit
 };
 
-struct CrossingInputs {
-  std::uint64_t tick = 0;                    // now
-  const PanTiltScan* scan = nullptr;         // the latest scan (never null in use)
-  SectorPose pose{};                         // odometry now
-  bool scanner_failed = false;               // the pan-tilt reports a failure
-};
+// One activation's view: the scan, odometry, the pan-tilt's state.
+using CrossingInputs = ptu::ScanInputs;
 
-struct CrossingOutput {
-  std::int32_t left = 0;                     // wheel speeds to request, cm/s
-  std::int32_t right = 0;                    // cm/s
-  bool request = false;                      // publish the speeds (false once ended)
-  ModeState state = ModeState::off;          // starting, crossing, waiting, leaving, crossed, failed
-  ModeReason reason = ModeReason::none;      // why it failed
-  std::uint32_t duration_ticks = 0;          // since the start
+// One activation's decision: the wish (speeds, state: starting, crossing, waiting, leaving,
+// crossed, failed) and how long the crossing has taken.
+struct CrossingOutput : ModeOutput {
+  std::uint32_t duration_ticks = 0;  // since the start
 };
 
 // What the echoes say this activation (for tests and the log).

@@ -5,11 +5,9 @@
 
 #include <cstdint>
 
-#include "kernel/process.hpp"
 #include "modules/doors/crossing.hpp"
 #include "modules/doors/doors_params.hpp"
-#include "modules/emergency/mode_requests.hpp"
-#include "modules/emergency/motion_claim.hpp"
+#include "modules/ptu/scan_mode.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter {
@@ -22,31 +20,26 @@ class EmergencyModule;
 // while the crossing owns the robot and is in the door (crossing, waiting, leaving), so every way
 // out — crossed, can't cross, Af, an emergency, the operator, the pan-tilt failing, every link
 // closed, the time limit, the firmware stopping — gives the detections back at once.
-class DoorsModule final : public Process {
+class DoorsModule final : public ptu::ScanMode<doors::DoorCrossing, doors::CrossingOutput> {
  public:
   // Its own section, the robot model and the pan-tilt's echo geometry (shared with the gate).
   DoorsModule(Blackboard& bb, const DoorsConfig& cfg, const robot::RobotModel& model, const ptu::EchoGeometry& echoes,
               EmergencyModule* emergency);
 
   bool init(Kernel& k) override;
-  void run(Kernel& k) override;
-  void close(Kernel& k) override;
 
-  const doors::DoorCrossing& crossing() const { return crossing_; }
+  const doors::DoorCrossing& crossing() const { return logic_; }
 
  private:
-  void begin(std::uint64_t tick);
-  void publish(Kernel& k, const doors::CrossingOutput& o);
+  // Ad, or the passage finder's hand-over.
+  void begin(std::uint64_t tick) override;
+  // Af, the operator, an emergency — or every link that was open at the start closed.
+  ModeReason ended() const override;
+  // Every way out passes here with request = false (after the zero request): the status.
+  void report(std::uint64_t tick, const doors::CrossingOutput& o) override;
 
-  doors::DoorCrossing crossing_;
   std::uint8_t crossing_mask_;        // detections kept while in the door
-  Reader<PanTiltScan> scan_;
-  Reader<ModeStatus> ptu_;
-  Reader<Posture> posture_;
   Reader<LinkStatus> link_;
-  MotionClaim claim_;                 // runs handed by the arbiter, and their end
-  ModeRequests requests_;             // its motion requests, and the final zero one
-  Writer<ModeStatus> status_out_;
   Writer<DetectionRequest> detections_out_;  // the wish for lowered detections
   bool had_link_ = false;             // a link was open at the start
 };

@@ -47,10 +47,7 @@ EnvelopeSettings envelope_settings(const EmergencyConfig& cfg, const RobotConfig
 // The body and the near field are the envelope's; a cone's edge tolerance is a cell's diagonal.
 StartBlindSettings start_blind_settings(const EnvelopeSettings& e) {
   StartBlindSettings s;
-  s.front = e.front;
-  s.rear = e.rear;
-  s.half_width = e.half_width;
-  s.near = e.near;
+  static_cast<BodyBox&>(s) = e;
   s.edge = e.step * 1.4142135623730951;
   return s;
 }

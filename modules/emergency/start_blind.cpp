@@ -40,9 +40,8 @@ void StartBlind::reset() {
 bool StartBlind::covers(const Eigen::Vector2d& p) const {
   if (!valid_) return false;
   const Eigen::Vector2d l = to_body(start_, p);
-  const double ex = std::max({-s_.rear - l.x(), 0.0, l.x() - s_.front});
-  const double ey = std::max({-s_.half_width - l.y(), 0.0, l.y() - s_.half_width});
-  const double out = std::hypot(ex, ey);
+  const Eigen::Vector2d e = s_.outside(l.x(), l.y());
+  const double out = std::hypot(e.x(), e.y());
   if (out <= s_.near) return true;
   if (out > s_.wedge_reach) return false;
   const auto& ring = robot::kRobuter.ring;

@@ -5,16 +5,13 @@
 #include <Eigen/Core>
 #include <cstdint>
 
+#include "modules/emergency/body_box.hpp"
 #include "modules/emergency/pose_history.hpp"
 
 namespace robuter::emergency {
 
-// The body and the ring the blind set is built from.
-struct StartBlindSettings {
-  double front = 0.695;       // wheel axle to the front face, m
-  double rear = 0.330;        // wheel axle to the rear face, m
-  double half_width = 0.350;  // half the body's width, m
-  double near = 0.15;         // depth of the blind near field around the body (the blanking range), m
+// The body (its near field: the blanking range) and the ring the blind set is built from.
+struct StartBlindSettings : BodyBox {
   double wedge_reach = 0.65;  // gaps between the cones count as blind this far from the body (where
                               // the front cones' wedges close), m
   double travel = 0.65;       // the start pose is dropped once the axle is this far from it, m

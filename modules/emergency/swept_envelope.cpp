@@ -52,12 +52,11 @@ SweptEnvelope::Meets SweptEnvelope::meets(const EvidenceGrid& g, const Pose2& no
     const Eigen::Vector2d q = pose.p + Eigen::Vector2d(c * o.q.x() - sn * o.q.y(), sn * o.q.x() + c * o.q.y());
     const Eigen::Vector2d d = q - now.p;
     const double lx = c0 * d.x() + s0 * d.y(), ly = -s0 * d.x() + c0 * d.y();
-    const double ex = std::max({-s_.rear - lx, 0.0, lx - s_.front});
-    const double ey = std::max({-s_.half_width - ly, 0.0, ly - s_.half_width});
-    if (ex == 0.0 && ey == 0.0) continue;  // under the body now
+    const Eigen::Vector2d e = s_.outside(lx, ly);
+    if (e.x() == 0.0 && e.y() == 0.0) continue;  // under the body now
     const CellState st = g.state(q, look.tick, s_.free_age_ticks);
     if (st == CellState::free) continue;
-    const bool near = ex * ex + ey * ey <= s_.near * s_.near;
+    const bool near = e.x() * e.x() + e.y() * e.y() <= s_.near * s_.near;
     // No reading can refresh a certificate inside the blind near field: an older one counts there.
     if (st == CellState::stale && near && g.state(q, look.tick, look.near_age) == CellState::free) continue;
     if (st == CellState::obstacle) {

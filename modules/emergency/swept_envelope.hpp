@@ -5,24 +5,22 @@
 #include <cstdint>
 #include <vector>
 
+#include "modules/emergency/body_box.hpp"
 #include "modules/emergency/evidence_grid.hpp"
 #include "modules/emergency/pose_history.hpp"
 #include "modules/emergency/start_blind.hpp"
 
 namespace robuter::emergency {
 
-// The robot and the stopping model the envelope is built from.
-struct EnvelopeSettings {
-  double front = 0.695;          // wheel axle to the front face, m
-  double rear = 0.330;           // wheel axle to the rear face, m
-  double half_width = 0.350;     // half the body's width, m
+// The robot (its body, and the blind near field around it: the blanking range) and the stopping
+// model the envelope is built from.
+struct EnvelopeSettings : BodyBox {
   double margin = 0.030;         // clearance kept around the body, m
   double wheel_base = 0.600;     // between the drive wheels, m
   double decel = 1.0;            // braking deceleration of each wheel, m/s²
   double reversal_decel = 0.5;   // a wheel told to reverse slows at the acceleration limit only, m/s²
   double reaction = 0.11;        // from one decision to the next reaching the drive, s
   double creep = 0.05;           // fastest wheel allowed where only the blind near field is unknown, m/s
-  double near = 0.15;            // depth of the blind near field around the body (the blanking range), m
   double step = 0.025;           // spacing of outline samples and of poses along the arc, m
   std::uint64_t free_age_ticks = 300;  // free certificates older than this do not count, ticks
   std::uint64_t near_age_ticks = 1200; // in the blind near field, which no reading can refresh, this long, ticks

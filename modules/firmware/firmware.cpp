@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 
 #include "hal/linux/can/can_backend.hpp"
@@ -102,6 +103,21 @@ class NoSonarRing final : public hal::SonarRing {
   bool fire(int, std::uint8_t, std::uint32_t = 0) override { return false; }
   bool read(int, hal::NodeRanges&) override { return false; }
 };
+
+// Decided: a missing output folder is created (a new run's output folder), and the log says so
+// (`log_name` dir did not exist); an existing path that is not a folder is refused. The error
+// names the folder as the operator gave it (`name` dir: …); none when the folder is there.
+std::optional<std::string> output_folder(const std::string& dir, const std::string& name, std::string_view log_name) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    return name + " " + dir + ": exists and is not a folder";
+  if (!std::filesystem::exists(dir, ec)) {
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return name + " " + dir + ": cannot create the folder: " + ec.message();
+    log::info("{} {} did not exist: created it", log_name, dir);
+  }
+  return std::nullopt;
+}
 
 // The link's sections and the keys of its neighbours' it checks commands against (the serial
 // module is given these, not the whole configuration).
@@ -331,17 +347,8 @@ std::optional<std::string> Firmware::setup() {
   emergency->set_door_loans(cfg_.places.cross_doors);
   planner->set_emergency(emergency.get());
   if (!opt_.planner_pictures.empty()) {
-    // Decided: a missing folder is created (a new run's output folder), and the log says so; an
-    // existing path that is not a folder is refused.
-    std::error_code ec;
-    const std::string& dir = opt_.planner_pictures;
-    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
-      return "--planner-pictures " + dir + ": exists and is not a folder";
-    if (!std::filesystem::exists(dir, ec)) {
-      std::filesystem::create_directories(dir, ec);
-      if (ec) return "--planner-pictures " + dir + ": cannot create the folder: " + ec.message();
-      log::info("planner: --planner-pictures {} did not exist: created it", dir);
-    }
+    if (auto error = output_folder(opt_.planner_pictures, "--planner-pictures", "planner: --planner-pictures"))
+      return error;
     picture_box_ = std::make_unique<planner::PictureMailbox>();
     // Under --sim the odometry frame's place in the world is known (the stepper publishes it each
     // tick): the pictures are drawn in the world frame.
@@ -358,17 +365,8 @@ std::optional<std::string> Firmware::setup() {
     planner->set_pictures(picture_box_.get());
   }
   if (!cfg_.places.grids_dir.empty() && places_) {
-    // Decided: as --planner-pictures, a missing folder is created and the log says so; an
-    // existing path that is not a folder is refused.
-    std::error_code ec;
     const std::string& dir = cfg_.places.grids_dir;
-    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
-      return "configuration error: places.grids_dir " + dir + ": exists and is not a folder";
-    if (!std::filesystem::exists(dir, ec)) {
-      std::filesystem::create_directories(dir, ec);
-      if (ec) return "configuration error: places.grids_dir " + dir + ": cannot create the folder: " + ec.message();
-      log::info("places: grids_dir {} did not exist: created it", dir);
-    }
+    if (auto error = output_folder(dir, "configuration error: places.grids_dir", "places: grids_dir")) return error;
     place_grid_box_ = std::make_unique<places::PlaceGridMailbox>();
     place_grid_box_->reserve(*places_, static_cast<double>(cfg_.planner.cell_mm) * 1e-3);
     place_grid_writer_ = std::make_unique<places::PlaceGridWriter>(dir, *places_, *place_grid_box_);

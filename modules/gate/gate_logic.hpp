@@ -5,8 +5,10 @@
 
 #include <cstdint>
 
+#include "modules/emergency/mode_output.hpp"
 #include "modules/executor/go_to.hpp"
 #include "modules/gate/door_estimate.hpp"
+#include "modules/ptu/scan_view.hpp"
 #include "modules/topics.hpp"
 
 namespace robuter::gate {
@@ -34,22 +36,13 @@ struct GateSettings {
   std::uint32_t wheel_base_mm = 600;   // DBW, for the manoeuvre controller
 };
 
-// One activation's view.
-struct GateInputs {
-  std::uint64_t tick = 0;              // now
-  const PanTiltScan* scan = nullptr;   // the latest scan (never null in use)
-  SectorPose pose{};                   // odometry now
-  bool scanner_failed = false;         // the pan-tilt reports a failure
-};
+// One activation's view: the scan, odometry, the pan-tilt's state.
+using GateInputs = ptu::ScanInputs;
 
-// One activation's decision.
-struct GateOutput {
-  std::int32_t left = 0;               // wheel speeds to request, cm/s
-  std::int32_t right = 0;              // cm/s
-  bool request = false;                // publish the speeds (false once ended)
-  ModeState state = ModeState::off;    // searching, moving, aligned, failed, off
-  ModeReason reason = ModeReason::none;// why it failed
-  std::int32_t width_mm = 0;           // estimated passage width, mm
+// One activation's decision: the wish (speeds, state: searching, moving, aligned, failed, off)
+// and the passage seen.
+struct GateOutput : ModeOutput {
+  std::int32_t width_mm = 0;  // estimated passage width, mm
 };
 
 class GateLogic {

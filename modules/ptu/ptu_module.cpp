@@ -4,6 +4,7 @@
 
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
+#include "modules/mode_status.hpp"
 
 namespace robuter {
 
@@ -56,7 +57,7 @@ PtuModule::PtuModule(Blackboard& bb, hal::ByteStream* stream, hal::SonarRing& ri
       status_out_(bb.pan_tilt_status.writer()) {}
 
 bool PtuModule::init(Kernel& k) {
-  status_out_.publish(ModeStatus{ModeState::off, ModeReason::none, 0, k.tick(), 0, 0, k.tick()});
+  status_out_.publish(off_status(k.tick()));
   scan_out_.publish(driver_.scan());
   modes_.copy();  // an Ap from before the start is not replayed as a new one
   return true;

@@ -4,7 +4,8 @@
 
 Topics: every Topic of `struct Blackboard` (modules/topics.hpp) has one row, whose writer cell
 names its owner module and whose readers cell names exactly the modules that take a reader of it
-(`bb.<topic>.reader()` under modules/<module>/; a `MotionClaim` reads `authority`; the firmware's
+(`bb.<topic>.reader()` under modules/<module>/; a helper's readers — a `MotionClaim`'s `authority`,
+a `ptu::ScanView`'s scan, pan-tilt status and posture — are its holder's; the firmware's
 composition hands the motion requests and the known structure's readers to the emergency module).
 Parameters: every section of `for_each_param_section` (kernel/config.hpp) has one row naming the
 header that declares its table. Blackboard::for_each_topic names every topic member. Namespaces: a header under modules/<m>/ opens only robuter or
@@ -35,20 +36,38 @@ def topics():
     return {m.group(2): OWNERS[m.group(1)] for m in re.finditer(r"Topic<\w+, (\w+)> (\w+);", body)}
 
 
+# Helpers whose readers are their holders': a module's header that holds one (a member), or
+# derives from a frame that holds one for it, reads what the helper reads.
+HELPERS = {  # the helper's file stem: how a holder names it
+    "motion_claim": r"\bMotionClaim\s+\w+_;|\bModeProcess<|\bScanMode<",
+    "scan_view": r"\bScanView\s+\w+_;|\bScanMode<",
+}
+FRAMES = {"mode_process", "scan_mode"}  # the frames (their helpers are their derived modules')
+
+
 def code_readers():
     found = {}
+    helper_reads = {h: set() for h in HELPERS}
+    holders = []
     for path in sorted((ROOT / "modules").glob("*/**/*.[ch]pp")):
         module = path.relative_to(ROOT / "modules").parts[0]
-        if module not in MODULES or path.stem == "motion_claim":
-            continue  # MotionClaim's reader of `authority` is its holder's (below)
-        for line in path.read_text().splitlines():
+        if module not in MODULES:
+            continue
+        text = path.read_text()
+        for line in text.splitlines():
             for m in re.finditer(r"\bbb_?\.(\w+)\.reader\(\)", line):
+                if path.stem in HELPERS:
+                    helper_reads[path.stem].add(m.group(1))
+                    continue
                 who = module
                 if module == "firmware" and ("add_motion_source" in line or "PriorMapStructure" in line):
                     who = "emergency"  # composition: the emergency module is given these readers
                 found.setdefault(m.group(1), set()).add(who)
-        if path.suffix == ".hpp" and re.search(r"\bMotionClaim\s+\w+_;", path.read_text()):
-            found.setdefault("authority", set()).add(module)
+        if path.suffix == ".hpp" and path.stem not in HELPERS and path.stem not in FRAMES:
+            holders += [(module, h) for h, pattern in HELPERS.items() if re.search(pattern, text)]
+    for module, h in holders:
+        for topic in helper_reads[h]:
+            found.setdefault(topic, set()).add(module)
     return found
 
 
