@@ -12,6 +12,8 @@
 #include <mutex>
 #include <thread>
 
+#include "kernel/word_table.hpp"
+
 namespace robuter::log {
 
 namespace {
@@ -24,6 +26,10 @@ struct Record {
 };
 
 constexpr std::size_t kSlots = 256;        // ring capacity, records (power of two)
+
+// The levels' words, for the command line and the records.
+constexpr Word<Level> kLevels[] = {
+    {"debug", Level::debug}, {"info", Level::info}, {"warn", Level::warn}, {"error", Level::error}, {"off", Level::off}};
 
 std::array<Record, kSlots> g_ring;                 // the records
 std::atomic<std::uint64_t> g_head{0};              // next slot the producer writes
@@ -78,24 +84,8 @@ void drain() {
 
 }  // namespace
 
-bool parse_level(std::string_view text, Level& out) {
-  static constexpr std::array<std::pair<std::string_view, Level>, 5> names{
-      {{"debug", Level::debug}, {"info", Level::info}, {"warn", Level::warn}, {"error", Level::error}, {"off", Level::off}}};
-  for (const auto& [n, l] : names)
-    if (n == text) { out = l; return true; }
-  return false;
-}
-
-const char* level_name(Level l) {
-  switch (l) {
-    case Level::debug: return "debug";
-    case Level::info: return "info";
-    case Level::warn: return "warn";
-    case Level::error: return "error";
-    case Level::off: return "off";
-  }
-  return "?";
-}
+bool parse_level(std::string_view text, Level& out) { return read_word(kLevels, text, out); }
+const char* level_name(Level l) { return word_of(kLevels, l); }
 
 void set_level(Level l) { g_level.store(l, std::memory_order_relaxed); }
 Level level() { return g_level.load(std::memory_order_relaxed); }

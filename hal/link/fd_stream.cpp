@@ -4,26 +4,19 @@
 
 #include <unistd.h>
 
-#include <cerrno>
+#include "hal/link/fd_io.hpp"
 
 namespace robuter::hal {
 
 IoResult FdStream::read(std::span<std::uint8_t> out) {
   if (!connected_) return {0, true};
-  const ssize_t n = ::read(in_fd_, out.data(), out.size());
-  if (n > 0) return {static_cast<std::size_t>(n), false};
-  if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {0, false};
-  connected_ = false;  // EOF, EIO (pty client gone), ENXIO/ENODEV (device removed)
-  return {0, true};
+  // EOF, EIO (pty client gone), ENXIO/ENODEV (device removed) all end the session.
+  return fd_io_result(FdCall::read, ::read(in_fd_, out.data(), out.size()), [this](int) { connected_ = false; });
 }
 
 IoResult FdStream::write(std::span<const std::uint8_t> in) {
   if (!connected_) return {0, true};
-  const ssize_t n = ::write(out_fd_, in.data(), in.size());
-  if (n >= 0) return {static_cast<std::size_t>(n), false};
-  if (errno == EAGAIN || errno == EINTR) return {0, false};
-  connected_ = false;
-  return {0, true};
+  return fd_io_result(FdCall::write, ::write(out_fd_, in.data(), in.size()), [this](int) { connected_ = false; });
 }
 
 }  // namespace robuter::hal

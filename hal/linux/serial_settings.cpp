@@ -5,6 +5,8 @@
 #include <array>
 #include <utility>
 
+#include "kernel/word_table.hpp"
+
 namespace robuter::hal {
 
 namespace {
@@ -12,62 +14,33 @@ constexpr std::array<std::pair<unsigned, speed_t>, 11> kRates{{
     {1200, B1200}, {2400, B2400}, {4800, B4800}, {9600, B9600}, {19200, B19200}, {38400, B38400},
     {57600, B57600}, {115200, B115200}, {230400, B230400}, {460800, B460800}, {921600, B921600},
 }};
+constexpr Word<Parity> kParities[] = {{"none", Parity::none}, {"even", Parity::even}, {"odd", Parity::odd}};
+constexpr Word<FlowControl> kFlows[] = {
+    {"none", FlowControl::none}, {"hardware", FlowControl::hardware}, {"software", FlowControl::software}};
+
+// The termios rate of `baud`; null when it has none.
+const speed_t* rate_of(unsigned baud) {
+  for (const auto& [b, r] : kRates)
+    if (b == baud) return &r;
+  return nullptr;
+}
 }  // namespace
 
-bool valid_baud(unsigned baud) {
-  for (const auto& [b, r] : kRates)
-    if (b == baud) return true;
-  return false;
-}
+bool valid_baud(unsigned baud) { return rate_of(baud) != nullptr; }
 
-bool parse_parity(std::string_view text, Parity& out) {
-  if (text == "none") out = Parity::none;
-  else if (text == "even") out = Parity::even;
-  else if (text == "odd") out = Parity::odd;
-  else return false;
-  return true;
-}
-
-bool parse_flow_control(std::string_view text, FlowControl& out) {
-  if (text == "none") out = FlowControl::none;
-  else if (text == "hardware") out = FlowControl::hardware;
-  else if (text == "software") out = FlowControl::software;
-  else return false;
-  return true;
-}
-
-const char* parity_name(Parity p) {
-  switch (p) {
-    case Parity::none: return "none";
-    case Parity::even: return "even";
-    case Parity::odd: return "odd";
-  }
-  return "?";
-}
-
-const char* flow_control_name(FlowControl f) {
-  switch (f) {
-    case FlowControl::none: return "none";
-    case FlowControl::hardware: return "hardware";
-    case FlowControl::software: return "software";
-  }
-  return "?";
-}
+bool parse_parity(std::string_view text, Parity& out) { return read_word(kParities, text, out); }
+bool parse_flow_control(std::string_view text, FlowControl& out) { return read_word(kFlows, text, out); }
+const char* parity_name(Parity p) { return word_of(kParities, p); }
+const char* flow_control_name(FlowControl f) { return word_of(kFlows, f); }
 
 // Why VMIN 1: with VMIN 0 and VTIME 0 Linux returns 0 from an idle non-blocking read, which
 // would look like the device hanging up.
 bool encode_termios(const SerialSettings& s, termios& t) {
-  speed_t rate = 0;
-  bool found = false;
-  for (const auto& [b, r] : kRates)
-    if (b == s.baud) {
-      rate = r;
-      found = true;
-    }
-  if (!found) return false;
+  const speed_t* rate = rate_of(s.baud);
+  if (rate == nullptr) return false;
   cfmakeraw(&t);
-  cfsetispeed(&t, rate);
-  cfsetospeed(&t, rate);
+  cfsetispeed(&t, *rate);
+  cfsetospeed(&t, *rate);
   t.c_cflag |= CLOCAL | CREAD | CS8;
   t.c_cflag &= ~static_cast<tcflag_t>(PARENB | PARODD | CSTOPB | CRTSCTS);
   t.c_iflag &= ~static_cast<tcflag_t>(IXON | IXOFF | IXANY | INPCK);

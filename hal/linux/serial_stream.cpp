@@ -14,6 +14,8 @@
 #include <cstring>
 #include <utility>
 
+#include "hal/link/fd_io.hpp"
+
 namespace robuter::hal {
 
 namespace {
@@ -91,20 +93,13 @@ IoResult SerialStream::read(std::span<std::uint8_t> out) {
     lose(ESTALE);  // the helper found another node (or none) at the path
     return {0, true};
   }
-  const ssize_t n = ::read(fd_, out.data(), out.size());
-  if (n > 0) return {static_cast<std::size_t>(n), false};
-  if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {0, false};
-  lose(n == 0 ? EPIPE : errno);  // 0: hung up (VMIN is 1, so an idle line says EAGAIN)
-  return {0, true};
+  // A read of 0 is a hang-up: VMIN is 1, so an idle line says EAGAIN.
+  return fd_io_result(FdCall::read, ::read(fd_, out.data(), out.size()), [this](int why) { lose(why); });
 }
 
 IoResult SerialStream::write(std::span<const std::uint8_t> in) {
   if (!connected_) return {0, true};
-  const ssize_t n = ::write(fd_, in.data(), in.size());
-  if (n >= 0) return {static_cast<std::size_t>(n), false};
-  if (errno == EAGAIN || errno == EINTR) return {0, false};
-  lose(errno);
-  return {0, true};
+  return fd_io_result(FdCall::write, ::write(fd_, in.data(), in.size()), [this](int why) { lose(why); });
 }
 
 const char* SerialStream::loss_reason() const {

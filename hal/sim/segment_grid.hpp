@@ -43,23 +43,12 @@ class SegmentGrid {
   // Calls f(index) once for each edge bucketed in a cell that meets the box [lo, hi].
   template <class F>
   void for_each_near(const Vec2& lo, const Vec2& hi, GridScratch& scratch, F&& f) const {
-    if (nx_ == 0) return;
+    if (nx_ == 0 || misses(lo, hi)) return;
     const int x0 = clamp_x(lo.x()), x1 = clamp_x(hi.x());
     const int y0 = clamp_y(lo.y()), y1 = clamp_y(hi.y());
-    if (hi.x() < origin_.x() || hi.y() < origin_.y() || lo.x() > far_.x() || lo.y() > far_.y()) {
-      return;
-    }
     const std::uint32_t epoch = scratch.next_epoch();
     for (int cy = y0; cy <= y1; ++cy) {
-      for (int cx = x0; cx <= x1; ++cx) {
-        const std::size_t c = static_cast<std::size_t>(cy) * nx_ + cx;
-        for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-          const std::uint32_t s = items_[k];
-          if (scratch.stamp[s] == epoch) continue;
-          scratch.stamp[s] = epoch;
-          f(s);
-        }
-      }
+      for (int cx = x0; cx <= x1; ++cx) visit_cell(cx, cy, epoch, scratch, f);
     }
   }
 
@@ -73,10 +62,7 @@ class SegmentGrid {
                            const Vec2& n2, double reach, GridScratch& scratch, F&& f,
                            Stop&& stop) const {
     constexpr double kAll = std::numeric_limits<double>::infinity();
-    if (nx_ == 0) return kAll;
-    if (hi.x() < origin_.x() || hi.y() < origin_.y() || lo.x() > far_.x() || lo.y() > far_.y()) {
-      return kAll;
-    }
+    if (nx_ == 0 || misses(lo, hi)) return kAll;
     const int x0 = clamp_x(lo.x()), x1 = clamp_x(hi.x());
     const int y0 = clamp_y(lo.y()), y1 = clamp_y(hi.y());
     // Outside the grid the apex's own cell is meaningless: walk from the nearest cell, and give
@@ -89,18 +75,12 @@ class SegmentGrid {
     const double slack1 = half * (std::abs(n1.x()) + std::abs(n1.y()));
     const double slack2 = half * (std::abs(n2.x()) + std::abs(n2.y()));
     const std::uint32_t epoch = scratch.next_epoch();
-    auto visit_cell = [&](int cx, int cy) {
+    auto visit_wedge_cell = [&](int cx, int cy) {
       const Vec2 m = origin_ + Vec2((cx + 0.5) * cell_, (cy + 0.5) * cell_) - apex;
       if (n1.dot(m) > slack1 || n2.dot(m) > slack2) return;  // wholly outside the wedge
       const Vec2 gap = (m.cwiseAbs() - Vec2::Constant(half)).cwiseMax(0.0);
       if (gap.squaredNorm() > reach * reach) return;          // wholly beyond reach
-      const std::size_t c = static_cast<std::size_t>(cy) * nx_ + cx;
-      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-        const std::uint32_t s = items_[k];
-        if (scratch.stamp[s] == epoch) continue;
-        scratch.stamp[s] = epoch;
-        f(s);
-      }
+      visit_cell(cx, cy, epoch, scratch, f);
     };
     for (int r = 0; r <= rings; ++r) {
       const double bound = (!inside || r == 0) ? 0.0 : (r - 1) * cell_;
@@ -109,16 +89,16 @@ class SegmentGrid {
       const int cx0 = std::max(xa, x0), cx1 = std::min(xb, x1);
       const int cy0 = std::max(ya + 1, y0), cy1 = std::min(yb - 1, y1);
       if (ya >= y0) {
-        for (int cx = cx0; cx <= cx1; ++cx) visit_cell(cx, ya);
+        for (int cx = cx0; cx <= cx1; ++cx) visit_wedge_cell(cx, ya);
       }
       if (r > 0 && yb <= y1) {
-        for (int cx = cx0; cx <= cx1; ++cx) visit_cell(cx, yb);
+        for (int cx = cx0; cx <= cx1; ++cx) visit_wedge_cell(cx, yb);
       }
       if (xa >= x0) {
-        for (int cy = cy0; cy <= cy1; ++cy) visit_cell(xa, cy);
+        for (int cy = cy0; cy <= cy1; ++cy) visit_wedge_cell(xa, cy);
       }
       if (r > 0 && xb <= x1) {
-        for (int cy = cy0; cy <= cy1; ++cy) visit_cell(xb, cy);
+        for (int cy = cy0; cy <= cy1; ++cy) visit_wedge_cell(xb, cy);
       }
     }
     return kAll;
@@ -129,6 +109,24 @@ class SegmentGrid {
   int rows() const { return ny_; }
 
  private:
+  // True when the box [lo, hi] lies wholly outside the grid.
+  bool misses(const Vec2& lo, const Vec2& hi) const {
+    return hi.x() < origin_.x() || hi.y() < origin_.y() || lo.x() > far_.x() || lo.y() > far_.y();
+  }
+
+  // Calls f(index) for each edge bucketed in cell (cx, cy) that the query of `epoch` has not
+  // reported yet, and marks it reported.
+  template <class F>
+  void visit_cell(int cx, int cy, std::uint32_t epoch, GridScratch& scratch, F& f) const {
+    const std::size_t c = static_cast<std::size_t>(cy) * nx_ + cx;
+    for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+      const std::uint32_t s = items_[k];
+      if (scratch.stamp[s] == epoch) continue;
+      scratch.stamp[s] = epoch;
+      f(s);
+    }
+  }
+
   // Cell column (and row, below) of a coordinate, clamped to the grid.
   int clamp_x(double x) const {
     return std::clamp(static_cast<int>(std::floor((x - origin_.x()) / cell_)), 0, nx_ - 1);

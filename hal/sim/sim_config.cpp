@@ -2,6 +2,8 @@
 // TOML overrides of the simulator's configuration, strict like the world loader.
 #include "hal/sim/sim_config.hpp"
 
+#include <initializer_list>
+
 #include "hal/sim/sonar_presets.hpp"
 #include "hal/sim/toml_fields.hpp"
 
@@ -12,11 +14,7 @@ namespace {
 using detail::Fields;
 using detail::ParseFailure;
 
-// Assigns an optional value when present.
-template <class T>
-void maybe(T& field, const std::optional<double>& v) {
-  if (v) field = static_cast<T>(*v);
-}
+// Assigns an optional flag when present.
 void maybe(bool& field, const std::optional<bool>& v) {
   if (v) field = *v;
 }
@@ -27,19 +25,38 @@ void maybe(bool& field, const std::optional<bool>& v) {
   f.fail(f.line(), std::string(key) + ": " + why);
 }
 
+// A rule a number must pass, with the message when it does not.
+struct Rule {
+  bool (*ok)(double);  // true when the value passes
+  const char* why;     // what the value must be, for the message
+};
+constexpr Rule kAny{[](double) { return true; }, ""};
 // Refuses values that would make the model meaningless.
-void positive(Fields& f, const char* key, double v) {
-  if (!(v > 0.0)) fail_key(f, key, "must be positive");
-}
-
+constexpr Rule kPositive{[](double v) { return v > 0.0; }, "must be positive"};
 // Refuses negative values (noises, tolerances, delays).
-void non_negative(Fields& f, const char* key, double v) {
-  if (v < 0.0) fail_key(f, key, "must not be negative");
+constexpr Rule kNonNegative{[](double v) { return v >= 0.0; }, "must not be negative"};
+// Refuses probabilities outside 0..1.
+constexpr Rule kProbability{[](double v) { return v >= 0.0 && v <= 1.0; }, "must be within 0..1"};
+// A beam's half-angle: a cone that opens and does not look sideways, degrees.
+constexpr Rule kHalfAngle{[](double v) { return v > 0.0 && v < 89.0; }, "must be within 0..89"};
+// An incidence limit, degrees.
+constexpr Rule kIncidence{[](double v) { return v >= 0.0 && v <= 90.0; }, "must be within 0..90"};
+
+// Fails at `key` when `v` breaks `rule`.
+void require(Fields& f, const char* key, double v, Rule rule) {
+  if (!rule.ok(v)) fail_key(f, key, rule.why);
 }
 
-// Refuses probabilities outside 0..1.
-void probability(Fields& f, const char* key, double v) {
-  if (v < 0.0 || v > 1.0) fail_key(f, key, "must be within 0..1");
+// Unit conversions from the file's words to the model's units.
+double as_is(double v) { return v; }
+double ms_to_s(double ms) { return ms * 1e-3; }
+
+// Reads the optional number `key`: checked with `rule`, converted to the field's unit.
+void read_number(Fields& f, const char* key, double& field, Rule rule, double (*convert)(double) = as_is) {
+  if (auto v = f.opt_number(key)) {
+    require(f, key, *v, rule);
+    field = convert(*v);
+  }
 }
 
 // The sonar behaviour keys shared by [sonar] and [pan_tilt].
@@ -50,78 +67,59 @@ void read_sonar_params(Fields& f, SonarParams& p) {
     if (!preset) f.fail_at(*f.get("model"), "model: expected " + std::string(sonar_preset_choices()));
     apply_sonar_preset(*preset, p);
   }
-  if (auto v = f.opt_number("half_angle_deg")) {
-    if (*v <= 0.0 || *v >= 89.0) f.fail_at(*f.get("half_angle_deg"), "half_angle_deg: must be within 0..89");
-    p.half_angle = deg_to_rad(*v);
-  }
-  if (auto v = f.opt_number("timeout_ms")) {
-    positive(f, "timeout_ms", *v);
-    p.timeout = *v * 1e-3;
-  }
-  if (auto v = f.opt_number("sound_speed")) {
-    positive(f, "sound_speed", *v);
-    p.sound_speed = *v;
-  }
-  if (auto v = f.opt_number("min_range")) {
-    non_negative(f, "min_range", *v);
-    p.min_range = *v;
-  }
-  for (const auto& [key, field] : {std::pair{"max_incidence_deg", &SonarParams::max_incidence},
-                                    std::pair{"max_incidence_smooth_deg", &SonarParams::max_incidence_smooth},
-                                    std::pair{"max_incidence_rough_deg", &SonarParams::max_incidence_rough}}) {
-    if (auto v = f.opt_number(key)) {
-      if (*v < 0.0 || *v > 90.0) f.fail_at(*f.get(key), std::string(key) + ": must be within 0..90");
-      p.*field = deg_to_rad(*v);
-    }
-  }
-  if (auto v = f.opt_number("noise_sigma")) {
-    non_negative(f, "noise_sigma", *v);
-    p.noise_sigma = *v;
-  }
-  if (auto v = f.opt_number("noise_relative")) {
-    non_negative(f, "noise_relative", *v);
-    p.noise_relative = *v;
-  }
-  if (auto v = f.opt_number("spurious_probability")) {
-    probability(f, "spurious_probability", *v);
-    p.spurious_probability = *v;
-  }
-  if (auto v = f.opt_number("dropout_probability")) {
-    probability(f, "dropout_probability", *v);
-    p.dropout_probability = *v;
-  }
-  if (auto v = f.opt_number("scale")) {
-    positive(f, "scale", *v);
-    p.scale = *v;
-  }
+  read_number(f, "half_angle_deg", p.half_angle, kHalfAngle, deg_to_rad);
+  read_number(f, "timeout_ms", p.timeout, kPositive, ms_to_s);
+  read_number(f, "sound_speed", p.sound_speed, kPositive);
+  read_number(f, "min_range", p.min_range, kNonNegative);
+  read_number(f, "max_incidence_deg", p.max_incidence, kIncidence, deg_to_rad);
+  read_number(f, "max_incidence_smooth_deg", p.max_incidence_smooth, kIncidence, deg_to_rad);
+  read_number(f, "max_incidence_rough_deg", p.max_incidence_rough, kIncidence, deg_to_rad);
+  read_number(f, "noise_sigma", p.noise_sigma, kNonNegative);
+  read_number(f, "noise_relative", p.noise_relative, kNonNegative);
+  read_number(f, "spurious_probability", p.spurious_probability, kProbability);
+  read_number(f, "dropout_probability", p.dropout_probability, kProbability);
+  read_number(f, "scale", p.scale, kPositive);
   maybe(p.multipath, f.opt_bool("multipath"));
   maybe(p.crosstalk, f.opt_bool("crosstalk"));
   maybe(p.spurious_in_window, f.opt_bool("spurious_in_window"));
-  maybe(p.offset, f.opt_number("offset"));
-  maybe(p.no_echo, f.opt_number("no_echo"));
+  read_number(f, "offset", p.offset, kAny);
+  read_number(f, "no_echo", p.no_echo, kAny);
+}
+
+// A number key whose field is checked once the section is read, whether the file set it or the
+// base configuration did.
+struct CheckedKey {
+  const char* key;  // key in the table
+  double* field;    // where its value goes
+  Rule rule;        // what the field must be after reading
+};
+
+// Reads every key of `keys` that is present (no checks yet).
+void read_numbers(Fields& f, std::initializer_list<CheckedKey> keys) {
+  for (const auto& k : keys) read_number(f, k.key, *k.field, kAny);
+}
+
+// Checks every field of `keys` against its rule, in order.
+void check_numbers(Fields& f, std::initializer_list<CheckedKey> keys) {
+  for (const auto& k : keys) require(f, k.key, *k.field, k.rule);
 }
 
 // [robot]: geometry and drive; checks the result is a usable body.
 void read_robot(Fields& f, RobotParams& r) {
   auto& g = r.geometry;
-  maybe(g.length, f.opt_number("length"));
-  maybe(g.width, f.opt_number("width"));
-  maybe(g.axle_to_front, f.opt_number("axle_to_front"));
-  maybe(g.wheel_base, f.opt_number("wheel_base"));
-  maybe(r.limits.max_wheel_speed, f.opt_number("max_wheel_speed"));
-  maybe(r.limits.max_accel, f.opt_number("max_accel"));
-  maybe(r.limits.max_decel, f.opt_number("max_decel"));
-  maybe(r.contact_tolerance, f.opt_number("contact_tolerance"));
-  maybe(r.max_substep_travel, f.opt_number("max_substep_travel"));
-  maybe(r.trail_spacing, f.opt_number("trail_spacing"));
-  positive(f, "length", g.length);
-  positive(f, "width", g.width);
-  positive(f, "wheel_base", g.wheel_base);
-  positive(f, "max_wheel_speed", r.limits.max_wheel_speed);
-  non_negative(f, "max_accel", r.limits.max_accel);
-  non_negative(f, "max_decel", r.limits.max_decel);
-  non_negative(f, "contact_tolerance", r.contact_tolerance);
-  positive(f, "max_substep_travel", r.max_substep_travel);
+  const std::initializer_list<CheckedKey> keys{
+      {"length", &g.length, kPositive},
+      {"width", &g.width, kPositive},
+      {"axle_to_front", &g.axle_to_front, kAny},  // checked against the length below
+      {"wheel_base", &g.wheel_base, kPositive},
+      {"max_wheel_speed", &r.limits.max_wheel_speed, kPositive},
+      {"max_accel", &r.limits.max_accel, kNonNegative},
+      {"max_decel", &r.limits.max_decel, kNonNegative},
+      {"contact_tolerance", &r.contact_tolerance, kNonNegative},
+      {"max_substep_travel", &r.max_substep_travel, kPositive},
+      {"trail_spacing", &r.trail_spacing, kAny}};
+  read_numbers(f, keys);
+  check_numbers(f, keys);
   if (g.axle_to_front <= 0.0 || g.axle_to_front >= g.length) {
     f.fail(f.line(), "axle_to_front must lie within the body length");
   }
@@ -132,15 +130,16 @@ void read_robot(Fields& f, RobotParams& r) {
 
 // [odometry]: encoder and slip errors.
 void read_odometry(Fields& f, OdometryErrors& o) {
-  maybe(o.scale_left, f.opt_number("scale_left"));
-  maybe(o.scale_right, f.opt_number("scale_right"));
-  maybe(o.wheel_base_error, f.opt_number("wheel_base_error"));
-  maybe(o.noise, f.opt_number("noise"));
-  maybe(o.slip_mean, f.opt_number("slip_mean"));
-  maybe(o.slip_sigma, f.opt_number("slip_sigma"));
+  const std::initializer_list<CheckedKey> keys{
+      {"scale_left", &o.scale_left, kAny},
+      {"scale_right", &o.scale_right, kAny},
+      {"wheel_base_error", &o.wheel_base_error, kAny},
+      {"noise", &o.noise, kNonNegative},
+      {"slip_mean", &o.slip_mean, kAny},
+      {"slip_sigma", &o.slip_sigma, kNonNegative}};
+  read_numbers(f, keys);
   if (auto s = f.opt_integer("seed")) o.seed = static_cast<std::uint64_t>(*s);
-  non_negative(f, "noise", o.noise);
-  non_negative(f, "slip_sigma", o.slip_sigma);
+  check_numbers(f, keys);
 }
 
 // [[sonar.sensor]] rows replace fields of the numbered sensor.
@@ -153,9 +152,21 @@ void read_sensor(const toml::table& t, std::string_view file, const std::string&
   }
   f.set_what("[[" + prefix + "sonar.sensor]] " + std::to_string(*number));
   SonarMount& m = layout[static_cast<std::size_t>(*number - 1)];
-  if (auto v = f.opt_number("x")) m.position.x() = *v;
-  if (auto v = f.opt_number("y")) m.position.y() = *v;
+  read_number(f, "x", m.position.x(), kAny);
+  read_number(f, "y", m.position.y(), kAny);
   if (auto v = f.opt_number("direction_deg")) m.direction = wrap_angle(deg_to_rad(*v));
+  f.finish();
+}
+
+// Reads the table `name` of `top` with `read` when it is there, then refuses its unknown keys.
+template <class Read>
+void read_section(Fields& top, const std::string& prefix, const char* name, Read read) {
+  const auto* n = top.get(name);
+  if (n == nullptr) return;
+  const std::string title = "[" + prefix + name + "]";
+  if (!n->is_table()) top.fail_at(*n, std::string(name) + ": expected a table " + title);
+  Fields f(*n->as_table(), top.file(), title);
+  read(f);
   f.finish();
 }
 
@@ -163,46 +174,24 @@ void read_sensor(const toml::table& t, std::string_view file, const std::string&
 // `prefix` names the tables in messages ("sim." when they sit in the firmware's configuration).
 SimConfig apply(const toml::table& root, std::string_view file, SimConfig c, const std::string& prefix = "") {
   Fields top(root, file, prefix.empty() ? std::string("configuration") : "[" + prefix.substr(0, prefix.size() - 1) + "]");
-  if (const auto* n = top.get("robot")) {
-    if (!n->is_table()) top.fail_at(*n, "robot: expected a table [" + prefix + "robot]");
-    Fields f(*n->as_table(), file, "[" + prefix + "robot]");
-    read_robot(f, c.robot);
-    f.finish();
-  }
-  if (const auto* n = top.get("odometry")) {
-    if (!n->is_table()) top.fail_at(*n, "odometry: expected a table [" + prefix + "odometry]");
-    Fields f(*n->as_table(), file, "[" + prefix + "odometry]");
-    read_odometry(f, c.robot.odometry);
-    f.finish();
-  }
-  if (const auto* n = top.get("sonar")) {
-    if (!n->is_table()) top.fail_at(*n, "sonar: expected a table [" + prefix + "sonar]");
-    Fields f(*n->as_table(), file, "[" + prefix + "sonar]");
+  read_section(top, prefix, "robot", [&](Fields& f) { read_robot(f, c.robot); });
+  read_section(top, prefix, "odometry", [&](Fields& f) { read_odometry(f, c.robot.odometry); });
+  read_section(top, prefix, "sonar", [&](Fields& f) {
     read_sonar_params(f, c.ring);
     c.timing.timeout = c.ring.timeout;
-    if (auto v = f.opt_number("node_delay_ms")) {
-      non_negative(f, "node_delay_ms", *v);
-      c.timing.node_delay = *v * 1e-3;
-    }
+    read_number(f, "node_delay_ms", c.timing.node_delay, kNonNegative, ms_to_s);
     if (auto s = f.opt_integer("seed")) c.sonar_seed = static_cast<std::uint64_t>(*s);
     if (const auto* s = f.get("sensor")) {
       if (!s->is_array_of_tables()) f.fail_at(*s, "sensor: must be written [[" + prefix + "sonar.sensor]]");
       for (const auto& row : *s->as_array()) read_sensor(*row.as_table(), file, prefix, c.layout);
     }
-    f.finish();
-  }
-  if (const auto* n = top.get("pan_tilt")) {
-    if (!n->is_table()) top.fail_at(*n, "pan_tilt: expected a table [" + prefix + "pan_tilt]");
-    Fields f(*n->as_table(), file, "[" + prefix + "pan_tilt]");
+  });
+  read_section(top, prefix, "pan_tilt", [&](Fields& f) {
     read_sonar_params(f, c.pan_tilt);
-    if (auto v = f.opt_number("x")) c.pan_tilt_mount.pivot.x() = *v;
-    if (auto v = f.opt_number("y")) c.pan_tilt_mount.pivot.y() = *v;
-    if (auto v = f.opt_number("sensor_offset")) {
-      non_negative(f, "sensor_offset", *v);
-      c.pan_tilt_mount.sensor_offset = *v;
-    }
-    f.finish();
-  }
+    read_number(f, "x", c.pan_tilt_mount.pivot.x(), kAny);
+    read_number(f, "y", c.pan_tilt_mount.pivot.y(), kAny);
+    read_number(f, "sensor_offset", c.pan_tilt_mount.sensor_offset, kNonNegative);
+  });
   top.finish();
   return c;
 }

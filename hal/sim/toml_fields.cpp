@@ -78,11 +78,23 @@ double Fields::units() {
 }
 
 // Required keys fail at the table's own line when missing.
-double Fields::number(std::string_view key) {
+const toml::node& Fields::required(std::string_view key) {
   const auto* n = get(key);
   if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
-  return as_number(*n, key);
+  return *n;
 }
+
+// Any other type is refused at the value's line.
+template <class T>
+std::optional<T> Fields::opt_value(std::string_view key, const char* expected) {
+  const auto* n = get(key);
+  if (n == nullptr) return std::nullopt;
+  const auto* v = n->as<T>();
+  if (v == nullptr) fail_at(*n, std::string(key) + ": expected " + expected + ", found " + type_name(*n));
+  return v->get();
+}
+
+double Fields::number(std::string_view key) { return as_number(required(key), key); }
 
 // Optional keys are empty when absent, checked when present.
 std::optional<double> Fields::opt_number(std::string_view key) {
@@ -102,29 +114,15 @@ std::optional<double> Fields::opt_length(std::string_view key) {
 
 // Whole numbers only (counts, seeds, indices).
 std::optional<std::int64_t> Fields::opt_integer(std::string_view key) {
-  const auto* n = get(key);
-  if (n == nullptr) return std::nullopt;
-  const auto* i = n->as_integer();
-  if (i == nullptr) fail_at(*n, std::string(key) + ": expected an integer, found " + type_name(*n));
-  return i->get();
+  return opt_value<std::int64_t>(key, "an integer");
 }
 
 // true or false, nothing else.
-std::optional<bool> Fields::opt_bool(std::string_view key) {
-  const auto* n = get(key);
-  if (n == nullptr) return std::nullopt;
-  const auto* b = n->as_boolean();
-  if (b == nullptr) fail_at(*n, std::string(key) + ": expected true or false, found " + type_name(*n));
-  return b->get();
-}
+std::optional<bool> Fields::opt_bool(std::string_view key) { return opt_value<bool>(key, "true or false"); }
 
 // A string, nothing else.
 std::optional<std::string> Fields::opt_string(std::string_view key) {
-  const auto* n = get(key);
-  if (n == nullptr) return std::nullopt;
-  const auto* s = n->as_string();
-  if (s == nullptr) fail_at(*n, std::string(key) + ": expected a string, found " + type_name(*n));
-  return s->get();
+  return opt_value<std::string>(key, "a string");
 }
 
 // An optional [x, y] in the file's units.
@@ -135,19 +133,14 @@ std::optional<Vec2> Fields::opt_point(std::string_view key) {
 }
 
 // A required [x, y] in the file's units.
-Vec2 Fields::point(std::string_view key) {
-  const auto* n = get(key);
-  if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
-  return as_point(*n, key);
-}
+Vec2 Fields::point(std::string_view key) { return as_point(required(key), key); }
 
 // An array of [x, y] points in the file's units.
 std::vector<Vec2> Fields::points(std::string_view key) {
-  const auto* n = get(key);
-  if (n == nullptr) fail(line(), "missing key '" + std::string(key) + "'");
-  const auto* arr = n->as_array();
+  const auto& n = required(key);
+  const auto* arr = n.as_array();
   if (arr == nullptr) {
-    fail_at(*n, std::string(key) + ": expected an array of points, found " + type_name(*n));
+    fail_at(n, std::string(key) + ": expected an array of points, found " + type_name(n));
   }
   std::vector<Vec2> out;
   out.reserve(arr->size());

@@ -68,6 +68,11 @@ class Fields {
   const std::string& file() const { return file_; }
 
  private:
+  // The node of a required key; fails at the table's line when it is missing.
+  const toml::node& required(std::string_view key);
+  // An optional key of toml++ value type `T`; `expected` names that type in the message.
+  template <class T>
+  std::optional<T> opt_value(std::string_view key, const char* expected);
   double as_number(const toml::node& node, std::string_view key) const;
   Vec2 as_point(const toml::node& node, std::string_view key) const;
 

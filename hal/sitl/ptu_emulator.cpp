@@ -70,19 +70,24 @@ void PtuEmulator::execute() {
     const std::size_t w = std::char_traits<char>::length(word);
     return n == w && std::equal(word, word + w, t);
   };
-  if (is("ED")) {
-    echo_ = false;
-    reply_ok();
-  } else if (is("EE")) {
-    echo_ = true;
-    reply_ok();
-  } else if (is("FT")) {
-    verbose_ = false;
-    reply_ok();
-  } else if (is("FV")) {
-    verbose_ = true;
-    reply_ok();
-  } else if (is("I")) {
+  // The mode switches: each sets one flag and is acknowledged.
+  struct Switch {
+    const char* word;         // the command
+    bool PtuEmulator::*flag;  // the mode it sets
+    bool value;               // to this
+  };
+  static constexpr Switch kSwitches[] = {{"ED", &PtuEmulator::echo_, false},
+                                         {"EE", &PtuEmulator::echo_, true},
+                                         {"FT", &PtuEmulator::verbose_, false},
+                                         {"FV", &PtuEmulator::verbose_, true}};
+  for (const auto& sw : kSwitches) {
+    if (is(sw.word)) {
+      this->*sw.flag = sw.value;
+      reply_ok();
+      return;
+    }
+  }
+  if (is("I")) {
     reply_ok();  // immediate execution: the only mode emulated
   } else if (is("S")) {
     reply_error("Slaved mode is not emulated");

@@ -57,23 +57,24 @@ class Reader {
     f.finish();
   }
 
-  std::string name_of(Fields& f, const std::vector<std::string>& taken) {
+  // The `name` key of a [[`kind`]] row, unique among the `rows` read before it; the row's
+  // messages name it from then on.
+  template <class Row>
+  std::string take_name(Fields& f, const char* kind, const std::vector<Row>& rows) {
     const auto name = f.opt_string("name");
     if (!name) f.fail(f.line(), "missing key 'name'");
     if (!valid_name(*name))
       f.fail_at(*f.get("name"), "name \"" + *name + "\": 1 to 15 letters, digits, '-' or '_'");
-    if (std::find(taken.begin(), taken.end(), *name) != taken.end())
+    if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.name == *name; }))
       f.fail_at(*f.get("name"), "name \"" + *name + "\" is used twice");
+    f.set_what(std::string("[[") + kind + "]] '" + *name + "'");
     return *name;
   }
 
   void read_place(const toml::table& t) {
     Fields f(t, file_, "[[place]] " + std::to_string(places_.size() + 1), scale_);
-    std::vector<std::string> names;
-    for (const Place& p : places_) names.push_back(p.name);
     Place p;
-    p.name = name_of(f, names);
-    f.set_what("[[place]] '" + p.name + "'");
+    p.name = take_name(f, "place", places_);
     p.area = f.points("area");
     p.centre = f.point("centre");
     f.finish();
@@ -144,11 +145,8 @@ class Reader {
 
   void read_door(const toml::table& t) {
     Fields f(t, file_, "[[door]] " + std::to_string(doors_.size() + 1), scale_);
-    std::vector<std::string> names;
-    for (const Door& d : doors_) names.push_back(d.name);
     Door d;
-    d.name = name_of(f, names);
-    f.set_what("[[door]] '" + d.name + "'");
+    d.name = take_name(f, "door", doors_);
     const toml::node* between = f.get("between");
     if (between == nullptr) f.fail(f.line(), "missing key 'between' ([\"place\", \"place\"])");
     const auto* arr = between->as_array();

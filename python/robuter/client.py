@@ -56,19 +56,19 @@ def _ints(fields: List[str], reply: str) -> List[int]:
         raise ProtocolError(f"expected integers in {reply!r}") from None
 
 
+def _int_fields(reply: str, letter: str, count: int) -> List[int]:
+    """The first ``count`` fields after the reply's letter, as integers."""
+    return _ints(_fields(reply, letter, count)[:count], reply)
+
+
 @dataclasses.dataclass(frozen=True)
-class Posture:
-    """``BO`` → ``S <x> <y> <theta> <servo> <clock>``: x, y in 0.1 mm, theta in 0.01°."""
+class _Pose:
+    """The posture fields that ``BO`` and the status stream both start with: x, y in 0.1 mm, theta
+    in 0.01°, and the servo (brake) state."""
     x: int
     y: int
     theta: int
     servo: bool
-    clock: int
-
-    @classmethod
-    def parse(cls, reply: str) -> "Posture":
-        v = _ints(_fields(reply, "S", 5)[:5], reply)
-        return cls(v[0], v[1], v[2], v[3] != 0, v[4])
 
     @property
     def x_m(self) -> float:
@@ -84,6 +84,17 @@ class Posture:
 
 
 @dataclasses.dataclass(frozen=True)
+class Posture(_Pose):
+    """``BO`` → ``S <x> <y> <theta> <servo> <clock>``: x, y in 0.1 mm, theta in 0.01°."""
+    clock: int
+
+    @classmethod
+    def parse(cls, reply: str) -> "Posture":
+        v = _int_fields(reply, "S", 5)
+        return cls(v[0], v[1], v[2], v[3] != 0, v[4])
+
+
+@dataclasses.dataclass(frozen=True)
 class Ranges:
     """``BU`` → ``U <u1> … <u24> <servo> <clock>``: ranges in mm, sensor 1 first (0: inactive or
     no echo yet). ``mm[i]`` is sensor i + 1."""
@@ -93,7 +104,7 @@ class Ranges:
 
     @classmethod
     def parse(cls, reply: str) -> "Ranges":
-        v = _ints(_fields(reply, "U", 26)[:26], reply)
+        v = _int_fields(reply, "U", 26)
         return cls(tuple(v[:24]), v[24] != 0, v[25])
 
     def sensor(self, number: int) -> int:
@@ -136,13 +147,9 @@ class Emergency:
 
 
 @dataclasses.dataclass(frozen=True)
-class Status:
+class Status(_Pose):
     """A status stream line (``XS``): ``@ <x> <y> <theta> <servo> <left> <right> <emergency>
     <clock>``; ``emergency`` is 0 clear, +1 motion held, +2 latched, +4 protective stop."""
-    x: int
-    y: int
-    theta: int
-    servo: bool
     left: int
     right: int
     emergency: int
@@ -151,7 +158,7 @@ class Status:
 
     @classmethod
     def parse(cls, line: str) -> "Status":
-        v = _ints(_fields(line, "@", 8)[:8], line)
+        v = _int_fields(line, "@", 8)
         return cls(v[0], v[1], v[2], v[3] != 0, v[4], v[5], v[6], v[7], line)
 
 
@@ -309,7 +316,7 @@ class Robot:
     def clock(self) -> int:
         """``BC``: the internal clock, ticks of 10 ms."""
         reply = self.command("BC")
-        return _ints(_fields(reply, "C", 1)[:1], reply)[0]
+        return _int_fields(reply, "C", 1)[0]
 
     def move(self, left: int, right: int) -> None:
         """``AM``: wheel speeds in cm/s (refused with RobuterError while an emergency holds)."""

@@ -9,22 +9,11 @@
 #include <cerrno>
 #include <charconv>
 
+#include "kernel/split_words.hpp"
+
 namespace robuter::tools {
 
 namespace {
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> w;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    std::size_t j = i;
-    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-    if (j > i) w.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  return w;
-}
-
 bool number(std::string_view s, unsigned& v, int base = 10) {
   if (base == 16 && s.rfind("0x", 0) == 0) s.remove_prefix(2);
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v, base);
@@ -65,7 +54,7 @@ bool NodeCommands::poll(std::int64_t now_us) {
 }
 
 void NodeCommands::apply(std::string_view line, std::int64_t now_us) {
-  const auto w = words(line);
+  const auto w = split_words(line, " \t\r");  // a CRLF script's '\r' separates too
   if (w.empty() || w[0].front() == '#') return;
   auto reply = [&](const char* what) {
     std::fprintf(out_, "robuter-can-nodes: %.*s: %s\n", static_cast<int>(line.size()), line.data(), what);

@@ -5,23 +5,12 @@
 #include <cstdlib>
 #include <vector>
 
+#include "kernel/split_words.hpp"
 #include "protocol/codec/checksum.hpp"
 
 namespace robuter::ctl {
 
 namespace {
-
-std::vector<std::string_view> words(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && s[i] == ' ') ++i;
-    const std::size_t b = i;
-    while (i < s.size() && s[i] != ' ') ++i;
-    if (i > b) out.push_back(s.substr(b, i - b));
-  }
-  return out;
-}
 
 // The command word of a line as sent: its first two characters.
 std::string_view head(std::string_view line) {
@@ -44,7 +33,7 @@ std::string with_checksum(std::string_view line) {
 
 bool reply_fits(std::string_view sent, std::string_view reply) {
   if (reply == "error" || starts(reply, "error ")) return true;  // any line can be refused
-  const auto w = words(reply);
+  const auto w = split_words(reply, " ");  // a reply's words are separated by spaces
   if (w.empty()) return false;
   const std::string_view h = head(sent);
   const std::string_view r = w[0];

@@ -108,6 +108,12 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
       std::istringstream ss(rest);
       std::string verb;
       ss >> verb;
+      // The directive's MS argument, `fallback` when the line has none.
+      auto ms_arg = [&ss](int fallback) {
+        int ms = fallback;
+        ss >> ms;
+        return milliseconds(ms);
+      };
       if (verb == "raw") {
         std::string bytes, hex;
         while (ss >> hex) bytes += static_cast<char>(std::stoi(hex, nullptr, 16));
@@ -135,26 +141,18 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
         }
         writer.join();
       } else if (verb == "drain") {
-        int ms = 300;
-        ss >> ms;
-        client.drain(milliseconds(ms));
+        client.drain(ms_arg(300));
       } else if (verb == "silence") {
-        int ms = 300;
-        ss >> ms;
-        if (const auto got = client.read_line(milliseconds(ms))) {
+        if (const auto got = client.read_line(ms_arg(300))) {
           fail("expected silence, got '" + visible(*got) + "'");
           if (stop_here()) return r;
         } else {
           ++r.checks;
         }
       } else if (verb == "sleep") {
-        int ms = 0;
-        ss >> ms;
-        client.idle(milliseconds(ms));
+        client.idle(ms_arg(0));
       } else if (verb == "timeout") {
-        int ms = 3000;
-        ss >> ms;
-        timeout = milliseconds(ms);
+        timeout = ms_arg(3000);
       } else if (verb == "pipeline") {
         std::size_t n = 0;
         ss >> n;

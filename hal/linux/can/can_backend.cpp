@@ -6,29 +6,21 @@
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 #include "kernel/signals.hpp"
+#include "kernel/word_table.hpp"
 
 namespace robuter::hal::can {
 
 namespace {
-const char* health_name(DriveHealth h) {
-  switch (h) {
-    case DriveHealth::ok: return "ok";
-    case DriveHealth::fault: return "fault";
-    case DriveHealth::silent: return "heartbeat lost";
-    case DriveHealth::bus_passive: return "bus error-passive";
-    case DriveHealth::bus_off: return "bus-off";
-  }
-  return "?";
-}
-const char* fault_name(DriveFault f) {
-  switch (f) {
-    case DriveFault::none: return "ok";
-    case DriveFault::heartbeat_lost: return "heartbeat lost";
-    case DriveFault::fault: return "fault";
-    case DriveFault::not_operational: return "not operational";
-  }
-  return "?";
-}
+// The drives' health and each drive's fault, as the transition logs write them.
+constexpr Word<DriveHealth> kHealths[] = {{"ok", DriveHealth::ok},
+                                          {"fault", DriveHealth::fault},
+                                          {"heartbeat lost", DriveHealth::silent},
+                                          {"bus error-passive", DriveHealth::bus_passive},
+                                          {"bus-off", DriveHealth::bus_off}};
+constexpr Word<DriveFault> kFaults[] = {{"ok", DriveFault::none},
+                                        {"heartbeat lost", DriveFault::heartbeat_lost},
+                                        {"fault", DriveFault::fault},
+                                        {"not operational", DriveFault::not_operational}};
 std::int64_t micros(Kernel& k) { return k.now() / 1000; }
 }  // namespace
 
@@ -110,9 +102,9 @@ void CanBackend::log_transitions() {
     if (h == DriveHealth::ok) {
       log::info("can: drives ready (nodes {} and {})", drive_->left().settings().node, drive_->right().settings().node);
     } else {
-      log::warn("can: drives {}: left node {} {} (EMCY {:04X}), right node {} {} (EMCY {:04X})", health_name(h),
-                drive_->left().settings().node, fault_name(drive_->left_fault()), drive_->left().status().emcy_code,
-                drive_->right().settings().node, fault_name(drive_->right_fault()),
+      log::warn("can: drives {}: left node {} {} (EMCY {:04X}), right node {} {} (EMCY {:04X})", word_of(kHealths, h),
+                drive_->left().settings().node, word_of(kFaults, drive_->left_fault()), drive_->left().status().emcy_code,
+                drive_->right().settings().node, word_of(kFaults, drive_->right_fault()),
                 drive_->right().status().emcy_code);
     }
     last_health_ = h;

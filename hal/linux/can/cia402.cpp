@@ -3,6 +3,7 @@
 #include "hal/linux/can/cia402.hpp"
 
 #include "hal/linux/can/frame_bytes.hpp"
+#include "kernel/word_table.hpp"
 
 namespace robuter::hal::can::cia402 {
 
@@ -18,19 +19,19 @@ bool is(const can_frame& f, canid_t id, std::uint8_t len) {
 }
 }  // namespace
 
-const char* state_name(State s) {
-  switch (s) {
-    case State::not_ready_to_switch_on: return "not-ready-to-switch-on";
-    case State::switch_on_disabled: return "switch-on-disabled";
-    case State::ready_to_switch_on: return "ready-to-switch-on";
-    case State::switched_on: return "switched-on";
-    case State::operation_enabled: return "operation-enabled";
-    case State::quick_stop_active: return "quick-stop-active";
-    case State::fault_reaction_active: return "fault-reaction-active";
-    case State::fault: return "fault";
-  }
-  return "?";
-}
+namespace {
+// The drive states' words, as CiA 402 names them.
+constexpr Word<State> kStates[] = {{"not-ready-to-switch-on", State::not_ready_to_switch_on},
+                                   {"switch-on-disabled", State::switch_on_disabled},
+                                   {"ready-to-switch-on", State::ready_to_switch_on},
+                                   {"switched-on", State::switched_on},
+                                   {"operation-enabled", State::operation_enabled},
+                                   {"quick-stop-active", State::quick_stop_active},
+                                   {"fault-reaction-active", State::fault_reaction_active},
+                                   {"fault", State::fault}};
+}  // namespace
+
+const char* state_name(State s) { return word_of(kStates, s); }
 
 // The CiA 402 table: xxxx xxxx x0xx 0000 not ready, x1xx 0000 switch on disabled, x01x 0001
 // ready, x01x 0011 switched on, x01x 0111 enabled, x00x 0111 quick stop, x0xx 1111 fault

@@ -2,17 +2,19 @@
 // The in-process bus: fan-out to fixed receive rings, injectable controller state.
 #include "hal/linux/can/loopback_bus.hpp"
 
+#include "kernel/word_table.hpp"
+
 namespace robuter::hal::can {
 
-const char* bus_state_name(BusState s) {
-  switch (s) {
-    case BusState::active: return "error-active";
-    case BusState::warning: return "error-warning";
-    case BusState::passive: return "error-passive";
-    case BusState::off: return "bus-off";
-  }
-  return "?";
-}
+namespace {
+// The controller states' words, as SocketCAN names them.
+constexpr Word<BusState> kBusStates[] = {{"error-active", BusState::active},
+                                         {"error-warning", BusState::warning},
+                                         {"error-passive", BusState::passive},
+                                         {"bus-off", BusState::off}};
+}  // namespace
+
+const char* bus_state_name(BusState s) { return word_of(kBusStates, s); }
 
 // A full queue drops the newest frame, as a socket's receive buffer does.
 void LoopbackEndpoint::deliver(const can_frame& f) {

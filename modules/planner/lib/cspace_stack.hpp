@@ -92,26 +92,25 @@ class CSpaceStack {
   static constexpr std::size_t kWindowWords = 4096;  // 32 kB: e.g. 512 rows of 8 words (512 cells)
 
   // Why: a layer's update marks a cell reported once (bit kReported of the per-cell byte).
-  bool mark_reported(std::uint32_t map_index) {
-    if (marks_[map_index] & kReported) return false;
-    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] | kReported);
-    return true;
-  }
-  void clear_reported(std::uint32_t map_index) {
-    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] & ~kReported);
-  }
+  bool mark_reported(std::uint32_t map_index) { return set_mark(map_index, kReported); }
+  void clear_reported(std::uint32_t map_index) { clear_mark(map_index, kReported); }
 
   // Why: a layer's update re-tests a cell once (bit kChecked of the per-cell byte).
-  bool mark_checked(std::uint32_t map_index) {
-    if (marks_[map_index] & kChecked) return false;
-    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] | kChecked);
-    return true;
-  }
-  void clear_checked(std::uint32_t map_index) {
-    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] & ~kChecked);
-  }
+  bool mark_checked(std::uint32_t map_index) { return set_mark(map_index, kChecked); }
+  void clear_checked(std::uint32_t map_index) { clear_mark(map_index, kChecked); }
 
  private:
+  // Sets `bit` of a cell's byte; false when it was set already.
+  bool set_mark(std::uint32_t map_index, std::uint8_t bit) {
+    if (marks_[map_index] & bit) return false;
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] | bit);
+    return true;
+  }
+  // Clears `bit` of a cell's byte.
+  void clear_mark(std::uint32_t map_index, std::uint8_t bit) {
+    marks_[map_index] = static_cast<std::uint8_t>(marks_[map_index] & ~bit);
+  }
+
   static constexpr std::uint8_t kKindBits = 3;
   static constexpr std::uint8_t kReported = 4;
   static constexpr std::uint8_t kChecked = 8;

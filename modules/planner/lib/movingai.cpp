@@ -65,9 +65,7 @@ Result<OccupancyMap> parse_movingai_map(std::string_view text, const std::string
 }
 
 Result<OccupancyMap> load_movingai_map(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_movingai_map(*text, path);
+  return load_text_file(path, parse_movingai_map);
 }
 
 Result<std::vector<Scenario>> parse_movingai_scen(std::string_view text, const std::string& name) {
@@ -113,9 +111,7 @@ Result<std::vector<Scenario>> parse_movingai_scen(std::string_view text, const s
 }
 
 Result<std::vector<Scenario>> load_movingai_scen(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_movingai_scen(*text, path);
+  return load_text_file(path, parse_movingai_scen);
 }
 
 }  // namespace robuter::plan

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kernel/input_file.hpp"
+#include "kernel/split_words.hpp"
 
 namespace robuter::plan {
 
@@ -30,17 +31,7 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
-std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
+std::vector<std::string_view> split_words(std::string_view line) { return robuter::split_words(line, " \t"); }
 
 std::optional<long long> parse_integer(std::string_view s) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
@@ -73,25 +64,19 @@ std::optional<TokenReader::Token> TokenReader::next() {
   return Token{text_.substr(start, pos_ - start), line_};
 }
 
-Result<long long> TokenReader::integer(std::string_view what) {
+template <class T>
+Result<T> TokenReader::parsed(std::string_view what, std::optional<T> (*parse)(std::string_view), const char* kind) {
   const auto t = next();
   if (!t) return error(last_line_, "unexpected end of file: expected " + std::string(what));
-  const auto v = parse_integer(t->text);
+  const auto v = parse(t->text);
   if (!v)
-    return error(t->line, "expected " + std::string(what) + " (an integer), got '" +
-                              std::string(t->text) + "'");
+    return error(t->line, "expected " + std::string(what) + " (" + kind + "), got '" + std::string(t->text) + "'");
   return *v;
 }
 
-Result<double> TokenReader::real(std::string_view what) {
-  const auto t = next();
-  if (!t) return error(last_line_, "unexpected end of file: expected " + std::string(what));
-  const auto v = parse_real(t->text);
-  if (!v)
-    return error(t->line, "expected " + std::string(what) + " (a number), got '" +
-                              std::string(t->text) + "'");
-  return *v;
-}
+Result<long long> TokenReader::integer(std::string_view what) { return parsed(what, parse_integer, "an integer"); }
+
+Result<double> TokenReader::real(std::string_view what) { return parsed(what, parse_real, "a number"); }
 
 Status TokenReader::expect_end() {
   const auto t = next();

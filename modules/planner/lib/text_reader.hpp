@@ -19,6 +19,15 @@ inline constexpr std::size_t kMaxTextFileBytes = 64u * 1024u * 1024u;  // larges
 // never hangs or fills memory).
 Result<std::string> read_text_file(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
 
+// Why: every loader reads its file, then parses the text naming the file: one rule for the file
+// access and its error. `parse(text, path)` returns the Result.
+template <class Parse>
+auto load_text_file(const std::string& path, Parse parse) -> decltype(parse(std::string_view{}, path)) {
+  auto text = read_text_file(path);
+  if (!text) return text.error();
+  return parse(*text, path);
+}
+
 // Why: lines without their terminator; a trailing '\r' (CRLF files) is dropped.
 std::vector<std::string_view> split_lines(std::string_view text);
 
@@ -53,6 +62,11 @@ class TokenReader {
   int line() const { return line_; }
 
  private:
+  // The next token read with `parse`: an error naming `what` and `kind` ("an integer") when it
+  // is missing or not one.
+  template <class T>
+  Result<T> parsed(std::string_view what, std::optional<T> (*parse)(std::string_view), const char* kind);
+
   std::string_view text_;  // whole file
   std::string file_;       // file name for errors
   std::size_t pos_ = 0;    // next character to read

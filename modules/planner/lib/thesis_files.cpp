@@ -25,9 +25,7 @@ Result<ThesisParameters> parse_parameters(std::string_view text, const std::stri
 }
 
 Result<ThesisParameters> load_parameters(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_parameters(*text, path);
+  return load_text_file(path, parse_parameters);
 }
 
 Result<std::vector<Polygon>> parse_environment(std::string_view text, const std::string& name) {
@@ -59,9 +57,7 @@ Result<std::vector<Polygon>> parse_environment(std::string_view text, const std:
 }
 
 Result<std::vector<Polygon>> load_environment(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_environment(*text, path);
+  return load_text_file(path, parse_environment);
 }
 
 void rasterise_polygons(OccupancyMap& map, const std::vector<Polygon>& polygons) {

@@ -259,33 +259,36 @@ def drive_again(what):
     return ok
 
 
+def signal_while_driving(sig, what, restart_what, limit):
+    """Drives, then sends `sig` to robuterd: the drives stop, and systemd restarts it within
+    `limit` s (checked as `restart_what`). Returns the nodes' log mark taken after the stop."""
+    drive_again(f"before {what}")
+    pid = main_pid()
+    mark = len(log_lines())
+    t_sent = time.monotonic()
+    os.kill(pid, sig)
+    drive_stop_after(mark, what)
+    mark = len(log_lines())
+    restarted_after(pid, t_sent, restart_what, limit)
+    return mark
+
+
+def nothing_moves_since(mark):
+    """After a restart the drives stay still; systemd's failure count is cleared for the next."""
+    time.sleep(1.0)
+    check(not moving_lines(mark), "after the restart nothing moves by itself")
+    sh("systemctl reset-failed robuterd")
+
+
 node("range 2000")
-drive_again("before kill -9")
-pid = main_pid()
-mark = len(log_lines())
-t_kill = time.monotonic()
-os.kill(pid, signal.SIGKILL)
-drive_stop_after(mark, "kill -9")
-mark = len(log_lines())
-restarted_after(pid, t_kill, "kill -9", RESTART_SEC + 5)
-time.sleep(1.0)
-check(not moving_lines(mark), "after the restart nothing moves by itself")
-sh("systemctl reset-failed robuterd")
+mark = signal_while_driving(signal.SIGKILL, "kill -9", "kill -9", RESTART_SEC + 5)
+nothing_moves_since(mark)
 
 # ---- SIGSTOP (a hung robuterd): the drives stop, systemd's watchdog kills and restarts it
-drive_again("before SIGSTOP")
-pid = main_pid()
-mark = len(log_lines())
-t_stop = time.monotonic()
-os.kill(pid, signal.SIGSTOP)
-drive_stop_after(mark, "SIGSTOP")
-mark = len(log_lines())
-restarted_after(pid, t_stop, "SIGSTOP (watchdog)", WATCHDOG_SEC + RESTART_SEC + 5)
+mark = signal_while_driving(signal.SIGSTOP, "SIGSTOP", "SIGSTOP (watchdog)", WATCHDOG_SEC + RESTART_SEC + 5)
 rc, out = sh("journalctl -u robuterd --no-pager -o cat | grep -i watchdog | tail -3")
 check("watchdog" in out.lower(), f"the journal names systemd's watchdog: {out.splitlines()[-1] if out else ''}")
-time.sleep(1.0)
-check(not moving_lines(mark), "after the restart nothing moves by itself")
-sh("systemctl reset-failed robuterd")
+nothing_moves_since(mark)
 
 
 # ---- faults injected from the node process: XE names them
