@@ -142,18 +142,11 @@ bool HeadingSearch::begin(std::span<const PassGrid* const> slices, CellPose star
   if (m_count == 0) return done(PlanStatus::Unreachable);  // no slice allows a grid move
   const bool use_ring = !options.heap && ring_.reset(kBucketWidth, max_edge, h0);
   open_.clear();
-  run_ = Run{};
-  run_.slices = slices;
-  run_.start = start;
-  run_.goal = goal;
-  run_.options = options;
-  run_.costs = costs;
-  run_.heuristic = heuristic;
-  run_.turn_room = turn_room;
-  run_.m_count = m_count;
-  run_.use_ring = use_ring;
-  run_.active = true;
-  run_.tree = tree;
+  run_ = Run{.in = {slices, start, goal, options, costs, heuristic, turn_room},
+             .m_count = m_count,
+             .use_ring = use_ring,
+             .active = true,
+             .tree = tree};
   std::fill_n(end_extra_.begin(), m_count, 0.0);  // the goal cell at any heading
   return false;
 }
@@ -175,8 +168,8 @@ void HeadingSearch::begin_backward(std::span<const PassGrid* const> slices, Cell
   const double max_edge =
       std::max(kSqrt2 * std::max(1.0, costs.unknown_cost), turn * std::max(k_count - 1, 1));
   const Cell rc{robot.x, robot.y};
-  run_.goal = rc;
-  run_.heuristic = goal_field;
+  run_.in.goal = rc;
+  run_.in.heuristic = goal_field;
   robot_h_ = goal_field ? goal_field->cost_at(g0.index(rc)) : 0.0;
   for (int j = 0; j < m_count; ++j) {  // the ring distance from the robot's slice, in turn steps
     const int d = std::abs(move_slice_[static_cast<std::size_t>(j)] - robot.slice);
@@ -184,18 +177,15 @@ void HeadingSearch::begin_backward(std::span<const PassGrid* const> slices, Cell
   }
   const double h0 = toward_robot(goal.x + 1, goal.y + 1, g0.index(goal));
   open_.clear();
-  run_.use_ring = !options.heap && h0 != CostField::kInfinity && ring_.reset(kBucketWidth, max_edge, h0);
-  run_.slices = slices;
-  run_.start = CellPose{goal.x, goal.y, 0};  // the seeds: every move slot at the goal
-  run_.goal = rc;                           // the end: the robot's cell
-  run_.options = options;
-  run_.costs = costs;
-  run_.heuristic = goal_field;
-  run_.turn_room = turn_room;
-  run_.m_count = m_count;
-  run_.active = m_count > 0 && h0 != CostField::kInfinity;
-  run_.backward = true;
-  run_.next_enclosure = ~std::uint32_t{0};  // the shut-in proof floods from a robot, not a goal
+  const bool use_ring = !options.heap && h0 != CostField::kInfinity && ring_.reset(kBucketWidth, max_edge, h0);
+  // The seeds: every move slot at the goal; the end: the robot's cell. The shut-in proof floods
+  // from a robot, not a goal: never here.
+  run_ = Run{.in = {slices, CellPose{goal.x, goal.y, 0}, rc, options, costs, goal_field, turn_room},
+             .m_count = m_count,
+             .use_ring = use_ring,
+             .active = m_count > 0 && h0 != CostField::kInfinity,
+             .next_enclosure = ~std::uint32_t{0},
+             .backward = true};
   goal_cell_ = g0.index(goal);
   // The end cell's extra cost per slot: the robot's turn from its slice in the body's room.
   const LeanGraph lg = graph(slices, g0.index(rc), robot.slice, g0.index(rc));
@@ -239,7 +229,7 @@ LeanGraph HeadingSearch::graph(std::span<const PassGrid* const> slices, std::uin
                                std::uint32_t end) const {
   const PassGrid& g0 = *slices[0];
   const int k_count = static_cast<int>(slices.size());
-  const SliceBits* tr = run_.turn_room;
+  const SliceBits* tr = run_.in.turn_room;
   const bool own_turns = tr != nullptr && tr->slices == k_count;
   return LeanGraph{cls_of_.data(), k_count, g0.stride, g0.height + 2, move_slice_.data(), run_.m_count,
                    slot_of_.data(), allowed_.data(), own_turns ? tr->bits.data() : nullptr,
@@ -265,13 +255,13 @@ bool HeadingSearch::resume(std::uint32_t max_pops, PlanResult& out) {
   if (run_.settling) return settle_step(std::size_t{max_pops} * kSettleStatesPerPop, out);
   // The search's inputs, and what begin() derived from them, as locals: the loop below reads
   // them from registers, not through `this` (its writes to meta_ may alias any member).
-  const std::span<const PassGrid* const> slices = run_.slices;
-  const CellPose start = run_.start;
-  const Cell goal = run_.goal;
-  const HeadingOptions& options = run_.options;
-  const CostModel& costs = run_.costs;
-  const CostField* const heuristic = run_.heuristic;
-  const SliceBits* const turn_room = run_.turn_room;
+  const std::span<const PassGrid* const> slices = run_.in.slices;
+  const CellPose start = run_.in.start;
+  const Cell goal = run_.in.goal;
+  const HeadingOptions& options = run_.in.options;
+  const CostModel& costs = run_.in.costs;
+  const CostField* const heuristic = run_.in.heuristic;
+  const SliceBits* const turn_room = run_.in.turn_room;
   const int k_count = static_cast<int>(slices.size());
   const int m_count = run_.m_count;
   const bool use_ring = run_.use_ring;

@@ -256,7 +256,8 @@ class HeadingSearch {
   }
 
   // One search's inputs (begin()) and its progress between resume() steps.
-  struct Run {
+  // What a search is asked: the same fields for a search from the robot and one from the goal.
+  struct Problem {
     std::span<const PassGrid* const> slices;  // the slice grids (the caller's, kept alive)
     CellPose start{};                         // cells, slice normalised
     Cell goal{};                              // cells
@@ -264,6 +265,9 @@ class HeadingSearch {
     CostModel costs{};                        // class costs
     const CostField* heuristic = nullptr;     // relaxation field, or null (octile)
     const SliceBits* turn_room = nullptr;     // grown-body bits, or null
+  };
+  struct Run {
+    Problem in{};                             // what was asked
     int m_count = 0;                          // move slots
     bool use_ring = false;                    // open list: ring (else heap)
     bool active = false;                      // begun, not yet ended

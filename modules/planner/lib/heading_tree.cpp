@@ -13,9 +13,9 @@ void HeadingSearch::place_of(std::uint32_t s, int& x, int& y, int& slot) const {
 }
 
 void HeadingSearch::walk_back(std::uint32_t s, std::vector<CellPose>& out) const {
-  const int k_count = static_cast<int>(run_.slices.size());
+  const int k_count = static_cast<int>(run_.in.slices.size());
   const int m_count = run_.m_count;
-  const int s0 = run_.start.slice;
+  const int s0 = run_.in.start.slice;
   for (;;) {
     int x, y, slot;
     place_of(s, x, y, slot);
@@ -64,7 +64,7 @@ double HeadingSearch::tree_bound(int x, int y, int slot, std::uint32_t cell, std
 }
 
 bool HeadingSearch::settle_step(std::size_t max_states, PlanResult& out) {
-  const PassGrid& g0 = *run_.slices[0];
+  const PassGrid& g0 = *run_.in.slices[0];
   const auto stride = static_cast<std::uint32_t>(g0.stride);
   const std::size_t states = std::size_t{1} << page_shift_;
   const double below = settle_ + settle_slack(settle_);
@@ -106,9 +106,9 @@ bool HeadingSearch::settle_step(std::size_t max_states, PlanResult& out) {
 }
 
 double HeadingSearch::toward_robot(int x, int y, std::uint32_t cell) const {
-  const double d = octile(x - (run_.goal.x + 1), y - (run_.goal.y + 1));
-  if (run_.heuristic == nullptr) return d;
-  const double to_goal = run_.heuristic->cost_at(cell);
+  const double d = octile(x - (run_.in.goal.x + 1), y - (run_.in.goal.y + 1));
+  if (run_.in.heuristic == nullptr) return d;
+  const double to_goal = run_.in.heuristic->cost_at(cell);
   if (to_goal == CostField::kInfinity) return CostField::kInfinity;  // on no path to the goal
   return std::max(d, robot_h_ - to_goal);
 }
@@ -121,10 +121,10 @@ void HeadingSearch::new_epoch() {
 }
 
 HeadingSearch::TreeEdges HeadingSearch::tree_edges() const {
-  const PassGrid& g0 = *run_.slices[0];
-  const LeanGraph lg = graph(run_.slices, goal_cell_, 0, goal_cell_);
-  return TreeEdges{static_cast<int>(run_.slices.size()), run_.m_count, static_cast<std::uint32_t>(g0.stride),
-                   MoveTable(g0.stride), run_.costs.table(), std::max(run_.options.rotation_step_cost, 0.0),
+  const PassGrid& g0 = *run_.in.slices[0];
+  const LeanGraph lg = graph(run_.in.slices, goal_cell_, 0, goal_cell_);
+  return TreeEdges{static_cast<int>(run_.in.slices.size()), run_.m_count, static_cast<std::uint32_t>(g0.stride),
+                   MoveTable(g0.stride), run_.in.costs.table(), std::max(run_.in.options.rotation_step_cost, 0.0),
                    lg, lg.turn_bits != nullptr};
 }
 
