@@ -3,8 +3,8 @@
 #pragma once
 
 #include <string>
-#include <utility>
-#include <variant>
+
+#include "kernel/expected.hpp"
 
 namespace robuter::sim {
 
@@ -21,23 +21,9 @@ struct Error {
   }
 };
 
-// Either a value or an Error; C++20 has no std::expected yet.
+// Either a value or an Error (kernel/expected.hpp).
 template <class T>
-class Result {
- public:
-  Result(T value) : v_(std::move(value)) {}          // NOLINT: implicit on purpose
-  Result(Error error) : v_(std::move(error)) {}      // NOLINT: implicit on purpose
-
-  bool ok() const { return v_.index() == 0; }
-  explicit operator bool() const { return ok(); }
-  T& value() & { return std::get<0>(v_); }
-  const T& value() const& { return std::get<0>(v_); }
-  T&& value() && { return std::get<0>(std::move(v_)); }
-  const Error& error() const { return std::get<1>(v_); }
-
- private:
-  std::variant<T, Error> v_;  // the value, or why there is none
-};
+using Result = Expected<T, Error>;
 
 // The value-less case: success, or an Error.
 struct Ok {};

@@ -30,6 +30,7 @@ struct Rule {
   bool (*ok)(double);  // true when the value passes
   const char* why;     // what the value must be, for the message
 };
+// Any finite value (the reader refuses the others).
 constexpr Rule kAny{[](double) { return true; }, ""};
 // Refuses values that would make the model meaningless.
 constexpr Rule kPositive{[](double v) { return v > 0.0; }, "must be positive"};

@@ -3,8 +3,8 @@
 #pragma once
 
 #include <string>
-#include <utility>
-#include <variant>
+
+#include "kernel/expected.hpp"
 
 namespace robuter::plan {
 
@@ -22,26 +22,9 @@ struct Error {
   }
 };
 
-// Either a value or an Error (std::expected is C++23; this is the part we need).
+// Either a value or an Error (kernel/expected.hpp).
 template <class T>
-class Result {
- public:
-  Result(T value) : v_(std::move(value)) {}        // NOLINT: implicit by design
-  Result(Error error) : v_(std::move(error)) {}    // NOLINT: implicit by design
-
-  bool ok() const { return v_.index() == 0; }
-  explicit operator bool() const { return ok(); }
-  T& value() { return std::get<0>(v_); }
-  const T& value() const { return std::get<0>(v_); }
-  T& operator*() { return value(); }
-  const T& operator*() const { return value(); }
-  T* operator->() { return &value(); }
-  const T* operator->() const { return &value(); }
-  const Error& error() const { return std::get<1>(v_); }
-
- private:
-  std::variant<T, Error> v_;
-};
+using Result = Expected<T, Error>;
 
 // A Result with no value: success or an Error.
 struct Ok {};
