@@ -2,6 +2,8 @@
 // The kernel's parameters ([kernel]): tick, real-time set-up, log level: the table (compiled once, not in every includer of the configuration).
 #include "kernel/kernel_params.hpp"
 
+#include "kernel/log.hpp"
+
 namespace robuter {
 
 std::span<const param::Param<KernelConfig>> kernel_params() {
@@ -11,7 +13,7 @@ std::span<const param::Param<KernelConfig>> kernel_params() {
       P::flag("realtime", &KernelConfig::realtime, "ask for SCHED_FIFO at start-up"),
       P::integer("rt_priority", &KernelConfig::rt_priority, "", 1, 99, "SCHED_FIFO priority, 1..99"),
       P::flag("lock_memory", &KernelConfig::lock_memory, "mlockall(MCL_CURRENT | MCL_FUTURE) at start-up"),
-      P::word("log_level", &KernelConfig::log_level, "debug|info|warn|error|off", "debug, info, warn, error, off"),
+      P::word("log_level", &KernelConfig::log_level, word_list<log::Level>(), "debug, info, warn, error, off"),
   };
   return kRows;
 }

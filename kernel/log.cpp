@@ -12,7 +12,6 @@
 #include <mutex>
 #include <thread>
 
-#include "kernel/word_table.hpp"
 
 namespace robuter::log {
 
@@ -26,10 +25,6 @@ struct Record {
 };
 
 constexpr std::size_t kSlots = 256;        // ring capacity, records (power of two)
-
-// The levels' words, for the command line and the records.
-constexpr Word<Level> kLevels[] = {
-    {"debug", Level::debug}, {"info", Level::info}, {"warn", Level::warn}, {"error", Level::error}, {"off", Level::off}};
 
 std::array<Record, kSlots> g_ring;                 // the records
 std::atomic<std::uint64_t> g_head{0};              // next slot the producer writes
@@ -73,8 +68,10 @@ void drain() {
   const auto head = g_head.load(std::memory_order_acquire);
   for (; tail != head; ++tail) {
     const Record& r = g_ring[tail % kSlots];
-    std::fprintf(g_sink, "%s[%8llu] %-5s %.*s\n", g_journal ? journal_prefix(r.level) : "",
-                 static_cast<unsigned long long>(r.tick), level_name(r.level), static_cast<int>(r.len), r.text);
+    const std::string_view level_word = word(r.level);
+    std::fprintf(g_sink, "%s[%8llu] %-5.*s %.*s\n", g_journal ? journal_prefix(r.level) : "",
+                 static_cast<unsigned long long>(r.tick), static_cast<int>(level_word.size()), level_word.data(),
+                 static_cast<int>(r.len), r.text);
   }
   g_tail.store(tail, std::memory_order_release);
   std::fflush(g_sink);
@@ -84,8 +81,6 @@ void drain() {
 
 }  // namespace
 
-bool parse_level(std::string_view text, Level& out) { return read_word(kLevels, text, out); }
-const char* level_name(Level l) { return word_of(kLevels, l); }
 
 void set_level(Level l) { g_level.store(l, std::memory_order_relaxed); }
 Level level() { return g_level.load(std::memory_order_relaxed); }

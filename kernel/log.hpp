@@ -9,13 +9,15 @@
 #include <cstdio>
 #include <string_view>
 
+#include "kernel/vocabulary.hpp"
+
 namespace robuter::log {
 
-enum class Level : std::uint8_t { debug = 0, info = 1, warn = 2, error = 3, off = 4 };
-
-// Parses "debug", "info", "warn", "error", "off"; false for anything else.
-bool parse_level(std::string_view text, Level& out);
-const char* level_name(Level l);
+// The levels, least severe first, with their words (the command line, [kernel] log_level, records):
+// `from_word<Level>("warn")`, `word(Level::warn)`.
+#define ROBUTER_LOG_LEVELS(X) X(debug, "debug") X(info, "info") X(warn, "warn") X(error, "error") X(off, "off")
+enum class Level : std::uint8_t { ROBUTER_LOG_LEVELS(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(Level, ROBUTER_LOG_LEVELS, "off");
 
 // Minimum level that is recorded (others cost one comparison).
 void set_level(Level l);

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "kernel/vocabulary.hpp"
+
 namespace robuter::hal {
 
 // Where the drive's odometry says the robot is.
@@ -13,14 +15,16 @@ struct Odometry {
   double theta_rad = 0.0;  // rad, in (-π, π]
 };
 
-// Health of the drive as the backend sees it (a real drive reports faults and heartbeats).
-enum class DriveHealth : std::uint8_t {
-  ok,          // answering, no fault
-  fault,       // the drive reports a fault
-  silent,      // the drive stopped answering (heartbeat lost)
-  bus_passive, // the bus to the drive is error-passive (frames may be lost)
-  bus_off,     // the controller is bus-off: nothing reaches the drive
-};
+// Health of the drive as the backend sees it (a real drive reports faults and heartbeats), with
+// the words the CAN backend's transition logs write.
+#define ROBUTER_DRIVE_HEALTHS(X)                                                                       \
+  X(ok, "ok")                         /* answering, no fault */                                        \
+  X(fault, "fault")                   /* the drive reports a fault */                                  \
+  X(silent, "heartbeat lost")         /* the drive stopped answering (heartbeat lost) */               \
+  X(bus_passive, "bus error-passive") /* the bus to the drive is error-passive (frames may be lost) */ \
+  X(bus_off, "bus-off")               /* the controller is bus-off: nothing reaches the drive */
+enum class DriveHealth : std::uint8_t { ROBUTER_DRIVE_HEALTHS(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(DriveHealth, ROBUTER_DRIVE_HEALTHS, "fault");
 
 // Only modules/executor holds the Drive: it is the one writer of motor commands.
 class Drive {

@@ -5,8 +5,6 @@
 #include <array>
 #include <utility>
 
-#include "kernel/word_table.hpp"
-
 namespace robuter::hal {
 
 namespace {
@@ -14,9 +12,6 @@ constexpr std::array<std::pair<unsigned, speed_t>, 11> kRates{{
     {1200, B1200}, {2400, B2400}, {4800, B4800}, {9600, B9600}, {19200, B19200}, {38400, B38400},
     {57600, B57600}, {115200, B115200}, {230400, B230400}, {460800, B460800}, {921600, B921600},
 }};
-constexpr Word<Parity> kParities[] = {{"none", Parity::none}, {"even", Parity::even}, {"odd", Parity::odd}};
-constexpr Word<FlowControl> kFlows[] = {
-    {"none", FlowControl::none}, {"hardware", FlowControl::hardware}, {"software", FlowControl::software}};
 
 // The termios rate of `baud`; null when it has none.
 const speed_t* rate_of(unsigned baud) {
@@ -28,10 +23,6 @@ const speed_t* rate_of(unsigned baud) {
 
 bool valid_baud(unsigned baud) { return rate_of(baud) != nullptr; }
 
-bool parse_parity(std::string_view text, Parity& out) { return read_word(kParities, text, out); }
-bool parse_flow_control(std::string_view text, FlowControl& out) { return read_word(kFlows, text, out); }
-const char* parity_name(Parity p) { return word_of(kParities, p); }
-const char* flow_control_name(FlowControl f) { return word_of(kFlows, f); }
 
 // Why VMIN 1: with VMIN 0 and VTIME 0 Linux returns 0 from an idle non-blocking read, which
 // would look like the device hanging up.

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <string_view>
 
+#include "hal/api/serial_port_params.hpp"
+
 namespace robuter::hal {
 
-enum class Parity : std::uint8_t { none, even, odd };
-enum class FlowControl : std::uint8_t { none, hardware, software };
 
 // How one serial port is driven; always 8 data bits, raw (no line editing, no translation).
 struct SerialSettings {
@@ -23,12 +23,6 @@ struct SerialSettings {
 
 // True when `baud` is a rate this HAL can set (standard termios rates 1200…921600).
 bool valid_baud(unsigned baud);
-// "none"/"even"/"odd" → Parity; false for anything else.
-bool parse_parity(std::string_view text, Parity& out);
-// "none"/"hardware"/"software" → FlowControl; false for anything else.
-bool parse_flow_control(std::string_view text, FlowControl& out);
-const char* parity_name(Parity p);
-const char* flow_control_name(FlowControl f);
 // Writes `s` into `t`: raw 8-bit, receiver on, modem lines ignored (CLOCAL), VMIN 1/VTIME 0 so a
 // non-blocking read says EAGAIN when idle and 0 only on hang-up. False if the rate is unknown.
 bool encode_termios(const SerialSettings& s, termios& t);

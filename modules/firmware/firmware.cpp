@@ -82,8 +82,8 @@ void stop_sim_drive(void* drive) { static_cast<hal::Drive*>(drive)->set_servo(fa
 hal::SerialSettings line_settings(const hal::SerialPortConfig& c) {
   hal::SerialSettings s;
   s.baud = c.baud;
-  hal::parse_parity(c.parity, s.parity);
-  hal::parse_flow_control(c.flow_control, s.flow);
+  s.parity = from_word<hal::Parity>(c.parity).value_or(s.parity);
+  s.flow = from_word<hal::FlowControl>(c.flow_control).value_or(s.flow);
   s.stop_bits = c.stop_bits;
   s.retry_ms = c.retry_ms;
   return s;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -119,13 +120,13 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
   }
-  log::Level level{};
   const std::string& level_text = log_level.empty() ? cfg.kernel.log_level : log_level;
-  if (!log::parse_level(level_text, level)) {
+  const std::optional<log::Level> level = from_word<log::Level>(level_text);
+  if (!level) {
     fmt::print(stderr, "robuterd: --log-level '{}': expected debug, info, warn, error or off\n", level_text);
     return kExitUsage;
   }
-  log::set_level(level);
+  log::set_level(*level);
   if (check_only) opt.notify_socket.clear();  // ExecStartPre= is not the service's main process
   if (check_only) opt.sim = true;  // validate the table as the simulator would compose it
   if (check_only) opt.open_devices = false;  // a robot's configuration checks on any machine

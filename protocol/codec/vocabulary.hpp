@@ -2,34 +2,24 @@
 // The firmware's one vocabulary: the enums that cross topics and the link, each with its words from one list.
 #pragma once
 
-#include <array>
-#include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string_view>
 
+#include "kernel/vocabulary.hpp"
 #include "protocol/codec/limits.hpp"
 
-// Every list below is an X-macro, X(enumerator, "word") once per enumerator in order: the one list
-// makes both the enum and its table of words, so they hold one entry per enumerator, in order, by
-// construction. `word(e)` is what replies and log lines print; `from_word<E>(w)` reads it back.
-#define ROBUTER_VOCAB_ENUMERATOR(name, text) name,
-#define ROBUTER_VOCAB_WORD(name, text) std::string_view{text},
-
-// The table of `Enum` from its `LIST`; `fallback_word` stands for a value outside the list (only a
-// cast can make one), and the words are checked at compile time.
-#define ROBUTER_VOCABULARY(Enum, LIST, fallback_word)                                                  \
-  template <>                                                                                          \
-  struct Vocabulary<Enum> {                                                                            \
-    static constexpr std::array words{LIST(ROBUTER_VOCAB_WORD)};                                       \
-    static constexpr std::string_view fallback = fallback_word;                                        \
-  };                                                                                                   \
-  static_assert(vocabulary_detail::well_formed(Vocabulary<Enum>::words),                               \
-                #Enum ": every word non-empty, one printable token a reply carries whole, and unique"); \
-  static_assert(vocabulary_detail::contains(Vocabulary<Enum>::words, Vocabulary<Enum>::fallback),      \
-                #Enum ": the fallback is one of the words")
+// The enums that cross the link are worded with kernel/vocabulary.hpp's X-macro lists, and each
+// word is also one token of a reply: no blank, no '*', at most kMaxTokenLength bytes.
+#define ROBUTER_REPLY_VOCABULARY(Enum, LIST, fallback_word) \
+  ROBUTER_VOCABULARY(Enum, LIST, fallback_word);           \
+  static_assert(::robuter::words_are_tokens<Enum>(kMaxTokenLength), #Enum ": every word is one token of a reply")
 
 namespace robuter::protocol {
+
+// The generic part, as the protocol's code names it (`protocol::word`, …).
+using ::robuter::from_word;
+using ::robuter::kEnumerators;
+using ::robuter::word;
 
 // ---- detections: the bits of XE's mask, of [emergency] mask and of the gate (the seed's emerg.on) ----
 inline constexpr std::uint8_t kDetectBumper = 1;      // collision sensed by the contact bumpers
@@ -40,32 +30,6 @@ inline constexpr std::uint8_t kDetectAll = kDetectBumper | kDetectUltrasonic | k
 // ---- words that stand for no enumerator ----
 inline constexpr std::string_view kAbsentWord = "absent";  // XD: the mode's module is not running
 inline constexpr std::string_view kNoPhaseWord = "none";   // XD: no demonstration phase (off or absent)
-
-// The words of enum E: specialised once per enum below, from its list.
-template <class E>
-struct Vocabulary;
-
-namespace vocabulary_detail {
-// True when every word is non-empty, printable without blanks, fits a reply's word, and is unique.
-template <std::size_t N>
-constexpr bool well_formed(const std::array<std::string_view, N>& words) {
-  for (std::size_t i = 0; i < N; ++i) {
-    if (words[i].empty() || words[i].size() > kMaxTokenLength) return false;
-    for (const char c : words[i])
-      if (c <= ' ' || c >= 0x7F || c == '*') return false;
-    for (std::size_t j = 0; j < i; ++j)
-      if (words[i] == words[j]) return false;
-  }
-  return true;
-}
-// True when `w` is one of `words`.
-template <std::size_t N>
-constexpr bool contains(const std::array<std::string_view, N>& words, std::string_view w) {
-  for (const std::string_view x : words)
-    if (x == w) return true;
-  return false;
-}
-}  // namespace vocabulary_detail
 
 // What started the emergency in force (XE, the emergency module's log); the last cause while
 // latched. The last three come from the drives' bus (docs/CAN.md).
@@ -82,7 +46,7 @@ constexpr bool contains(const std::array<std::string_view, N>& words, std::strin
   X(bus_passive, "bus-error-passive") /* the drives' CAN bus went error-passive */                     \
   X(bus_off, "bus-off")               /* the CAN controller went bus-off */
 enum class EmergencyCause : std::uint8_t { ROBUTER_EMERGENCY_CAUSES(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(EmergencyCause, ROBUTER_EMERGENCY_CAUSES, "other");
+ROBUTER_REPLY_VOCABULARY(EmergencyCause, ROBUTER_EMERGENCY_CAUSES, "other");
 
 // What the grid planner is doing (XP, the planner's log).
 #define ROBUTER_PLANNER_STATES(X)                                                                      \
@@ -99,7 +63,7 @@ ROBUTER_VOCABULARY(EmergencyCause, ROBUTER_EMERGENCY_CAUSES, "other");
   X(cancelled, "cancelled")     /* XH */                                                               \
   X(operator_ended, "operator") /* an operator's command (AM, AS, AW, the stop byte, …) took the robot */
 enum class PlannerState : std::uint8_t { ROBUTER_PLANNER_STATES(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(PlannerState, ROBUTER_PLANNER_STATES, "idle");
+ROBUTER_REPLY_VOCABULARY(PlannerState, ROBUTER_PLANNER_STATES, "idle");
 
 // What the localisation is doing (XW; docs/LOCALISATION.md, "The module").
 #define ROBUTER_LOCALISE_STATES(X)                                                                     \
@@ -108,7 +72,7 @@ ROBUTER_VOCABULARY(PlannerState, ROBUTER_PLANNER_STATES, "idle");
   X(uncertain, "uncertain") /* the particles spread or split: the map frame keeps its last correction */ \
   X(tracking, "tracking")   /* one compact cluster: the estimate corrects the map frame */
 enum class LocaliseState : std::uint8_t { ROBUTER_LOCALISE_STATES(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(LocaliseState, ROBUTER_LOCALISE_STATES, "off");
+ROBUTER_REPLY_VOCABULARY(LocaliseState, ROBUTER_LOCALISE_STATES, "off");
 
 // What the pan-tilt, passage-finder, door-crossing or demonstration module is doing (XD).
 #define ROBUTER_MODE_STATES(X)                                                                         \
@@ -126,7 +90,7 @@ ROBUTER_VOCABULARY(LocaliseState, ROBUTER_LOCALISE_STATES, "off");
   X(running, "running")     /* demonstration: driving the course */                                    \
   X(finished, "finished")   /* demonstration: every lap driven, stopped (done) */
 enum class ModeState : std::uint8_t { ROBUTER_MODE_STATES(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(ModeState, ROBUTER_MODE_STATES, "off");
+ROBUTER_REPLY_VOCABULARY(ModeState, ROBUTER_MODE_STATES, "off");
 
 // Why a mode failed or ended (XD).
 #define ROBUTER_MODE_REASONS(X)                                                                        \
@@ -149,7 +113,7 @@ ROBUTER_VOCABULARY(ModeState, ROBUTER_MODE_STATES, "off");
   X(no_landmark, "no-landmark")       /* demonstration: the calibration boxes were not found in time */ \
   X(protective, "protective")         /* go-to: a protective stop forgot the operator's motion */
 enum class ModeReason : std::uint8_t { ROBUTER_MODE_REASONS(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(ModeReason, ROBUTER_MODE_REASONS, "none");
+ROBUTER_REPLY_VOCABULARY(ModeReason, ROBUTER_MODE_REASONS, "none");
 
 // Where the demonstration course is (XD; seed dem.c, modules/demo/course.hpp).
 #define ROBUTER_DEMO_PHASES(X)                                                                         \
@@ -163,29 +127,6 @@ ROBUTER_VOCABULARY(ModeReason, ROBUTER_MODE_REASONS, "none");
   X(done, "done")       /* every lap driven, or stopped */                                             \
   X(failed, "failed")   /* the calibration boxes were not found in time */
 enum class DemoPhase : std::uint8_t { ROBUTER_DEMO_PHASES(ROBUTER_VOCAB_ENUMERATOR) };
-ROBUTER_VOCABULARY(DemoPhase, ROBUTER_DEMO_PHASES, "done");
-
-// An enum of this vocabulary.
-template <class E>
-concept Worded = requires { Vocabulary<E>::words; };
-
-// How many enumerators E has (its words, one each).
-template <Worded E>
-inline constexpr std::size_t kEnumerators = Vocabulary<E>::words.size();
-
-// The word of `e`: the same in replies and in log lines.
-template <Worded E>
-constexpr std::string_view word(E e) noexcept {
-  const auto i = static_cast<std::size_t>(e);
-  return i < kEnumerators<E> ? Vocabulary<E>::words[i] : Vocabulary<E>::fallback;
-}
-
-// The enumerator of E whose word is `w`; none when no word matches.
-template <Worded E>
-constexpr std::optional<E> from_word(std::string_view w) noexcept {
-  for (std::size_t i = 0; i < kEnumerators<E>; ++i)
-    if (Vocabulary<E>::words[i] == w) return static_cast<E>(i);
-  return std::nullopt;
-}
+ROBUTER_REPLY_VOCABULARY(DemoPhase, ROBUTER_DEMO_PHASES, "done");
 
 }  // namespace robuter::protocol

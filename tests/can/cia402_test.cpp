@@ -151,7 +151,7 @@ TEST(Cia402, StatuswordTable) {
   for (State s : {State::not_ready_to_switch_on, State::switch_on_disabled, State::ready_to_switch_on,
                   State::switched_on, State::operation_enabled, State::quick_stop_active,
                   State::fault_reaction_active, State::fault})
-    EXPECT_EQ(decode_statusword(encode_statusword(s)), s) << state_name(s);
+    EXPECT_EQ(decode_statusword(encode_statusword(s)), s) << word(s);
   EXPECT_EQ(encode_statusword(State::operation_enabled), 0x0237);
 }
 
@@ -184,7 +184,7 @@ TEST(Cia402, HostControlwordSequence) {
   const std::uint16_t expected[] = {0x06, 0x07, 0x0F, 0x0F};
   for (std::uint16_t want : expected) {
     const std::uint16_t cw = next_controlword(s, true, false);
-    EXPECT_EQ(cw, want) << state_name(s);
+    EXPECT_EQ(cw, want) << word(s);
     s = apply_controlword(s, cw, prev);
     prev = cw;
   }

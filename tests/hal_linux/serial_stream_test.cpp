@@ -82,18 +82,12 @@ SerialSettings fast_retry() {
 }
 
 TEST(SerialSettings, WordsParse) {
-  Parity p{};
-  EXPECT_TRUE(hal::parse_parity("even", p));
-  EXPECT_EQ(p, Parity::even);
-  EXPECT_TRUE(hal::parse_parity("odd", p));
-  EXPECT_EQ(p, Parity::odd);
-  EXPECT_FALSE(hal::parse_parity("mark", p));
-  FlowControl f{};
-  EXPECT_TRUE(hal::parse_flow_control("hardware", f));
-  EXPECT_EQ(f, FlowControl::hardware);
-  EXPECT_TRUE(hal::parse_flow_control("software", f));
-  EXPECT_EQ(f, FlowControl::software);
-  EXPECT_FALSE(hal::parse_flow_control("rts", f));
+  EXPECT_EQ(from_word<Parity>("even"), Parity::even);
+  EXPECT_EQ(from_word<Parity>("odd"), Parity::odd);
+  EXPECT_EQ(from_word<Parity>("mark"), std::nullopt);
+  EXPECT_EQ(from_word<FlowControl>("hardware"), FlowControl::hardware);
+  EXPECT_EQ(from_word<FlowControl>("software"), FlowControl::software);
+  EXPECT_EQ(from_word<FlowControl>("rts"), std::nullopt);
   EXPECT_TRUE(hal::valid_baud(9600));
   EXPECT_TRUE(hal::valid_baud(921600));
   EXPECT_FALSE(hal::valid_baud(9601));

@@ -38,10 +38,9 @@ TEST(Log, LongMessagesAreCutNotOverflowed) {
 }
 
 TEST(Log, LevelNamesParse) {
-  log::Level l{};
-  EXPECT_TRUE(log::parse_level("warn", l));
-  EXPECT_EQ(l, log::Level::warn);
-  EXPECT_FALSE(log::parse_level("loud", l));
+  EXPECT_EQ(from_word<log::Level>("warn"), log::Level::warn);
+  EXPECT_EQ(from_word<log::Level>("loud"), std::nullopt);
+  EXPECT_EQ(word(log::Level::error), "error");
 }
 
 }  // namespace

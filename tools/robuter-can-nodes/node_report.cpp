@@ -6,7 +6,6 @@
 
 namespace robuter::tools {
 
-using hal::can::cia402::state_name;
 
 void NodeReport::update(std::int64_t now_us, std::FILE* out) {
   const double t_ms = static_cast<double>(now_us) / 1000.0;
@@ -25,8 +24,9 @@ void NodeReport::update(std::int64_t now_us, std::FILE* out) {
   }
   if (drive_.state() != state_) {
     state_ = drive_.state();
-    std::fprintf(out, "t=%.1f node %u: state %s (%.1f ms since node %u's last heartbeat)\n", t_ms, node_,
-                 state_name(state_), since_ms, drive_.consumer_node());
+    const std::string_view state_word = word(state_);
+    std::fprintf(out, "t=%.1f node %u: state %.*s (%.1f ms since node %u's last heartbeat)\n", t_ms, node_,
+                 static_cast<int>(state_word.size()), state_word.data(), since_ms, drive_.consumer_node());
   }
   const bool moving = std::fabs(drive_.velocity()) >= 0.5;
   if (moving != moving_) {

@@ -6,21 +6,10 @@
 #include "kernel/kernel.hpp"
 #include "kernel/log.hpp"
 #include "kernel/signals.hpp"
-#include "kernel/word_table.hpp"
 
 namespace robuter::hal::can {
 
 namespace {
-// The drives' health and each drive's fault, as the transition logs write them.
-constexpr Word<DriveHealth> kHealths[] = {{"ok", DriveHealth::ok},
-                                          {"fault", DriveHealth::fault},
-                                          {"heartbeat lost", DriveHealth::silent},
-                                          {"bus error-passive", DriveHealth::bus_passive},
-                                          {"bus-off", DriveHealth::bus_off}};
-constexpr Word<DriveFault> kFaults[] = {{"ok", DriveFault::none},
-                                        {"heartbeat lost", DriveFault::heartbeat_lost},
-                                        {"fault", DriveFault::fault},
-                                        {"not operational", DriveFault::not_operational}};
 std::int64_t micros(Kernel& k) { return k.now() / 1000; }
 }  // namespace
 
@@ -92,8 +81,8 @@ void CanBackend::service(std::int64_t now, bool loop_on_time) {
 void CanBackend::log_transitions() {
   const BusState bus = bus_.bus_state();
   if (bus != last_bus_) {
-    if (bus == BusState::passive || bus == BusState::off) log::warn("can: {}: {}", bus_.name(), bus_state_name(bus));
-    else log::info("can: {}: {}", bus_.name(), bus_state_name(bus));
+    if (bus == BusState::passive || bus == BusState::off) log::warn("can: {}: {}", bus_.name(), word(bus));
+    else log::info("can: {}: {}", bus_.name(), word(bus));
     last_bus_ = bus;
   }
   if (!drive_) return;
@@ -102,9 +91,9 @@ void CanBackend::log_transitions() {
     if (h == DriveHealth::ok) {
       log::info("can: drives ready (nodes {} and {})", drive_->left().settings().node, drive_->right().settings().node);
     } else {
-      log::warn("can: drives {}: left node {} {} (EMCY {:04X}), right node {} {} (EMCY {:04X})", word_of(kHealths, h),
-                drive_->left().settings().node, word_of(kFaults, drive_->left_fault()), drive_->left().status().emcy_code,
-                drive_->right().settings().node, word_of(kFaults, drive_->right_fault()),
+      log::warn("can: drives {}: left node {} {} (EMCY {:04X}), right node {} {} (EMCY {:04X})", word(h),
+                drive_->left().settings().node, word(drive_->left_fault()), drive_->left().status().emcy_code,
+                drive_->right().settings().node, word(drive_->right_fault()),
                 drive_->right().status().emcy_code);
     }
     last_health_ = h;

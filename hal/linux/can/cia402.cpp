@@ -3,7 +3,6 @@
 #include "hal/linux/can/cia402.hpp"
 
 #include "hal/linux/can/frame_bytes.hpp"
-#include "kernel/word_table.hpp"
 
 namespace robuter::hal::can::cia402 {
 
@@ -18,20 +17,6 @@ bool is(const can_frame& f, canid_t id, std::uint8_t len) {
   return (f.can_id & (CAN_EFF_FLAG | CAN_RTR_FLAG | CAN_ERR_FLAG)) == 0 && f.can_id == id && f.len >= len;
 }
 }  // namespace
-
-namespace {
-// The drive states' words, as CiA 402 names them.
-constexpr Word<State> kStates[] = {{"not-ready-to-switch-on", State::not_ready_to_switch_on},
-                                   {"switch-on-disabled", State::switch_on_disabled},
-                                   {"ready-to-switch-on", State::ready_to_switch_on},
-                                   {"switched-on", State::switched_on},
-                                   {"operation-enabled", State::operation_enabled},
-                                   {"quick-stop-active", State::quick_stop_active},
-                                   {"fault-reaction-active", State::fault_reaction_active},
-                                   {"fault", State::fault}};
-}  // namespace
-
-const char* state_name(State s) { return word_of(kStates, s); }
 
 // The CiA 402 table: xxxx xxxx x0xx 0000 not ready, x1xx 0000 switch on disabled, x01x 0001
 // ready, x01x 0011 switched on, x01x 0111 enabled, x00x 0111 quick stop, x0xx 1111 fault

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "kernel/vocabulary.hpp"
+
 namespace robuter::hal::can::cia402 {
 
 // COB-IDs of the CiA 301 predefined connection set (function code; add the node id, 1..127).
@@ -70,20 +72,18 @@ inline constexpr std::uint16_t kSwWarning = 1u << 7;
 inline constexpr std::uint16_t kSwRemote = 1u << 9;
 inline constexpr std::uint16_t kSwTargetReached = 1u << 10;
 
-// The power drive system's states (CiA 402 finite state automaton).
-enum class State : std::uint8_t {
-  not_ready_to_switch_on,
-  switch_on_disabled,
-  ready_to_switch_on,
-  switched_on,
-  operation_enabled,
-  quick_stop_active,
-  fault_reaction_active,
-  fault,
-};
-
-// Short stable words for logs ("switch-on-disabled", "fault", …).
-const char* state_name(State s);
+// The power drive system's states (CiA 402 finite state automaton), with their words for logs.
+#define ROBUTER_CIA402_STATES(X)                                                                       \
+  X(not_ready_to_switch_on, "not-ready-to-switch-on")                                                  \
+  X(switch_on_disabled, "switch-on-disabled")                                                          \
+  X(ready_to_switch_on, "ready-to-switch-on")                                                          \
+  X(switched_on, "switched-on")                                                                        \
+  X(operation_enabled, "operation-enabled")                                                            \
+  X(quick_stop_active, "quick-stop-active")                                                            \
+  X(fault_reaction_active, "fault-reaction-active")                                                    \
+  X(fault, "fault")
+enum class State : std::uint8_t { ROBUTER_CIA402_STATES(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(State, ROBUTER_CIA402_STATES, "fault");
 // The state a statusword reports (bits 0..3, 5, 6 per the CiA 402 table).
 State decode_statusword(std::uint16_t sw);
 // The statusword a drive in `s` reports: the state bits, plus voltage enabled from "ready to

@@ -43,13 +43,14 @@ enum class LinkPhase : std::uint8_t {
   running,              // PDOs flow: RPDO1 every poll, TPDO1/2 on SYNC
 };
 
-// What is wrong with the drive, worst first (none = usable).
-enum class DriveFault : std::uint8_t {
-  none,
-  heartbeat_lost,   // no heartbeat (or SDO answer) within the time-out
-  fault,            // statusword fault / fault reaction, an EMCY error, an SDO abort
-  not_operational,  // heard, but bring-up not finished (or the node left "operational")
-};
+// What is wrong with the drive (none = usable), with the words the CAN backend's logs write.
+#define ROBUTER_DRIVE_FAULTS(X)                                                                        \
+  X(none, "ok")                                                                                        \
+  X(heartbeat_lost, "heartbeat lost")   /* no heartbeat (or SDO answer) within the time-out */         \
+  X(fault, "fault")                     /* statusword fault / fault reaction, an EMCY error, an SDO abort */ \
+  X(not_operational, "not operational") /* heard, but bring-up not finished (or the node left "operational") */
+enum class DriveFault : std::uint8_t { ROBUTER_DRIVE_FAULTS(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(DriveFault, ROBUTER_DRIVE_FAULTS, "fault");
 
 // The host's view of one drive.
 struct DriveLinkStatus {

@@ -6,18 +6,19 @@
 
 #include <cstdint>
 
+#include "kernel/vocabulary.hpp"
+
 namespace robuter::hal::can {
 
-// The controller's fault confinement state (ISO 11898-1), as the transport last learnt it.
-enum class BusState : std::uint8_t {
-  active,   // error-active: normal
-  warning,  // an error counter reached 96: still working, reported only
-  passive,  // error-passive (a counter reached 128): frames may be delayed or lost
-  off,      // bus-off (transmit counter reached 256): the controller no longer takes part
-};
-
-// Short stable word for logs and docs ("error-active", "bus-off", …).
-const char* bus_state_name(BusState s);
+// The controller's fault confinement state (ISO 11898-1), as the transport last learnt it, with
+// SocketCAN's words for logs and docs.
+#define ROBUTER_BUS_STATES(X)                                                                          \
+  X(active, "error-active")   /* normal */                                                             \
+  X(warning, "error-warning") /* an error counter reached 96: still working, reported only */         \
+  X(passive, "error-passive") /* a counter reached 128: frames may be delayed or lost */               \
+  X(off, "bus-off")           /* the transmit counter reached 256: the controller no longer takes part */
+enum class BusState : std::uint8_t { ROBUTER_BUS_STATES(ROBUTER_VOCAB_ENUMERATOR) };
+ROBUTER_VOCABULARY(BusState, ROBUTER_BUS_STATES, "bus-off");
 
 // Figures of a transport since it opened.
 struct TransportCounters {

@@ -2,19 +2,7 @@
 // The in-process bus: fan-out to fixed receive rings, injectable controller state.
 #include "hal/linux/can/loopback_bus.hpp"
 
-#include "kernel/word_table.hpp"
-
 namespace robuter::hal::can {
-
-namespace {
-// The controller states' words, as SocketCAN names them.
-constexpr Word<BusState> kBusStates[] = {{"error-active", BusState::active},
-                                         {"error-warning", BusState::warning},
-                                         {"error-passive", BusState::passive},
-                                         {"bus-off", BusState::off}};
-}  // namespace
-
-const char* bus_state_name(BusState s) { return word_of(kBusStates, s); }
 
 // A full queue drops the newest frame, as a socket's receive buffer does.
 void LoopbackEndpoint::deliver(const can_frame& f) {
