@@ -50,7 +50,7 @@ void DoorsModule::report(std::uint64_t tick, const doors::CrossingOutput& o) {
   s.duration_ticks = o.duration_ticks;
   status_out_.publish(s);
   if (o.state == ModeState::crossed) log::info("doors: door crossed in {} ticks", o.duration_ticks);
-  else if (o.state == ModeState::failed) log::warn("doors: stopped after {} ticks (reason {})", o.duration_ticks, static_cast<int>(o.reason));
+  else if (o.state == ModeState::failed) log::warn("doors: stopped after {} ticks ({})", o.duration_ticks, word(o.reason));
   else if (o.state == ModeState::waiting) log::info("doors: blocked on both sides, waiting for fresh readings");
 }
 

@@ -21,14 +21,15 @@ void GateModule::begin(std::uint64_t tick) {
 }
 
 void GateModule::report(std::uint64_t tick, const gate::GateOutput& o) {
-  const ModeStatus& cur = status_out_.current();
+  const ModeStatus& cur = status_out_.current();  // the topic's value: publish() below replaces it
   if (cur.state == o.state && cur.reason == o.reason && cur.width_mm == o.width_mm) return;
-  const bool new_run = o.state == ModeState::searching && cur.state != ModeState::searching && cur.state != ModeState::moving;
+  const ModeState was = cur.state;
+  const bool new_run = o.state == ModeState::searching && was != ModeState::searching && was != ModeState::moving;
   ModeStatus s = moved_on(cur, o.state, o.reason, new_run, tick);
   s.width_mm = o.width_mm;
   s.duration_ticks = static_cast<std::uint32_t>(tick - started_);
   status_out_.publish(s);
-  if (cur.state == o.state) return;
+  if (was == o.state) return;
   const gate::GateLogic& g = logic_;
   if (o.state == ModeState::aligned)
     log::info("gate: aligned after {} manoeuvres: lateral {:.0f} mm, heading {:.1f}°, front {:.0f} mm from the passage, width {} mm",
@@ -37,7 +38,7 @@ void GateModule::report(std::uint64_t tick, const gate::GateOutput& o) {
     log::info("gate: manoeuvre {}: lateral {:.0f} mm, heading {:.1f}°, front {:.0f} mm, width {} mm", g.manoeuvres(),
               g.lateral_error_mm(), g.heading_error_deg(), g.front_distance_mm(), o.width_mm);
   else if (o.state == ModeState::failed)
-    log::warn("gate: failed ({})", static_cast<int>(o.reason));
+    log::warn("gate: failed ({})", word(o.reason));
 }
 
 }  // namespace robuter

@@ -12,6 +12,7 @@
 
 #include "hal/sim/render.hpp"
 #include "tests/support/layout_check.hpp"
+#include "tests/support/log_capture.hpp"
 #include "tests/support/sample.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tools/robuter-doors-run/crossing_picture.hpp"
@@ -158,6 +159,19 @@ TEST(Crossing, TheSeedsHandOverCrossesWithoutAdWhenConfigured) {
   EXPECT_EQ(r.mask_after, 7) << r.log;
   EXPECT_FALSE(r.contact) << r.log;
   EXPECT_TRUE(r.body_through) << r.log;
+}
+
+// The finder's log tells its story: each manoeuvre and the alignment, with the errors it acted on
+// (the operator reads why it stopped where it did). A change of state is logged once.
+TEST(Crossing, TheFinderLogsItsManoeuvresAndItsAlignment) {
+  (void)log_since_last();  // records of earlier set-up
+  CrossingResult r;
+  expect_crossed(seeded_start(kWorlds + "door90.toml", 2), &r);
+  const std::string log = log_since_last();
+  EXPECT_NE(log.find("gate: manoeuvre 1: lateral"), std::string::npos) << log;
+  const auto aligned = log.find("gate: aligned after");
+  ASSERT_NE(aligned, std::string::npos) << log;
+  EXPECT_EQ(log.find("gate: aligned after", aligned + 1), std::string::npos) << log;
 }
 
 // 70 cm is the robot's own width: the finder cannot see through it from 1.5 m, and sent in
