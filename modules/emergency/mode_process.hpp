@@ -13,14 +13,14 @@
 
 namespace robuter {
 
-// For the modes that drive on their own (gate, doors, demo): the robot comes to them as runs the
-// arbiter hands out (MotionClaim), their wheel speeds go out through ModeRequests, their state
-// through a status topic of type `Status`. The module claims its topics' writers (it is their
+// For the modes that drive on their own (gate, doors, demo, the planner): the robot comes to them
+// as runs the arbiter hands out (MotionClaim), their wheel speeds go out through ModeRequests,
+// their state through a status topic of type `Status`. The module claims its topics' writers (it is their
 // owner) and hands them here.
 template <typename Status>
 class ModeProcess : public Process {
  public:
-  // The emergency module, triggered on every request so it is judged in the same tick (set at
+  // The emergency module, triggered by a changed request so it is judged in the same tick (set at
   // composition; none in unit rigs).
   void set_emergency(Process* p) { requests_.set_emergency(p); }
 

@@ -35,7 +35,7 @@ ExecutorModule::ExecutorModule(Blackboard& bb, hal::Drive& drive, const RobotCon
       go_to_request_(bb.go_to.reader()),
       claim_(bb, MotionSource::go_to),
       posture_out_(bb.posture.writer()),
-      go_to_out_(bb.go_to_motion.writer()) {}
+      go_to_requests_(bb.go_to_motion.writer()) {}
 
 // Known state at start: servo off (wheels zero); requests from before the start are not
 // replayed.
@@ -81,24 +81,18 @@ void ExecutorModule::apply_command(bool drive_ok) {
   }
 }
 
-void ExecutorModule::request(std::uint64_t tick, std::int32_t left, std::int32_t right) {
-  go_to_out_.modify([&](MotionRequest& m) {
-    m.left = left;
-    m.right = right;
-    m.tick = tick;
-  });
-}
-
-void ExecutorModule::end_go_to(std::uint64_t tick, bool publish_stop) {
+void ExecutorModule::end_go_to(Kernel& k, bool publish_stop) {
   if (!go_to_.active()) return;
   go_to_.cancel();
-  if (publish_stop) request(tick, 0, 0);
+  if (publish_stop) go_to_requests_.send(k, false, 0, 0);
 }
 
 // The arbiter decides: a new run for the go-to (AW) starts it; the operator or an emergency
 // taking the robot ends it. Then one control step per tick whatever the number of activations.
-void ExecutorModule::serve_go_to(std::uint64_t tick, const executor::PostureUnits& now) {
+void ExecutorModule::serve_go_to(Kernel& k, const executor::PostureUnits& now) {
+  const std::uint64_t tick = k.tick();
   if (claim_.granted()) {
+    go_to_requests_.begin();
     const GoToRequest g = go_to_request_.copy();
     go_to_.start(executor::PostureUnits{g.x, g.y, g.theta});
     log::info("executor: go to {} {} {}", g.x, g.y, g.theta);
@@ -106,14 +100,14 @@ void ExecutorModule::serve_go_to(std::uint64_t tick, const executor::PostureUnit
     const ModeReason why = claim_.ended();
     if (why != ModeReason::none) {
       log::info("executor: go-to ended by {}", why == ModeReason::emergency ? "an emergency" : why == ModeReason::protective ? "a protective stop" : "the operator");
-      end_go_to(tick, false);
+      end_go_to(k, false);
     }
   }
-  if (go_to_request_.updated() && !go_to_request_.copy().active) end_go_to(tick, true);  // a cancel
+  if (go_to_request_.updated() && !go_to_request_.copy().active) end_go_to(k, true);  // a cancel
   if (!go_to_.active() || tick == last_go_to_tick_) return;
   last_go_to_tick_ = tick;
   const executor::WheelSpeeds w = go_to_.step(now);
-  request(tick, w.left, w.right);
+  go_to_requests_.send(k, true, w.left, w.right);
   if (!go_to_.active()) log::info("executor: go-to reached {} {} {}", now.x, now.y, now.theta);
 }
 
@@ -153,10 +147,10 @@ void ExecutorModule::run(Kernel& k) {
     const OdometrySet o = odometry_set_.copy();
     drive_.set_odometry(executor::to_odometry(executor::PostureUnits{o.x, o.y, o.theta}));
     odometry_seq_ = odometry_set_.generation();
-    end_go_to(tick, true);  // the target was in the old frame
+    end_go_to(k, true);  // the target was in the old frame
   }
   const executor::PostureUnits now = executor::to_posture(drive_.odometry());
-  serve_go_to(tick, now);
+  serve_go_to(k, now);
 
   Posture p;
   p.x = now.x;

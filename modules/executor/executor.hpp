@@ -7,6 +7,7 @@
 #include "hal/api/drive.hpp"
 #include "kernel/config.hpp"
 #include "kernel/process.hpp"
+#include "modules/emergency/mode_requests.hpp"
 #include "modules/emergency/motion_claim.hpp"
 #include "modules/executor/go_to.hpp"
 #include "modules/topics.hpp"
@@ -27,12 +28,10 @@ class ExecutorModule final : public Process {
   // Applies the emergency module's command: stop → zero and servo off; a new grant → speeds.
   void apply_command(bool drive_ok);
   // Decides whether a go-to runs on: new AW, cancellations, one control step per tick.
-  void serve_go_to(std::uint64_t tick, const executor::PostureUnits& now);
-  // Ends the go-to; `publish_stop` asks the gate for zero speeds (dropped once the arbiter gave
-  // the robot to someone else).
-  void end_go_to(std::uint64_t tick, bool publish_stop);
-  // Publishes a go-to wheel-speed request through the emergency gate.
-  void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+  void serve_go_to(Kernel& k, const executor::PostureUnits& now);
+  // Ends the go-to; `publish_stop` sends the run's final zero request (dropped once the arbiter
+  // gave the robot to someone else).
+  void end_go_to(Kernel& k, bool publish_stop);
 
   hal::Drive& drive_;
   RobotConfig robot_;
@@ -44,7 +43,9 @@ class ExecutorModule final : public Process {
   Reader<GoToRequest> go_to_request_;    // AW
   MotionClaim claim_;                    // AW's runs handed by the arbiter, and their end
   Writer<Posture> posture_out_;
-  Writer<MotionRequest> go_to_out_;
+  // The go-to's requests (AW), the one rule every source's run follows. No emergency is woken:
+  // the emergency module's command wakes this module, and it is judged at its next activation.
+  ModeRequests go_to_requests_;
   std::uint32_t applied_seq_ = 0;        // MotionCommand's generation last applied (Posture.command_seq)
   std::uint32_t odometry_seq_ = 0;       // OdometrySet's generation last applied (Posture.odometry_seq)
   std::uint64_t last_go_to_tick_ = ~0ull;  // tick of the last control step (one per tick)

@@ -46,7 +46,8 @@ planner::FollowerSettings follower_settings(const planner::PlannerSettings& s) {
 
 PlannerModule::PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, const robot::RobotModel& model,
                              const planner::PlannerNeighbours& neighbours)
-    : s_(planner::make_settings(cfg, model, neighbours.pan_far_mm)),
+    : ModeProcess(bb, MotionSource::planner, bb.planner_motion.writer(), bb.planner_status.writer()),
+      s_(planner::make_settings(cfg, model, neighbours.pan_far_mm)),
       planner_(s_.planner),
       follower_(follower_settings(s_)),
       posture_(bb.posture.reader()),
@@ -57,9 +58,6 @@ PlannerModule::PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, con
       goal_in_(bb.planner_goal.reader()),
       emergency_(bb.emergency.reader()),
       doors_status_(bb.doors_status.reader()),
-      claim_(bb, MotionSource::planner),
-      motion_out_(bb.planner_motion.writer()),
-      status_out_(bb.planner_status.writer()),
       map_out_(bb.planner_map.writer()),
       map_x0_mm_(cfg.map_origin_x_mm),
       map_y0_mm_(cfg.map_origin_y_mm),
@@ -68,6 +66,7 @@ PlannerModule::PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, con
 
 // Everything sized here: the map, the C-space layers, the searches' arrays.
 bool PlannerModule::init(Kernel& k) {
+  kernel_ = &k;
   const bool prior = prior_.has_value();
   planner_.set_map(prior ? std::move(*prior_) : plan::OccupancyMap(s_.map, s_.hit_threshold, s_.initial_count));
   prior_.reset();
@@ -86,7 +85,7 @@ bool PlannerModule::init(Kernel& k) {
 }
 
 void PlannerModule::close(Kernel& k) {
-  if (navigating(state_)) request(k.tick(), 0, 0);
+  if (navigating(state_)) requests_.send(k, false, 0, 0);
 }
 
 // The robot's pose on its map: the goals, the places' walls and the a-priori map are there.
@@ -172,23 +171,11 @@ void PlannerModule::rebuild_step(std::uint64_t tick) {
   if (settled_) scan_tick_ = tick;
 }
 
-void PlannerModule::request(std::uint64_t tick, std::int32_t left, std::int32_t right) {
-  const bool changed = left != last_left_ || right != last_right_;
-  motion_out_.modify([&](MotionRequest& m) {
-    m.left = left;
-    m.right = right;
-    m.tick = tick;
-  });
-  last_left_ = left;
-  last_right_ = right;
-  if (changed && kernel_ && emergency_process_) kernel_->trigger(emergency_process_);
-}
-
-void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
+void PlannerModule::finish(PlannerState state, bool stop) {
   const bool was = navigating(state_);
   follower_.cancel();
   planner_.cancel_steps();  // a field or a search under way is moot; the layers sync again
-  if (stop && was) request(tick, 0, 0);
+  if (stop && was) requests_.send(*kernel_, false, 0, 0);
   if (state != state_) log::info("planner: {} (plans {}, scans {})", word(state), plans_, scans_);
   state_ = state;
 }
@@ -196,9 +183,9 @@ void PlannerModule::finish(std::uint64_t tick, PlannerState state, bool stop) {
 // A run handed by the arbiter (XG) starts the newest goal; an XH outside a run still reads
 // `cancelled` afterwards.
 void PlannerModule::serve_goal(std::uint64_t tick) {
-  if (!claim_.granted()) {
+  if (!begun()) {
     if (goal_in_.updated() && !goal_in_.copy().active && state_ != PlannerState::idle)
-      finish(tick, PlannerState::cancelled, navigating(state_));
+      finish(PlannerState::cancelled, navigating(state_));
     return;
   }
   const PlannerGoal& g = goal_ = goal_in_.copy();
@@ -217,28 +204,28 @@ void PlannerModule::serve_goal(std::uint64_t tick) {
 }
 
 // The arbiter's word (modules/emergency): XH cancels; the operator's command or an emergency stops.
-bool PlannerModule::interrupted(std::uint64_t tick) {
+bool PlannerModule::interrupted() {
   if (!navigating(state_)) return false;
   const ModeReason why = claim_.ended();
   if (why == ModeReason::none) return false;
   if (why == ModeReason::cancelled) {
-    finish(tick, PlannerState::cancelled, false);
+    finish(PlannerState::cancelled, false);
     return true;
   }
   const bool emergency = why == ModeReason::emergency;
   log::info("planner: navigation ended by {}", emergency ? "an emergency" : "the operator");
-  finish(tick, emergency ? PlannerState::stopped : PlannerState::operator_ended, false);
+  finish(emergency ? PlannerState::stopped : PlannerState::operator_ended, false);
   return true;
 }
 
-void PlannerModule::stop_here(std::uint64_t tick) {
+void PlannerModule::stop_here() {
   follower_.cancel();
   planner_.cancel_steps();
-  request(tick, 0, 0);
+  request(0, 0);
 }
 
 void PlannerModule::begin_scan(std::uint64_t tick) {
-  stop_here(tick);
+  stop_here();
   state_ = PlannerState::scanning;
   settled_ = false;
   step_waited_ = false;
@@ -330,7 +317,7 @@ bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
   if (std::abs(std::remainder(v.theta * kCentideg - pose.heading, 2.0 * plan::kPi)) > kCrossingHeadingError) {
     log::warn("planner: route point {} of {}: not facing the door (no room to turn); the route ends", via_next_ + 1,
               goal_.vias);
-    finish(tick, PlannerState::blocked, true);
+    finish(PlannerState::blocked, true);
     return false;
   }
   begin_crossing(tick);
@@ -338,7 +325,7 @@ bool PlannerModule::via_reached(std::uint64_t tick, const plan::Pose2& pose) {
 }
 
 void PlannerModule::begin_crossing(std::uint64_t tick) {
-  stop_here(tick);
+  stop_here();
   state_ = PlannerState::crossing;
   ++door_wish_;
   lent_seen_ = false;
@@ -355,12 +342,12 @@ void PlannerModule::crossing_step(std::uint64_t tick, const plan::Pose2& pose) {
   if (!lent_seen_) {  // the arbiter has not lent the robot yet (it does within a tick or two)
     if (tick < crossing_since_ + kLendTicks) return;
     log::warn("planner: the door crossing did not take the robot in {} ticks; the route ends", kLendTicks);
-    return finish(tick, PlannerState::blocked, true);
+    return finish(PlannerState::blocked, true);
   }
   const ModeStatus& d = doors_status_.peek();
   if (d.state != ModeState::crossed) {
     log::info("planner: the door crossing ended {} ({}); the route ends", word(d.state), word(d.reason));
-    return finish(tick, PlannerState::blocked, true);
+    return finish(PlannerState::blocked, true);
   }
   // Crossed, by the crossing's own end test: the robot must be in the place beyond the door (the
   // place of the point after it), else the crossing stopped short or turned away (seen: "crossed"
@@ -372,7 +359,7 @@ void PlannerModule::crossing_step(std::uint64_t tick, const plan::Pose2& pose) {
     if (beyond && here != beyond) {
       log::warn("planner: the door crossing ended crossed outside {}; the route ends",
                 place_graph_->places()[*beyond].name);
-      return finish(tick, PlannerState::blocked, true);
+      return finish(PlannerState::blocked, true);
     }
   }
   // Crossed: on to the point after the door (0.9 m past it, straight ahead: the crossing stops
@@ -396,7 +383,7 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
       final_prefix_ = true;
       return;
     }
-    return finish(tick, PlannerState::reached, true);
+    return finish(PlannerState::reached, true);
   }
   const std::int64_t t0 = thread_cpu_us();
   auto elapsed_us = [&] { return static_cast<std::uint32_t>(std::max<std::int64_t>(0, thread_cpu_us() - t0)); };
@@ -428,10 +415,10 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
     case plan::PlanStatus::Found: break;
     case plan::PlanStatus::StartBlocked:
       picture(tick, r, pose, goal);
-      return finish(tick, PlannerState::blocked, true);
+      return finish(PlannerState::blocked, true);
     case plan::PlanStatus::StartOutside:
       picture(tick, r, pose, goal);
-      return finish(tick, PlannerState::outside, true);
+      return finish(PlannerState::outside, true);
     default:
       if (r.status == plan::PlanStatus::SearchLimit)  // reported as unreachable; the log says why
         log::warn("planner: plan {}: no path: search memory exhausted ({} states expanded)", plans_,
@@ -443,7 +430,7 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
       path_m_ = prefix_m_ = 0.0;
       prefix_len_ = leg_count_ = 0;
       picture(tick, r, pose, goal);
-      return finish(tick, PlannerState::unreachable, true);
+      return finish(PlannerState::unreachable, true);
   }
   const auto& path = planner_.waypoints();
   path_m_ = planner::chain_length(path);
@@ -464,7 +451,7 @@ void PlannerModule::plan_step(std::uint64_t tick, const plan::Pose2& pose) {
       state_ = PlannerState::moving;
       return;
     }
-    return finish(tick, PlannerState::reached, true);
+    return finish(PlannerState::reached, true);
   }
   follower_.start({legs_.data(), leg_count_});
   state_ = PlannerState::moving;
@@ -480,7 +467,7 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
   // itself once clear): if it stays paused, the evidence is not going away — stop, scan (the
   // ring's readings go into the map as they do for any obstacle) and plan again; after
   // kPausedReplansMax such replans with no prefix driven in between, give up: `blocked`.
-  const bool paused = emergency_.peek().protective && (last_left_ != 0 || last_right_ != 0);
+  const bool paused = emergency_.peek().protective && (requests_.left() != 0 || requests_.right() != 0);
   if (!paused) {
     paused_since_ = 0;
   } else if (paused_since_ == 0) {
@@ -489,7 +476,7 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
     paused_since_ = 0;
     if (++paused_replans_ > kPausedReplansMax) {
       log::warn("planner: the envelope kept stopping the robot ({} replans): giving up", kPausedReplansMax);
-      return finish(tick, PlannerState::blocked, true);
+      return finish(PlannerState::blocked, true);
     }
     log::info("planner: motion paused by obstacle evidence for {} s, stopping to scan and replan",
               kPausedReplanTicks / 100);
@@ -505,15 +492,15 @@ void PlannerModule::move_step(std::uint64_t tick, const plan::Pose2& pose) {
     }
   }
   const planner::Wheels w = follower_.step(pose);
-  if (follower_.active()) return request(tick, w.left, w.right);
+  if (follower_.active()) return request(w.left, w.right);
   const plan::Point2 goal = target_point();
   if (final_prefix_ && at_via() && std::hypot(goal.x - pose.x, goal.y - pose.y) <= via_tolerance()) {
-    if (via_reached(tick, pose)) request(tick, 0, 0);
+    if (via_reached(tick, pose)) request(0, 0);
     return;
   }
   if (final_prefix_ && std::hypot(goal.x - pose.x, goal.y - pose.y) <= s_.goal_tolerance) {
-    if (add_final_turn(pose)) return request(tick, 0, 0);
-    return finish(tick, PlannerState::reached, true);
+    if (add_final_turn(pose)) return request(0, 0);
+    return finish(PlannerState::reached, true);
   }
   paused_replans_ = 0;  // a whole prefix driven: progress
   begin_scan(tick);
@@ -536,7 +523,6 @@ void PlannerModule::keep_place_grid(const plan::Pose2& pose) {
 
 void PlannerModule::run(Kernel& k) {
   const std::int64_t t0 = thread_cpu_us();
-  kernel_ = &k;
   const std::uint64_t tick = k.tick();
   const plan::Pose2 pose = pose_now();
   costly_now_ = false;
@@ -554,7 +540,7 @@ void PlannerModule::run(Kernel& k) {
     // idle robot would pile up (folded in one sync after a crossing: 4.3-5.2 ms).
     sync_map();
   }
-  if (!interrupted(tick)) {
+  if (!interrupted()) {
     serve_goal(tick);
     if (state_ == PlannerState::scanning && !planner_.rebuilding()) {
       if (scan_done(tick)) {

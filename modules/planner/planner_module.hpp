@@ -9,8 +9,7 @@
 #include <span>
 #include <utility>
 
-#include "kernel/process.hpp"
-#include "modules/emergency/motion_claim.hpp"
+#include "modules/emergency/mode_process.hpp"
 #include "modules/planner/lib/planner.hpp"
 #include "modules/planner/path_follower.hpp"
 #include "modules/planner/picture_mailbox.hpp"
@@ -32,8 +31,9 @@ constexpr bool navigating(PlannerState s) {
 // (seed 003's hit counts), plan (rectangle with heading slices by default, seed 004), follow the
 // part of the path within sonar range and in sight, stop, scan, replan, until the goal is
 // reached or shown unreachable. It moves the robot only through its own motion requests, which
-// the emergency module arbitrates like any other source.
-class PlannerModule final : public Process {
+// the emergency module arbitrates like any other source: a mode as gate, doors and demo are
+// (ModeProcess: the arbiter's runs, the requests and their final zero, the status).
+class PlannerModule final : public ModeProcess<PlannerStatus> {
  public:
   static constexpr std::size_t kMaxPrefix = 512;  // waypoints of the followed prefix kept
   static constexpr std::size_t kMaxPicturePath = 8192;  // waypoints of a plan kept for its picture
@@ -43,8 +43,6 @@ class PlannerModule final : public Process {
   // Its own section, the robot model, and what it reads of the pan-tilt's and the places' sections.
   PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, const robot::RobotModel& model,
                 const planner::PlannerNeighbours& neighbours);
-  // The emergency module, triggered when the requested speeds change so a stop acts this tick.
-  void set_emergency(Process* p) { emergency_process_ = p; }
   // Pictures (robuterd --planner-pictures): every plan is copied into `box` in the activation
   // that made it, for a writer outside the kernel. Set before init(), which sizes the copy.
   void set_pictures(planner::PictureMailbox* box) { pictures_ = box; }
@@ -99,9 +97,9 @@ class PlannerModule final : public Process {
   // A new XG (start) or XH (cancel).
   void serve_goal(std::uint64_t tick);
   // True (and the navigation ended) when the arbiter took the robot back: XH, the operator, an emergency.
-  bool interrupted(std::uint64_t tick);
+  bool interrupted();
   // Stops where it is: no path followed, no plan under way, a zero request.
-  void stop_here(std::uint64_t tick);
+  void stop_here();
   // Enters the scanning state: stop and wait for fresh readings.
   void begin_scan(std::uint64_t tick);
   // Scanning: done once every firing sensor was read scan_passes times after the robot stopped.
@@ -136,10 +134,10 @@ class PlannerModule final : public Process {
   void move_step(std::uint64_t tick, const plan::Pose2& pose);
   // Adds a turn in place to the goal's heading when asked and the turn is free; true if added.
   bool add_final_turn(const plan::Pose2& pose);
-  // Ends the navigation in `state`; `stop` asks the gate for zero speeds.
-  void finish(std::uint64_t tick, PlannerState state, bool stop);
-  // Publishes a wheel-speed request through the emergency gate.
-  void request(std::uint64_t tick, std::int32_t left, std::int32_t right);
+  // Ends the navigation in `state`; `stop` sends the run's final zero request.
+  void finish(PlannerState state, bool stop);
+  // Sends this run's wheel-speed request (cm/s) to the arbiter.
+  void request(std::int32_t left, std::int32_t right) { requests_.send(*kernel_, true, left, right); }
   // Cuts the grid of the place the robot scanned in into the place grid mailbox, if kept.
   void keep_place_grid(const plan::Pose2& pose);
   // Notes the plan just made for a picture, if pictures are on: take_picture() copies it into
@@ -164,16 +162,12 @@ class PlannerModule final : public Process {
   Reader<PlannerGoal> goal_in_;
   Reader<EmergencyState> emergency_;     // a protective stop pausing our motion (replan after a while)
   Reader<ModeStatus> doors_status_;      // how the door crossing we lent the robot to ended
-  MotionClaim claim_;                    // runs handed by the arbiter (XG), and their end
-  Writer<MotionRequest> motion_out_;
-  Writer<PlannerStatus> status_out_;
   Writer<PlannerMapWindow> map_out_;
-  Process* emergency_process_ = nullptr;
   std::span<const plan::Point2> openings_;  // cells kept free (door openings), m
   planner::PictureMailbox* pictures_ = nullptr;  // where plans go for pictures (null: off)
   const places::PlaceGraph* place_graph_ = nullptr;   // the place graph (null: none)
   places::PlaceGridMailbox* place_grids_ = nullptr;   // where their grids go for the writer
-  Kernel* kernel_ = nullptr;               // the kernel running us (for triggers), set by run()
+  Kernel* kernel_ = nullptr;               // the kernel running us (for the requests' triggers), set by init()
 
   PlannerState state_ = PlannerState::idle;
   PlannerGoal goal_{};                     // goal being served
@@ -217,7 +211,6 @@ class PlannerModule final : public Process {
   bool step_waited_ = false;               // the last activation put a search's first step off for a sync
   std::uint32_t prepared_seq_ = 0;         // goal number whose cost field was computed (0: none)
   double path_m_ = 0.0, prefix_m_ = 0.0;   // m
-  std::int32_t last_left_ = 0, last_right_ = 0;  // cm/s, last request
   std::int64_t map_x0_mm_ = 0, map_y0_mm_ = 0;   // mm, the map window's lower-left corner
   PlannerModuleConfig cfg_;                // its section, for the window's rule (planner::window_shift)
   bool cross_doors_ = false;               // places.cross_doors: lend the robot to the doors at a narrow door

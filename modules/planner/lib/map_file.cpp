@@ -142,10 +142,6 @@ Status save_map(const OccupancyMap& map, const std::string& path) {
   return Ok{};
 }
 
-Result<OccupancyMap> load_map(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_map(*text, path);
-}
+Result<OccupancyMap> load_map(const std::string& path) { return load_text_file(path, parse_map); }
 
 }  // namespace robuter::plan
