@@ -20,7 +20,7 @@ namespace robuter {
 template <typename Status>
 class ModeProcess : public Process {
  public:
-  // The emergency module, triggered by a changed request so it is judged in the same tick (set at
+  // The emergency module, triggered on every request so it is judged in the same tick (set at
   // composition; none in unit rigs).
   void set_emergency(Process* p) { requests_.set_emergency(p); }
 

@@ -13,14 +13,13 @@ namespace robuter {
 // For the sources that drive on their own (gate, doors, demo, the planner, the executor's go-to):
 // the one rule of how a run's wheel speeds reach the arbiter. The arbiter remembers a request
 // until a newer one comes, so a run that ends without one would leave its last manoeuvre running:
-// its end sends a zero request, once. A request whose speeds differ from the last one sent wakes
-// the emergency module, so a change — a stop above all — is judged in the same tick; the same
-// speeds again are taken at its next activation. The module claims its topic's writer (it is the
-// owner) and hands it here.
+// its end sends a zero request, once. Every request sent wakes the emergency module, so it is
+// judged in the tick it was made. The module claims its topic's writer (it is the owner) and
+// hands it here.
 class ModeRequests {
  public:
   explicit ModeRequests(Writer<MotionRequest> out) : out_(std::move(out)) {}
-  // The emergency module, woken by a changed request (set at composition; none in unit rigs).
+  // The emergency module, woken by each request (set at composition; none in unit rigs).
   void set_emergency(Process* p) { emergency_ = p; }
   // A run begins: its final zero request is still to come.
   void begin() { sent_stop_ = false; }
@@ -30,7 +29,6 @@ class ModeRequests {
   void send(Kernel& k, bool request, std::int32_t left, std::int32_t right) {
     if (!request && sent_stop_) return;
     if (!request) left = right = 0;
-    const bool changed = left != left_ || right != right_;
     const std::uint64_t tick = k.tick();
     out_.modify([&](MotionRequest& r) {
       r.left = left;
@@ -40,7 +38,7 @@ class ModeRequests {
     left_ = left;
     right_ = right;
     if (!request) sent_stop_ = true;
-    if (changed && emergency_) k.trigger(emergency_);
+    if (emergency_) k.trigger(emergency_);
   }
   // The speeds last sent, cm/s (0 0 before any).
   std::int32_t left() const { return left_; }
