@@ -20,13 +20,14 @@ namespace robuter {
 template <typename Status>
 class ModeProcess : public Process {
  public:
-  // The emergency module, triggered on every request so it is judged in the same tick (set at
-  // composition; none in unit rigs).
+  // The emergency module, triggered by requests (ModeRequests::Wake) so they are judged in the
+  // tick they were made (set at composition; none in unit rigs).
   void set_emergency(Process* p) { requests_.set_emergency(p); }
 
  protected:
-  ModeProcess(Blackboard& bb, MotionSource me, Writer<MotionRequest> requests, Writer<Status> status)
-      : claim_(bb, me), requests_(std::move(requests)), status_out_(std::move(status)) {}
+  ModeProcess(Blackboard& bb, MotionSource me, Writer<MotionRequest> requests, Writer<Status> status,
+              ModeRequests::Wake wake = ModeRequests::Wake::every_request)
+      : claim_(bb, me), requests_(std::move(requests), wake), status_out_(std::move(status)) {}
 
   // True once for each new run the arbiter hands to this mode: begin it now (its final zero
   // request is still to come).

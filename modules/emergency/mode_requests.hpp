@@ -13,13 +13,21 @@ namespace robuter {
 // For the sources that drive on their own (gate, doors, demo, the planner, the executor's go-to):
 // the one rule of how a run's wheel speeds reach the arbiter. The arbiter remembers a request
 // until a newer one comes, so a run that ends without one would leave its last manoeuvre running:
-// its end sends a zero request, once. Every request sent wakes the emergency module, so it is
-// judged in the tick it was made. The module claims its topic's writer (it is the owner) and
-// hands it here.
+// its end sends a zero request, once. A request wakes the emergency module so it is judged in
+// the tick it was made: every request (gate, doors, demo), or only one with new speeds — a stop
+// above all — for a source that repeats its speeds at each activation (the planner's rule; its
+// seeded navigation runs are pinned with it). The module claims its topic's writer (it is the
+// owner) and hands it here.
 class ModeRequests {
  public:
-  explicit ModeRequests(Writer<MotionRequest> out) : out_(std::move(out)) {}
-  // The emergency module, woken by each request (set at composition; none in unit rigs).
+  // Which requests wake the emergency module.
+  enum class Wake : std::uint8_t {
+    every_request,  // each one
+    new_speeds,     // one whose speeds differ from the last sent
+  };
+  explicit ModeRequests(Writer<MotionRequest> out, Wake wake = Wake::every_request)
+      : out_(std::move(out)), wake_(wake) {}
+  // The emergency module, woken by requests as `Wake` says (set at composition; none in unit rigs).
   void set_emergency(Process* p) { emergency_ = p; }
   // A run begins: its final zero request is still to come.
   void begin() { sent_stop_ = false; }
@@ -29,6 +37,7 @@ class ModeRequests {
   void send(Kernel& k, bool request, std::int32_t left, std::int32_t right) {
     if (!request && sent_stop_) return;
     if (!request) left = right = 0;
+    const bool wake = wake_ == Wake::every_request || left != left_ || right != right_;
     const std::uint64_t tick = k.tick();
     out_.modify([&](MotionRequest& r) {
       r.left = left;
@@ -38,7 +47,7 @@ class ModeRequests {
     left_ = left;
     right_ = right;
     if (!request) sent_stop_ = true;
-    if (emergency_) k.trigger(emergency_);
+    if (wake && emergency_) k.trigger(emergency_);
   }
   // The speeds last sent, cm/s (0 0 before any).
   std::int32_t left() const { return left_; }
@@ -46,7 +55,8 @@ class ModeRequests {
 
  private:
   Writer<MotionRequest> out_;    // the mode's motion request topic
-  Process* emergency_ = nullptr; // woken by each request
+  Wake wake_;                    // which requests wake it
+  Process* emergency_ = nullptr; // woken by requests
   bool sent_stop_ = true;        // the run's final zero request went out (or no run began)
   std::int32_t left_ = 0;        // cm/s, the last request's left wheel
   std::int32_t right_ = 0;       // cm/s, the last request's right wheel

@@ -46,7 +46,8 @@ planner::FollowerSettings follower_settings(const planner::PlannerSettings& s) {
 
 PlannerModule::PlannerModule(Blackboard& bb, const PlannerModuleConfig& cfg, const robot::RobotModel& model,
                              const planner::PlannerNeighbours& neighbours)
-    : ModeProcess(bb, MotionSource::planner, bb.planner_motion.writer(), bb.planner_status.writer()),
+    : ModeProcess(bb, MotionSource::planner, bb.planner_motion.writer(), bb.planner_status.writer(),
+                  ModeRequests::Wake::new_speeds),
       s_(planner::make_settings(cfg, model, neighbours.pan_far_mm)),
       planner_(s_.planner),
       follower_(follower_settings(s_)),

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A mode's motion requests (modules/emergency/mode_requests.hpp): each request wakes the emergency
-// module in its tick, a run's end sends exactly one zero request, and nothing before a run begins.
+// A mode's motion requests (modules/emergency/mode_requests.hpp): each request (or each with new speeds) wakes the emergency module in its tick, a run's end sends one zero, nothing before a run.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -29,7 +28,7 @@ struct Mode final : Process {
 };
 
 struct Rig {
-  Rig() : requests(test_writer(topic)) {
+  explicit Rig(ModeRequests::Wake wake = ModeRequests::Wake::every_request) : requests(test_writer(topic), wake) {
     requests.set_emergency(&woken);
     const ProcessRow rows[] = {{"mode", &mode, 1, 0, 2, 1000}, {"emergency", &woken, 1000, 999, 1, 1000}};
     ok = !kernel.set_table(rows);
@@ -74,6 +73,24 @@ TEST(ModeRequests, ARunsRequestsWakeTheEmergencyModuleAndItsEndSendsOneZero) {
   r.requests.begin();
   EXPECT_EQ(r.tick([&](Kernel& k) { r.requests.send(k, false, 0, 0); }), 1u);
   EXPECT_EQ(r.topic.reader().peek().tick, r.kernel.tick() - 1);
+}
+
+// The planner's rule: it repeats its speeds at each activation, and only new speeds (a stop above
+// all) wake the emergency module; every request is still published.
+TEST(ModeRequests, NewSpeedsWakeTheEmergencyModuleWhenTheSourceRepeatsItself) {
+  Rig r(ModeRequests::Wake::new_speeds);
+  ASSERT_TRUE(r.ok);
+  r.requests.begin();
+  EXPECT_EQ(r.tick([&](Kernel& k) { r.requests.send(k, true, 10, 10); }), 1u);
+  EXPECT_EQ(r.woken.runs, 1);
+  EXPECT_EQ(r.tick([&](Kernel& k) { r.requests.send(k, true, 10, 10); }), 1u);  // published, not woken
+  EXPECT_EQ(r.woken.runs, 1);
+  EXPECT_EQ(r.tick([&](Kernel& k) { r.requests.send(k, true, 10, 12); }), 1u);
+  EXPECT_EQ(r.woken.runs, 2);
+  EXPECT_EQ(r.tick([&](Kernel& k) { r.requests.send(k, false, 10, 12); }), 1u);  // the final zero: a stop
+  EXPECT_EQ(r.woken.runs, 3);
+  EXPECT_EQ(r.requests.left(), 0);
+  EXPECT_EQ(r.requests.right(), 0);
 }
 
 }  // namespace
