@@ -354,6 +354,17 @@ def script(robuterd, ctl, tmp):
     r = subprocess.run([ctl, "--port", d.pty, "--script", s], capture_output=True, text=True, timeout=120)
     check(r.returncode == 0, "stream: @ lines are not replies in a script\n" + r.stdout)
 
+    # ---- until: an exchange tried again until the robot has got there, whatever the load ----
+    s = write("until.txt", "> AM 0 0\n< ack\n> AC 0 0 0\n< ack\n> ASN\n< ack\n> AM 10 10\n< ack\n"
+              "! until 20000\n> BO\n< S {int:300..100000} {int} {int} 1 {int}\n> AM 0 0\n< ack\n")
+    r = subprocess.run([ctl, "--port", d.pty, "--script", s], capture_output=True, text=True, timeout=120)
+    check(r.returncode == 0 and "6 passed, 0 failed" in r.stdout,
+          "until: BO asked again until the robot has moved 3 cm, one check\n" + r.stdout)
+    s = write("until_fails.txt", "! until 400\n> BC\n< X {int}\n")
+    r = subprocess.run([ctl, "--port", d.pty, "--script", s], capture_output=True, text=True, timeout=120)
+    check(r.returncode == 1 and "0 passed, 1 failed" in r.stdout and "got 'C " in r.stdout,
+          "until: a reply that never matches fails once, with the last reply\n" + r.stdout)
+
     # ---- a stale reply left in the pty ----
     holder = Raw(d.pty)
     holder.send("BC")

@@ -7,6 +7,9 @@
 //   ! silence MS          expect no reply for MS ms
 //   ! sleep MS            wait
 //   ! timeout MS          time allowed for each expected reply (default 3000)
+//   ! until MS            the next `>` line is sent again every 100 ms until the reply matches
+//                         its `<` expectation, for at most MS ms (a state the robot reaches in
+//                         its own time, whatever the machine's load)
 //   ! pipeline N L=P|L=P  write N lines at once, cycling through L, and expect the N replies
 //                         in order, each matching its P
 // An expectation not starting with `@` skips status-stream lines; `< @ …` expects one.
@@ -59,7 +62,9 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
   };
   // Whether to stop after a failure.
   auto stop_here = [&] { return !options.keep_going || interrupted(); };
-  auto expect = [&](const std::string& pat_text) -> bool {
+  // Reads the next reply and matches it with `pat_text`; a failure is reported only when `report`
+  // (an `until`'s tries before its last are silent).
+  auto expect = [&](const std::string& pat_text, bool report = true) -> bool {
     Pattern pat(pat_text);
     if (pat.error()) {
       fail("bad pattern: " + *pat.error());
@@ -79,16 +84,19 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
       return false;
     }
     if (!got) {
-      fail(fmt::format("expected '{}', got no reply within {} ms", pat_text, timeout.count()));
+      if (report) fail(fmt::format("expected '{}', got no reply within {} ms", pat_text, timeout.count()));
       return false;
     }
     if (!pat.matches(*got)) {
-      fail(fmt::format("expected '{}', got '{}'", pat_text, visible(*got)));
+      if (report) fail(fmt::format("expected '{}', got '{}'", pat_text, visible(*got)));
       return false;
     }
     ++r.checks;
     return true;
   };
+  std::optional<milliseconds> until;  // `! until MS` armed for the next exchange
+  std::optional<std::string> resend;  // the line an armed `until` sends again
+  constexpr milliseconds kUntilGap{100};  // between an `until`'s tries
   while (std::getline(in, raw)) {
     ++lineno;
     const std::string line = trim(raw);
@@ -102,6 +110,22 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
     }
     if (kind == '>') {
       if (!client.send_line(rest)) return fail("link closed while sending"), r;
+      if (until) resend = rest;
+    } else if (kind == '<' && until && resend) {
+      const auto end = std::chrono::steady_clock::now() + *until;
+      bool ok = expect(rest, false);
+      while (!ok && !interrupted() && std::chrono::steady_clock::now() + kUntilGap < end) {
+        client.idle(kUntilGap);
+        if (!client.send_line(*resend)) return fail("link closed while sending"), r;
+        ok = expect(rest, false);
+      }
+      if (!ok) {  // the last try reports what came
+        if (!client.send_line(*resend)) return fail("link closed while sending"), r;
+        ok = expect(rest);
+      }
+      until.reset();
+      resend.reset();
+      if (!ok && stop_here()) return r;
     } else if (kind == '<') {
       if (!expect(rest) && stop_here()) return r;
     } else if (kind == '!') {
@@ -153,6 +177,8 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
         client.idle(ms_arg(0));
       } else if (verb == "timeout") {
         timeout = ms_arg(3000);
+      } else if (verb == "until") {
+        until = ms_arg(3000);
       } else if (verb == "pipeline") {
         std::size_t n = 0;
         ss >> n;
