@@ -94,8 +94,8 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
     ++r.checks;
     return true;
   };
-  std::optional<milliseconds> until;  // `! until MS` armed for the next exchange
-  std::optional<std::string> resend;  // the line an armed `until` sends again
+  milliseconds until{0};  // `! until MS` armed for the next exchange (0: none)
+  std::string resend;     // the line an armed `until` sends again (empty: none yet)
   constexpr milliseconds kUntilGap{100};  // between an `until`'s tries
   while (std::getline(in, raw)) {
     ++lineno;
@@ -110,21 +110,21 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
     }
     if (kind == '>') {
       if (!client.send_line(rest)) return fail("link closed while sending"), r;
-      if (until) resend = rest;
-    } else if (kind == '<' && until && resend) {
-      const auto end = std::chrono::steady_clock::now() + *until;
+      if (until.count() > 0) resend = rest;
+    } else if (kind == '<' && until.count() > 0 && !resend.empty()) {
+      const auto end = std::chrono::steady_clock::now() + until;
       bool ok = expect(rest, false);
       while (!ok && !interrupted() && std::chrono::steady_clock::now() + kUntilGap < end) {
         client.idle(kUntilGap);
-        if (!client.send_line(*resend)) return fail("link closed while sending"), r;
+        if (!client.send_line(resend)) return fail("link closed while sending"), r;
         ok = expect(rest, false);
       }
       if (!ok) {  // the last try reports what came
-        if (!client.send_line(*resend)) return fail("link closed while sending"), r;
+        if (!client.send_line(resend)) return fail("link closed while sending"), r;
         ok = expect(rest);
       }
-      until.reset();
-      resend.reset();
+      until = milliseconds(0);
+      resend.clear();
       if (!ok && stop_here()) return r;
     } else if (kind == '<') {
       if (!expect(rest) && stop_here()) return r;
