@@ -80,7 +80,7 @@ EmergencyModule::EmergencyModule(Blackboard& bb, hal::Bumpers& bumpers, const Em
 // Registration happens at start-up, before the periodic path.
 bool EmergencyModule::add_motion_source(MotionSource source, Reader<MotionRequest> reader) {
   if (source_count_ == sources_.size()) return false;
-  sources_[source_count_++] = Source{source, reader, reader.generation()};
+  sources_[source_count_++] = Source{source, reader};
   return true;
 }
 
@@ -90,7 +90,7 @@ bool EmergencyModule::init(Kernel& k) {
   gate_ = emergency::MotionGate(gate_settings(cfg_, robot_, tuning_, k.tick_ns()));
   gate_.set_enabled(base_mask_);  // set_enabled() may have run before the start
   envelope_.set_tick(static_cast<double>(k.tick_ns()) / 1e9);
-  for (std::size_t i = 0; i < source_count_; ++i) sources_[i].seen = sources_[i].reader.generation();
+  for (std::size_t i = 0; i < source_count_; ++i) sources_[i].reader.copy();
   seen_stop_ = link_.peek().stop_seq;
   seen_reenable_ = link_.peek().reenable_seq;
   servo_.copy();
@@ -153,9 +153,8 @@ std::uint8_t EmergencyModule::detections() const {
 void EmergencyModule::take_requests(emergency::GateInputs& in) {
   for (std::size_t i = 0; i < source_count_; ++i) {
     Source& s = sources_[i];
-    if (s.reader.generation() == s.seen) continue;
-    s.seen = s.reader.generation();
-    const MotionRequest& r = s.reader.peek();
+    if (!s.reader.updated()) continue;
+    const MotionRequest r = s.reader.copy();
     if (!arbiter_.accepts(s.source)) continue;
     in.new_request = true;
     in.left = r.left;

@@ -56,11 +56,10 @@ class EmergencyModule final : public Process {
   void run(Kernel& k) override;
 
  private:
-  // A motion source and the generation of its topic last taken.
+  // A motion source: a new generation of its topic (Reader::updated) is a new request.
   struct Source {
     MotionSource source = MotionSource::link;  // who publishes there
     Reader<MotionRequest> reader;              // its topic
-    std::uint32_t seen = 0;                    // its topic's generation last taken: a new one is a new request
   };
   // Applies the operator's actions since the last run to the arbiter, in order.
   void take_actions();

@@ -9,7 +9,7 @@
 
 namespace robuter {
 
-// Listens to the `modes` topic (AG starts, AT stops), reads the pan-tilt scan and the odometry,
+// Runs while the arbiter gives it the robot (AG starts a run, AT ends it), reads the pan-tilt scan and the odometry,
 // and publishes `gate_motion` (a motion source of the emergency module) and `gate_status` (XD).
 // Ends on its own when aligned, or failed: no passage within TIMEOUT, no alignment within the
 // allowed manoeuvres, the pan-tilt failing, an emergency, or another motion request taking over.

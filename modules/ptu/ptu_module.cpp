@@ -88,12 +88,9 @@ void PtuModule::report(std::uint64_t tick) {
   const ModeReason why = to_reason(driver_.fault());
   const ModeStatus& cur = status_out_.current();
   if (cur.state == st && cur.reason == why) return;
-  ModeStatus s = cur;
-  if (st == ModeState::starting || (st == ModeState::scanning && cur.state == ModeState::off)) ++s.runs;
-  s.state = st;
-  s.reason = st == ModeState::failed ? why : ModeReason::none;
-  s.since_tick = tick;
-  s.tick = tick;
+  const bool new_run = st == ModeState::starting || (st == ModeState::scanning && cur.state == ModeState::off);
+  ModeStatus s = moved_on(cur, st, st == ModeState::failed ? why : ModeReason::none, new_run, tick);
+  s.since_tick = tick;  // a new reason in the same state restarts it too
   status_out_.publish(s);
   if (st == ModeState::failed) log::warn("pan-tilt: failed: {}", fault_text(driver_.fault()));
   else if (st == ModeState::scanning) log::info("pan-tilt: scanning");

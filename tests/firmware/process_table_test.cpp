@@ -145,7 +145,7 @@ TEST(TopicClaims, ASecondWriterOrAMissingOneIsNamed) {
   EXPECT_NE(none->find("heartbeat claimed 0 times (want 1)"), std::string::npos) << *none;
 }
 
-// A payload field named like a counter (`seq`, `*_seq`), checked on the topic's struct.
+// A payload field named `seq` (the counter the requests carried), checked on the topic's struct.
 template <typename T>
 constexpr bool kCarriesSeq = requires(const T& t) { t.seq; };
 

@@ -111,23 +111,23 @@ ScriptResult run_script(Client& client, const std::string& path, std::FILE* out,
     if (kind == '>') {
       if (!client.send_line(rest)) return fail("link closed while sending"), r;
       if (until.count() > 0) resend = rest;
-    } else if (kind == '<' && until.count() > 0 && !resend.empty()) {
+    } else if (kind == '<') {
+      // An armed `until` is spent on this expectation; it retries when its line was sent.
+      const bool retry = until.count() > 0 && !resend.empty();
       const auto end = std::chrono::steady_clock::now() + until;
-      bool ok = expect(rest, false);
-      while (!ok && !interrupted() && std::chrono::steady_clock::now() + kUntilGap < end) {
+      until = milliseconds(0);
+      bool ok = expect(rest, !retry);
+      while (retry && !ok && !interrupted() && std::chrono::steady_clock::now() + kUntilGap < end) {
         client.idle(kUntilGap);
         if (!client.send_line(resend)) return fail("link closed while sending"), r;
         ok = expect(rest, false);
       }
-      if (!ok) {  // the last try reports what came
+      if (retry && !ok) {  // the last try reports what came
         if (!client.send_line(resend)) return fail("link closed while sending"), r;
         ok = expect(rest);
       }
-      until = milliseconds(0);
       resend.clear();
       if (!ok && stop_here()) return r;
-    } else if (kind == '<') {
-      if (!expect(rest) && stop_here()) return r;
     } else if (kind == '!') {
       std::istringstream ss(rest);
       std::string verb;
